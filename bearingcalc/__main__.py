@@ -1,0 +1,5 @@
+"""``python -m bearingcalc``."""
+
+from bearingcalc.cli import app
+
+app(prog_name="bearingcalc")

@@ -1,0 +1,375 @@
+"""Thrust bearing with pure rolling at the shaft contact.
+
+Source: seed note, "Thrust bearing example"; re-derived in ``shared/physics.md`` §1.
+
+Geometry, in the meridian plane of one ball: ``e2`` along the shaft axis, ``e1``
+radial toward the axis, ``e3 = e1 × e2``. Ball radius r, ball centre G at pitch
+radius b. The ball touches the fixed race at C1 = G − r·e1 and C2 = G − r·e2 and
+the shaft at C3 = G + r(cosθ·e1 + sinθ·e2), θ being the shaft contact angle.
+
+Every function takes SI values (m, rad, rad/s) as floats or numpy arrays, which
+broadcast against each other, and returns numpy arrays. NaN passes through;
+geometrically impossible points give NaN (see :func:`thrust_bearing_status` for
+the reason).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+HALF_SQRT2 = np.sqrt(0.5)
+
+#: Result keys, their SI unit and meaning, in report order.
+RESULTS: dict[str, tuple[str, str]] = {
+    "ball_radius": ("m", "ball radius r"),
+    "contact_angle": ("rad", "shaft contact angle θ"),
+    "pitch_radius": ("m", "pitch radius b as used"),
+    "pitch_radius_pure_rolling": ("m", "pure-rolling pitch radius b*"),
+    "pitch_radius_deviation": ("m", "b − b*"),
+    "shaft_contact_radius": ("m", "shaft contact radius d = b − r·cosθ"),
+    "shaft_speed": ("rad/s", "shaft speed ω_S"),
+    "ball_speed": ("rad/s", "ball angular speed ω_B in the fixed frame"),
+    "cage_speed": ("rad/s", "orbital speed of the ball set"),
+    "ball_center_speed": ("m/s", "ball centre speed v_G"),
+    "shaft_contact_speed": ("m/s", "shaft surface speed at the contact, d·ω_S"),
+    "spin_speed": ("rad/s", "shaft-relative-to-ball spin about the contact normal"),
+    "roll_speed": ("rad/s", "shaft-relative-to-ball rolling about the contact tangent"),
+    "spin_to_roll": ("1", "spin_speed / roll_speed"),
+    "slip_margin": ("1", "max_spin_to_roll − |spin_to_roll|"),
+    "pitch_radius_min": ("m", "smallest b with |spin/roll| within the limit"),
+    "pitch_radius_max": ("m", "largest b with |spin/roll| within the limit"),
+    "ball_pass_frequency_race": ("Hz", "balls passing a point of the race"),
+    "ball_pass_frequency_shaft": ("Hz", "balls passing a point of the shaft"),
+}
+
+#: Status codes of :func:`thrust_bearing_status`: code -> (field at fault, reason).
+FEASIBLE = 0
+STATUS_REASONS: dict[int, tuple[str, str]] = {
+    1: ("ball_radius", "the ball radius must be positive"),
+    2: ("pitch_radius", "the pitch radius must be positive"),
+    3: ("contact_angle", "pure rolling needs 0 deg < θ < 45 deg"),
+    4: ("pitch_radius", "the shaft contact radius d = b − r·cosθ must be positive"),
+    5: ("ball_count", "the balls do not fit on the pitch circle: Z·asin(r/b) must be <= π"),
+    6: ("pitch_radius", "a pure-rolling contact angle exists only for b > r"),
+}
+
+
+def pure_rolling_pitch_radius(ball_radius: ArrayLike, contact_angle: ArrayLike) -> NDArray:
+    r"""Pitch radius at which the shaft contact rolls without spin.
+
+    .. math:: b^* = r\,\frac{1 + \sin\theta}{\cos\theta - \sin\theta}
+
+    Parameters
+    ----------
+    ball_radius : Ball radius r. [m]
+    contact_angle : Shaft contact angle θ, finite only for 0 < θ < π/4. [rad]
+
+    Returns
+    -------
+    Pitch radius b*. [m] NaN outside 0 < θ < π/4.
+
+    Source: physics.md §1 (seed, thrust bearing, final relation).
+
+    >>> round(float(pure_rolling_pitch_radius(1.0, np.radians(30.0))), 4)
+    4.0981
+    """
+    r = np.asarray(ball_radius, dtype=float)
+    theta = _angle_in_range(contact_angle)
+    return r * (1.0 + np.sin(theta)) / (np.cos(theta) - np.sin(theta))
+
+
+def pure_rolling_contact_angle(ball_radius: ArrayLike, pitch_radius: ArrayLike) -> NDArray:
+    r"""Contact angle at which a ball of radius r at pitch radius b rolls purely.
+
+    Solves b·cosθ − (b + r)·sinθ = r in closed form:
+
+    .. math:: \theta = \arccos\frac{r}{M} - \operatorname{atan2}(b + r, b),
+              \quad M = \sqrt{b^2 + (b + r)^2}
+
+    Parameters
+    ----------
+    ball_radius : Ball radius r > 0. [m]
+    pitch_radius : Pitch radius b; a solution exists for every b > r. [m]
+
+    Returns
+    -------
+    Contact angle θ in (0, π/4). [rad] NaN where b <= r.
+
+    Source: physics.md §1.
+    """
+    r = np.asarray(ball_radius, dtype=float)
+    b = np.asarray(pitch_radius, dtype=float)
+    with np.errstate(invalid="ignore"):
+        theta = np.arccos(r / np.hypot(b, b + r)) - np.arctan2(b + r, b)
+    return np.where((r > 0) & (b > r), theta, np.nan)
+
+
+def pure_rolling_ball_radius(contact_angle: ArrayLike, pitch_radius: ArrayLike) -> NDArray:
+    r"""Ball radius that rolls purely at pitch radius b and contact angle θ.
+
+    .. math:: r = b\,\frac{\cos\theta - \sin\theta}{1 + \sin\theta}
+
+    Parameters
+    ----------
+    contact_angle : Shaft contact angle θ, 0 < θ < π/4. [rad]
+    pitch_radius : Pitch radius b. [m]
+
+    Returns
+    -------
+    Ball radius r. [m] NaN outside 0 < θ < π/4.
+
+    Source: physics.md §1.
+    """
+    theta = _angle_in_range(contact_angle)
+    b = np.asarray(pitch_radius, dtype=float)
+    return b * (np.cos(theta) - np.sin(theta)) / (1.0 + np.sin(theta))
+
+
+def spin_to_roll_ratio(ball_radius: ArrayLike, contact_angle: ArrayLike,
+                       pitch_radius: ArrayLike) -> NDArray:
+    r"""Spin-to-roll ratio ρ of the shaft relative to the ball at the shaft contact.
+
+    .. math:: \rho = \frac{K\sin\theta + \sin\theta - \cos\theta}
+                          {K\cos\theta + \sin\theta + \cos\theta},
+              \quad K = \frac{r(1 + \sin\theta + \cos\theta)}{b - r\cos\theta}
+
+    ρ falls monotonically from tanθ (as d → 0) through 0 (at b = b*) toward
+    −tan(π/4 − θ) (as b → ∞). It does not depend on the shaft speed.
+
+    Parameters
+    ----------
+    ball_radius : r. [m]
+    contact_angle : θ. [rad]
+    pitch_radius : b. [m]
+
+    Returns
+    -------
+    ρ. [1] NaN where the geometry is impossible.
+
+    Source: physics.md §1.
+    """
+    r = np.asarray(ball_radius, dtype=float)
+    theta = np.asarray(contact_angle, dtype=float)
+    b = np.asarray(pitch_radius, dtype=float)
+    sin, cos = np.sin(theta), np.cos(theta)
+    ok = _geometry_ok(r, theta, b)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        k = r * (1.0 + sin + cos) / (b - r * cos)
+        rho = (k * sin + sin - cos) / (k * cos + sin + cos)
+    return np.where(ok, rho, np.nan)
+
+
+def pitch_radius_window(ball_radius: ArrayLike, contact_angle: ArrayLike,
+                        max_spin_to_roll: ArrayLike) -> tuple[NDArray, NDArray]:
+    r"""Range of pitch radii that keeps |ρ| <= ρ_max.
+
+    Solving ρ = ±ρ_max for K and then b = r·cosθ + r(1 + sinθ + cosθ)/K:
+
+    .. math:: K(\rho) = \frac{\rho(\sin\theta + \cos\theta) + \cos\theta - \sin\theta}
+                             {\sin\theta - \rho\cos\theta}
+
+    The lower edge solves ρ = +ρ_max; when ρ_max >= tanθ no b reaches it and the
+    edge is the geometric bound b → r·cosθ. The upper edge solves ρ = −ρ_max; when
+    ρ_max >= tan(π/4 − θ) there is no upper edge and it is +inf.
+
+    Parameters
+    ----------
+    ball_radius : r. [m]
+    contact_angle : θ, 0 < θ < π/4. [rad]
+    max_spin_to_roll : ρ_max >= 0. [1]
+
+    Returns
+    -------
+    (b_min, b_max). [m]
+
+    Source: physics.md §1.
+    """
+    r = np.asarray(ball_radius, dtype=float)
+    theta = _angle_in_range(contact_angle)
+    rho_max = np.asarray(max_spin_to_roll, dtype=float)
+    sin, cos = np.sin(theta), np.cos(theta)
+
+    def edge(rho: NDArray) -> NDArray:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            k = (rho * (sin + cos) + cos - sin) / (sin - rho * cos)
+            return r * cos + r * (1.0 + sin + cos) / k
+
+    # K must be positive for a real edge; otherwise the edge is out of reach.
+    low_reachable = rho_max < np.tan(theta)
+    high_reachable = rho_max < np.tan(np.pi / 4 - theta)
+    b_min = np.where(low_reachable, edge(rho_max), r * cos)
+    b_max = np.where(high_reachable, edge(-rho_max), np.inf)
+    nan = np.isnan(theta) | np.isnan(rho_max) | np.isnan(r)
+    return np.where(nan, np.nan, b_min), np.where(nan, np.nan, b_max)
+
+
+def thrust_bearing_status(ball_radius: ArrayLike, contact_angle: ArrayLike,
+                          pitch_radius: ArrayLike, ball_count: ArrayLike | None = None) -> NDArray:
+    """Feasibility code of each design: 0 when feasible, else a key of ``STATUS_REASONS``.
+
+    Checks, in order: r > 0, b > 0, 0 < θ < π/4, d = b − r·cosθ > 0 and, with a ball
+    count Z, Z·asin(r/b) <= π (the balls fit on the pitch circle). NaN inputs fail
+    the first check they take part in.
+    """
+    r = np.asarray(ball_radius, dtype=float)
+    theta = np.asarray(contact_angle, dtype=float)
+    b = np.asarray(pitch_radius, dtype=float)
+    shape = np.broadcast_shapes(r.shape, theta.shape, b.shape,
+                                np.shape(ball_count) if ball_count is not None else ())
+    status = np.zeros(shape, dtype=np.int8)
+    with np.errstate(invalid="ignore"):
+        checks = [
+            (1, ~(r > 0)),
+            (2, ~(b > 0)),
+            (3, ~((theta > 0) & (theta < np.pi / 4))),
+            (4, ~(b - r * np.cos(theta) > 0)),
+        ]
+        if ball_count is not None:
+            z = np.asarray(ball_count, dtype=float)
+            fits = z * np.arcsin(np.minimum(r / b, 1.0)) <= np.pi
+            # A single ball always fits; two or more need b >= r.
+            checks.append((5, ~(fits & ((z <= 1) | (b >= r)))))
+    # Apply in reverse so that the first failing check is the one reported.
+    for code, failed in reversed(checks):
+        status = np.where(failed, np.int8(code), status)
+    return status
+
+
+def solve_thrust_bearing(ball_radius: ArrayLike | None, contact_angle: ArrayLike | None,
+                         pitch_radius: ArrayLike | None, shaft_speed: ArrayLike, *,
+                         ball_count: ArrayLike | None = None,
+                         max_spin_to_roll: ArrayLike = 0.01) -> dict[str, NDArray]:
+    r"""Every speed of a thrust bearing driven by its shaft, and its slip figures.
+
+    At most one of ``ball_radius``, ``contact_angle`` and ``pitch_radius`` may be
+    None; it is then solved so that the shaft contact rolls purely.
+
+    Kinematics (physics.md §1): the ball turns about the line C1C2 at ω_B,
+
+    .. math:: \omega_S = \frac{\sqrt2}{2}\,\frac{r(1 + \sin\theta + \cos\theta)}
+                                          {b - r\cos\theta}\,\omega_B,
+              \quad v_G = \frac{\sqrt2}{2} r\omega_B,
+              \quad \omega_{cage} = v_G / b
+
+    and the shaft relative to the ball turns at
+    ω_rel = ω_S·e2 − ω_B(√2/2)(e1 − e2), whose component along the contact normal
+    n = cosθ·e1 + sinθ·e2 is the spin and along t = −sinθ·e1 + cosθ·e2 the roll.
+
+    Parameters
+    ----------
+    ball_radius : r, or None to solve it. [m]
+    contact_angle : θ, or None to solve it. [rad]
+    pitch_radius : b, or None to solve it. [m]
+    shaft_speed : ω_S, signed about e2. [rad/s]
+    ball_count : Z, optional; adds the ball-pass frequencies. [1]
+    max_spin_to_roll : ρ_max, the limit on |spin/roll|. [1]
+
+    Returns
+    -------
+    dict of arrays keyed as :data:`RESULTS`; NaN where the design is impossible.
+
+    Raises
+    ------
+    ValueError : when more than one of r, θ, b is None.
+
+    Examples
+    --------
+    >>> out = solve_thrust_bearing(1.0, np.radians(20.0), None, 1.0)
+    >>> round(float(out["pitch_radius"]), 5), round(float(out["spin_to_roll"]), 12)
+    (2.24541, 0.0)
+    """
+    r, theta, b = complete_geometry(ball_radius, contact_angle, pitch_radius)
+    omega_s = np.asarray(shaft_speed, dtype=float)
+    rho_max = np.asarray(max_spin_to_roll, dtype=float)
+    ok = _geometry_ok(r, theta, b)
+    r, theta, b = (np.where(ok, x, np.nan) for x in (r, theta, b))
+
+    sin, cos = np.sin(theta), np.cos(theta)
+    d = b - r * cos
+    omega_b = omega_s * d / (HALF_SQRT2 * r * (1.0 + sin + cos))
+    v_g = HALF_SQRT2 * r * omega_b
+    cage = v_g / b
+    # ω_rel = −(√2/2)ω_B·e1 + (ω_S + (√2/2)ω_B)·e2, projected on n and t.
+    rel_1 = -HALF_SQRT2 * omega_b
+    rel_2 = omega_s + HALF_SQRT2 * omega_b
+    spin = rel_1 * cos + rel_2 * sin
+    roll = -rel_1 * sin + rel_2 * cos
+    # ρ is a property of the geometry alone; computing it from K keeps it finite
+    # (and exact) when the shaft is at rest and spin and roll are both zero.
+    rho = spin_to_roll_ratio(r, theta, b)
+    b_star = pure_rolling_pitch_radius(r, theta)
+    b_min, b_max = pitch_radius_window(r, theta, rho_max)
+
+    shape = np.broadcast_shapes(np.shape(r), omega_s.shape, rho_max.shape)
+    results = {
+        "ball_radius": r,
+        "contact_angle": theta,
+        "pitch_radius": b,
+        "pitch_radius_pure_rolling": b_star,
+        "pitch_radius_deviation": b - b_star,
+        "shaft_contact_radius": d,
+        "shaft_speed": omega_s * np.where(ok, 1.0, np.nan),
+        "ball_speed": omega_b,
+        "cage_speed": cage,
+        "ball_center_speed": v_g,
+        "shaft_contact_speed": d * omega_s,
+        "spin_speed": spin,
+        "roll_speed": roll,
+        "spin_to_roll": rho,
+        "slip_margin": rho_max - np.abs(rho),
+        "pitch_radius_min": b_min,
+        "pitch_radius_max": b_max,
+    }
+    if ball_count is not None:
+        z = np.asarray(ball_count, dtype=float)
+        results["ball_pass_frequency_race"] = z * np.abs(cage) / (2 * np.pi)
+        results["ball_pass_frequency_shaft"] = z * np.abs(omega_s - cage) / (2 * np.pi)
+    return {key: np.broadcast_to(value, np.broadcast_shapes(shape, np.shape(value)))
+            for key, value in results.items()}
+
+
+def complete_geometry(ball_radius: ArrayLike | None, contact_angle: ArrayLike | None,
+                      pitch_radius: ArrayLike | None) -> tuple[NDArray, NDArray, NDArray]:
+    """(r, θ, b) with the one missing value solved for pure rolling. [m, rad, m]"""
+    missing = [ball_radius is None, contact_angle is None, pitch_radius is None]
+    if sum(missing) > 1:
+        raise ValueError("at most one of ball_radius, contact_angle and pitch_radius may be None")
+    if ball_radius is None:
+        ball_radius = pure_rolling_ball_radius(contact_angle, pitch_radius)  # type: ignore[arg-type]
+    elif contact_angle is None:
+        contact_angle = pure_rolling_contact_angle(ball_radius, pitch_radius)  # type: ignore[arg-type]
+    elif pitch_radius is None:
+        pitch_radius = pure_rolling_pitch_radius(ball_radius, contact_angle)
+    return (np.asarray(ball_radius, dtype=float), np.asarray(contact_angle, dtype=float),
+            np.asarray(pitch_radius, dtype=float))
+
+
+def evaluate(inputs: Mapping[str, ArrayLike | None]) -> tuple[dict[str, NDArray], NDArray]:
+    """Registry entry point: results and status codes from the spec's SI inputs.
+
+    ``inputs`` holds ball_radius, contact_angle, pitch_radius (one may be None),
+    shaft_speed, ball_count (may be None) and max_spin_to_roll.
+    """
+    r, theta, b = complete_geometry(inputs["ball_radius"], inputs["contact_angle"],
+                                    inputs["pitch_radius"])
+    status = thrust_bearing_status(r, theta, b, inputs.get("ball_count"))
+    if inputs["pitch_radius"] is not None and inputs["contact_angle"] is None:
+        # θ came out NaN because no pure-rolling angle exists: say why.
+        status = np.where((status == 3) & ~(b > r), np.int8(6), status)
+    results = solve_thrust_bearing(r, theta, b, inputs["shaft_speed"],
+                                   ball_count=inputs.get("ball_count"),
+                                   max_spin_to_roll=inputs.get("max_spin_to_roll", 0.01))
+    return results, status
+
+
+def _angle_in_range(contact_angle: ArrayLike) -> NDArray:
+    theta = np.asarray(contact_angle, dtype=float)
+    return np.where((theta > 0) & (theta < np.pi / 4), theta, np.nan)
+
+
+def _geometry_ok(r: NDArray, theta: NDArray, b: NDArray) -> NDArray:
+    with np.errstate(invalid="ignore"):
+        return (r > 0) & (b > 0) & (theta > 0) & (theta < np.pi / 4) & (b - r * np.cos(theta) > 0)

@@ -1,0 +1,40 @@
+"""The package's exception family. Only the CLI turns these into exit codes."""
+
+from __future__ import annotations
+
+
+class BearingcalcError(Exception):
+    """Base of every error bearingcalc reports to the user."""
+
+
+class SpecError(BearingcalcError):
+    """A spec that cannot be read or is invalid.
+
+    Renders as one line: ``path:line: field: what is wrong, what would be right``.
+    """
+
+    def __init__(self, message: str, *, source: str = "<spec>", line: int | None = None,
+                 field: str | None = None) -> None:
+        super().__init__(message)
+        self.message = message
+        self.source = source
+        self.line = line
+        self.field = field
+
+    def __str__(self) -> str:
+        where = self.source if self.line is None else f"{self.source}:{self.line}"
+        what = f"{self.field}: {self.message}" if self.field else self.message
+        return f"{where}: {what}"
+
+
+class SpecFieldError(Exception):
+    """Raised by spec models' physics checks to blame one field.
+
+    It deliberately does not derive from ValueError: pydantic then lets it pass
+    through unchanged, and the loader attaches file and line.
+    """
+
+    def __init__(self, field: str, message: str) -> None:
+        super().__init__(message)
+        self.field = field
+        self.message = message

@@ -1,0 +1,177 @@
+"""From a YAML document to checked results: the one path every command takes.
+
+``load_spec_file`` reads a file into documents; ``parse_document`` validates one
+against its kind's model; ``evaluate_document`` solves it and judges it against
+its limits. Errors come out as :class:`SpecError` with file, line and field.
+"""
+
+from __future__ import annotations
+
+import difflib
+import functools
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from pydantic import BaseModel, ValidationError
+
+from bearingcalc.errors import SpecError, SpecFieldError
+from bearingcalc.kinds import KINDS, Kind
+from bearingcalc.spec.fields import SpecModel
+from bearingcalc.spec.yaml_loader import Document, load_documents
+
+
+@dataclass
+class Evaluation:
+    """The solved results of one valid spec, in SI units."""
+
+    source: str
+    kind: str
+    name: str
+    results: dict[str, float | None]      # None: unbounded (see warnings)
+    units: dict[str, str]
+    margins: dict[str, float]
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def within_limits(self) -> bool:
+        return all(margin >= 0 for margin in self.margins.values())
+
+    @property
+    def violations(self) -> list[str]:
+        return [f"{key} is {value:.4g} (below 0)" for key, value in self.margins.items()
+                if value < 0]
+
+
+def parse_document(document: Document) -> tuple[Kind, SpecModel]:
+    """Validate one document against the model of its ``kind``."""
+    data = document.data
+    if not isinstance(data, dict):
+        got = "nothing" if data is None else f"a {type(data).__name__}"
+        raise document.error(f"a spec is a mapping of keys (kind: thrust-bearing, ...), got {got}")
+    kind_name = data.get("kind")
+    if kind_name is None:
+        raise document.error(f"missing key 'kind': one of {', '.join(KINDS)}", field="kind")
+    kind = KINDS.get(kind_name) if isinstance(kind_name, str) else None
+    if kind is None:
+        raise document.error(f"unknown kind {kind_name!r}{_did_you_mean(str(kind_name), KINDS)}; "
+                             f"known kinds: {', '.join(KINDS)}", field="kind")
+    try:
+        spec = kind.model.model_validate(data)
+    except ValidationError as exc:
+        raise _spec_error(document, kind.model, exc) from None
+    except SpecFieldError as problem:
+        raise document.error(problem.message, field=problem.field) from None
+    return kind, spec
+
+
+def evaluate_document(document: Document) -> Evaluation:
+    """Solve one document and judge it against its limits."""
+    kind, spec = parse_document(document)
+    inputs = spec.solver_inputs()  # type: ignore[attr-defined]
+    raw, status = kind.evaluate(inputs)
+    code = int(status)
+    if code:
+        name, reason = kind.status_reasons[code]
+        name = spec.field_as_written(name)  # type: ignore[attr-defined]
+        written = document.data.get(name)
+        got = f", got {written}" if isinstance(written, (str, int, float)) else ""
+        raise document.error(f"{reason}{got}", field=name)
+    results: dict[str, float | None] = {}
+    warnings: list[str] = []
+    for key, array in raw.items():
+        value = float(array)
+        if math.isnan(value):
+            raise document.error(f"{key} cannot be computed for this design; please report it")
+        if math.isinf(value):
+            warnings.append(f"{key} is unbounded (null in JSON): "
+                            "the limit holds however far it goes")
+            results[key] = None
+        else:
+            results[key] = value
+    units = {key: kind.results[key][0] for key in results}
+    margins = {key: results[key] for key in kind.margins if results.get(key) is not None}
+    name = getattr(spec, "name", None) or _default_name(document)
+    return Evaluation(document.source, kind.name, name, results, units,
+                      margins, warnings)  # type: ignore[arg-type]
+
+
+def evaluate_file(path: str | Path) -> list[Evaluation | SpecError]:
+    """Every document of a file, each evaluated or refused with its error."""
+    try:
+        documents = load_documents(path)
+    except SpecError as error:
+        return [error]
+    outcomes: list[Evaluation | SpecError] = []
+    for document in documents:
+        try:
+            outcomes.append(evaluate_document(document))
+        except SpecError as error:
+            outcomes.append(error)
+    return outcomes
+
+
+def _default_name(document: Document) -> str:
+    stem = Path(document.path).stem
+    return stem if document.source == document.path else f"{stem}#{document.index}"
+
+
+def _did_you_mean(word: str, choices: Any) -> str:
+    close = difflib.get_close_matches(word, list(choices), n=1, cutoff=0.6)
+    return f" (did you mean '{close[0]}'?)" if close else ""
+
+
+def _spec_error(document: Document, model: type[SpecModel], exc: ValidationError) -> SpecError:
+    """The first problem of a ValidationError as one actionable line."""
+    problems = sorted(exc.errors(include_url=False),
+                      key=lambda e: document.line_of(tuple(str(p) for p in e["loc"])))
+    error = problems[0]
+    loc = tuple(str(part) for part in error["loc"])
+    dotted = ".".join(loc)
+    kind, message = error["type"], str(error["msg"])
+    if kind == "extra_forbidden":
+        parent = _model_at(model, loc[:-1])
+        known = list(parent.model_fields) if parent else []
+        message = f"unknown key '{loc[-1]}'{_did_you_mean(loc[-1], known)}"
+        if not _did_you_mean(loc[-1], known):
+            message += f"; allowed keys: {', '.join(k for k in known if k != 'kind')}"
+    elif kind == "missing":
+        example = _example(model, loc)
+        message = f"missing required key '{loc[-1]}'" + (f", e.g. {loc[-1]}: {example}"
+                                                        if example else "")
+    elif kind in ("model_type", "model_attributes_type", "dict_type"):
+        message = f"must be a mapping of keys, got {error.get('input')!r}"
+    elif kind == "literal_error":
+        message = f"{message}, got {error.get('input')!r}"
+    else:
+        message = message.removeprefix("Value error, ")
+    return document.error(message, field=dotted, key_path=loc)
+
+
+def _model_at(model: type[BaseModel], loc: tuple[str, ...]) -> type[BaseModel] | None:
+    current: type[BaseModel] | None = model
+    for part in loc:
+        if current is None or part not in current.model_fields:
+            return None
+        annotation = current.model_fields[part].annotation
+        candidates = [annotation, *getattr(annotation, "__args__", ())]
+        current = next((c for c in candidates
+                        if isinstance(c, type) and issubclass(c, BaseModel)), None)
+    return current
+
+
+@functools.lru_cache(maxsize=32)
+def _schema(model: type[BaseModel]) -> dict[str, Any]:
+    return model.model_json_schema()
+
+
+def _example(model: type[BaseModel], loc: tuple[str, ...]) -> str | None:
+    parent = _model_at(model, loc[:-1])
+    if parent is None:
+        return None
+    prop = _schema(parent).get("properties", {}).get(loc[-1], {})
+    examples = prop.get("examples") or [
+        option["examples"][0] for option in prop.get("anyOf", []) if option.get("examples")]
+    return str(examples[0]) if examples else None
+

@@ -1,0 +1,52 @@
+"""The registry of spec kinds: one entry per rolling system.
+
+Adding a kind takes a solver module in ``core/`` (with ``RESULTS``,
+``STATUS_REASONS`` and ``evaluate``), a spec model in ``spec/`` (with
+``solver_inputs``) and one entry here; every command picks it up.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from types import ModuleType
+from typing import Any
+
+from numpy.typing import NDArray
+
+from bearingcalc.core import thrust_bearing
+from bearingcalc.spec.fields import SpecModel
+from bearingcalc.spec.thrust_bearing import ThrustBearingSpec
+
+
+@dataclass(frozen=True)
+class Kind:
+    """What every command needs to know of one spec kind."""
+
+    name: str
+    summary: str
+    model: type[SpecModel]
+    solver: ModuleType
+    margins: tuple[str, ...]   # result keys that must be >= 0 for the design to pass
+
+    @property
+    def evaluate(self) -> Callable[[Mapping[str, Any]], tuple[dict[str, NDArray], NDArray]]:
+        return self.solver.evaluate  # type: ignore[no-any-return]
+
+    @property
+    def results(self) -> dict[str, tuple[str, str]]:
+        """Result key -> (SI unit, meaning), in report order."""
+        return self.solver.RESULTS  # type: ignore[no-any-return]
+
+    @property
+    def status_reasons(self) -> dict[int, tuple[str, str]]:
+        return self.solver.STATUS_REASONS  # type: ignore[no-any-return]
+
+
+KINDS: dict[str, Kind] = {
+    kind.name: kind
+    for kind in (
+        Kind("thrust-bearing", "balls between a fixed race and a turning shaft",
+             ThrustBearingSpec, thrust_bearing, margins=("slip_margin",)),
+    )
+}

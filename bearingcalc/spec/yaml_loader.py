@@ -1,0 +1,266 @@
+"""Reading spec files: safe YAML with the line of every key, and hard limits.
+
+Only plain YAML data is accepted: mappings, sequences and scalars with the
+standard tags. A tag such as ``!!python/object`` is refused before anything is
+constructed, so no spec can run code. Files over ``MAX_FILE_BYTES``, documents
+that expand (through aliases) to more than ``MAX_NODES`` nodes, and nesting
+deeper than ``MAX_DEPTH`` are refused, so a hostile file cannot hang or exhaust
+memory.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from bearingcalc.errors import SpecError
+
+MAX_FILE_BYTES = 1024 * 1024
+MAX_NODES = 10_000
+MAX_DEPTH = 20
+
+_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+_PLAIN_TAGS = {
+    "tag:yaml.org,2002:str", "tag:yaml.org,2002:int", "tag:yaml.org,2002:float",
+    "tag:yaml.org,2002:bool", "tag:yaml.org,2002:null",
+}
+_MAP_TAG = "tag:yaml.org,2002:map"
+_SEQ_TAG = "tag:yaml.org,2002:seq"
+
+KeyPath = tuple[str | int, ...]
+
+
+@dataclass
+class Document:
+    """One YAML document of a spec file, with the line of each key."""
+
+    source: str                     # "specs/tb.yaml", or "specs/tb.yaml#2" in a multi-document file
+    path: str
+    index: int                      # 1-based position in the file
+    data: Any
+    start_line: int
+    lines: dict[KeyPath, int] = field(default_factory=dict)
+
+    def line_of(self, key_path: KeyPath) -> int:
+        """Line of the deepest key of ``key_path`` that the document has."""
+        for end in range(len(key_path), 0, -1):
+            line = self.lines.get(key_path[:end])
+            if line is not None:
+                return line
+        return self.start_line
+
+    def error(self, message: str, field: str | None = None,
+              key_path: KeyPath | None = None) -> SpecError:
+        """A SpecError located at ``key_path`` (default: the dotted ``field``)."""
+        if key_path is None:
+            key_path = tuple(field.split(".")) if field else ()
+        return SpecError(message, source=self.source, line=self.line_of(key_path), field=field)
+
+
+def read_spec_text(path: str | os.PathLike[str]) -> str:
+    """The text of a spec file, or a SpecError saying why it cannot be read."""
+    label = str(path)
+    try:
+        with open(path, "rb") as handle:
+            raw = handle.read(MAX_FILE_BYTES + 1)
+    except FileNotFoundError:
+        raise SpecError("no such file; check the path", source=label) from None
+    except IsADirectoryError:
+        raise SpecError("is a folder, not a spec file; give a .yaml file "
+                        "(or use 'bearingcalc check' for folders)", source=label) from None
+    except OSError as exc:
+        raise SpecError(f"cannot read the file: {exc.strerror or exc}", source=label) from None
+    if len(raw) > MAX_FILE_BYTES:
+        raise SpecError(f"file too large: specs are at most {MAX_FILE_BYTES // 1024} KiB",
+                        source=label)
+    if b"\0" in raw:
+        raise SpecError("binary file, not YAML text", source=label)
+    try:
+        return raw.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        raise SpecError(f"not UTF-8 text (byte 0x{raw[exc.start]:02x} at offset {exc.start}); "
+                        "save the file as UTF-8", source=label) from None
+
+
+def load_documents(path: str | os.PathLike[str], text: str | None = None) -> list[Document]:
+    """Every YAML document of a spec file, in order.
+
+    Raises
+    ------
+    SpecError : the file cannot be read, is not YAML, holds no document, or
+        breaks one of the limits above.
+    """
+    label = str(path)
+    if text is None:
+        text = read_spec_text(path)
+    loader = _LOADER(text)
+    try:
+        documents = _Builder(loader, label).documents()
+    except yaml.MarkedYAMLError as exc:
+        mark = exc.problem_mark or exc.context_mark
+        line = mark.line + 1 if mark is not None else None
+        problem = exc.problem or exc.context or "malformed YAML"
+        raise SpecError(f"malformed YAML: {problem}", source=label, line=line) from None
+    except yaml.YAMLError as exc:
+        raise SpecError(f"malformed YAML: {exc}", source=label) from None
+    finally:
+        loader.dispose()
+    if not documents:
+        raise SpecError("empty file: a spec is a YAML mapping that starts with "
+                        "'kind: thrust-bearing' (see 'specs/')", source=label)
+    if len(documents) > 1:
+        for document in documents:
+            document.source = f"{label}#{document.index}"
+    return documents
+
+
+class _Container:
+    """A mapping or sequence under construction."""
+
+    __slots__ = ("anchor", "first_node", "key_path", "pending_key", "value")
+
+    def __init__(self, value: Any, key_path: KeyPath, anchor: str | None, first_node: int) -> None:
+        self.value = value
+        self.key_path = key_path
+        self.pending_key: Any = _NO_KEY
+        self.anchor = anchor
+        self.first_node = first_node
+
+
+_NO_KEY = object()
+
+
+class _Builder:
+    """Builds plain Python data straight from parser events, recording key lines.
+
+    Working on events rather than composed nodes keeps nesting out of the C
+    stack (libyaml's composer recurses and crashes on very deep input), and
+    lets an alias reuse its anchor's object while counting its size, so an
+    alias bomb is refused without being expanded.
+    """
+
+    def __init__(self, loader: Any, label: str) -> None:
+        self.loader = loader
+        self.label = label
+
+    def _fail(self, message: str, event: yaml.Event) -> SpecError:
+        return SpecError(message, source=self.label, line=event.start_mark.line + 1)
+
+    def documents(self) -> list[Document]:
+        loader = self.loader
+        documents: list[Document] = []
+        stack: list[_Container] = []
+        anchors: dict[str, tuple[Any, int]] = {}
+        lines: dict[KeyPath, int] = {}
+        nodes = 0
+        start_line = 1
+        root: Any = None
+        while loader.check_event():
+            event = loader.get_event()
+            if isinstance(event, yaml.DocumentStartEvent):
+                stack, anchors, lines, nodes, root = [], {}, {}, 0, None
+                start_line = event.start_mark.line + 1
+                continue
+            if isinstance(event, yaml.DocumentEndEvent):
+                documents.append(Document(source=self.label, path=self.label,
+                                          index=len(documents) + 1, data=root,
+                                          start_line=start_line, lines=lines))
+                continue
+            if isinstance(event, (yaml.StreamStartEvent, yaml.StreamEndEvent)):
+                continue
+            if isinstance(event, (yaml.MappingEndEvent, yaml.SequenceEndEvent)):
+                done = stack.pop()
+                if done.anchor is not None:
+                    anchors[done.anchor] = (done.value, nodes - done.first_node + 1)
+                if not stack:
+                    root = done.value
+                continue  # attached to its parent when it started
+            if isinstance(event, yaml.AliasEvent):
+                if event.anchor not in anchors:
+                    raise self._fail(f"unknown alias '*{event.anchor}'", event)
+                value, size = anchors[event.anchor]
+            else:
+                size = 1
+                parent_path = stack[-1].key_path if stack else ()
+                if isinstance(event, yaml.MappingStartEvent):
+                    self._check_tag(event, _MAP_TAG)
+                    value = {}
+                elif isinstance(event, yaml.SequenceStartEvent):
+                    self._check_tag(event, _SEQ_TAG)
+                    value = []
+                else:
+                    value = self._scalar(event)
+            nodes += size
+            if nodes > MAX_NODES:
+                raise self._fail(f"document too large: more than {MAX_NODES} values "
+                                 "(YAML aliases count as copies)", event)
+            if isinstance(event, (yaml.MappingStartEvent, yaml.SequenceStartEvent)):
+                if len(stack) >= MAX_DEPTH:
+                    raise self._fail(f"nested too deeply: specs nest at most {MAX_DEPTH} levels",
+                                     event)
+                key_path = self._child_path(stack, parent_path)
+                self._attach(stack, value, event, lines)
+                stack.append(_Container(value, key_path, event.anchor, nodes))
+                continue
+            if isinstance(event, yaml.ScalarEvent) and event.anchor is not None:
+                anchors[event.anchor] = (value, 1)
+            if stack:
+                self._attach(stack, value, event, lines)
+            else:
+                root = value
+        return documents
+
+    @staticmethod
+    def _child_path(stack: list[_Container], parent_path: KeyPath) -> KeyPath:
+        if not stack:
+            return ()
+        parent = stack[-1]
+        if isinstance(parent.value, list):
+            return (*parent_path, len(parent.value))
+        return (*parent_path, parent.pending_key)
+
+    def _attach(self, stack: list[_Container], value: Any, event: yaml.Event,
+                lines: dict[KeyPath, int]) -> None:
+        """Put a finished value into the container on top of the stack."""
+        if not stack:
+            return
+        parent = stack[-1]
+        if isinstance(parent.value, list):
+            parent.value.append(value)
+            return
+        if parent.pending_key is _NO_KEY:
+            if not isinstance(value, str):
+                raise self._fail(f"keys must be names, got {value!r}", event)
+            if value == "<<":
+                raise self._fail("YAML merge keys ('<<') are not supported in specs", event)
+            if value in parent.value:
+                raise self._fail(f"duplicate key '{value}'", event)
+            parent.pending_key = value
+            lines[(*parent.key_path, value)] = event.start_mark.line + 1
+            return
+        parent.value[parent.pending_key] = value
+        parent.pending_key = _NO_KEY
+
+    def _check_tag(self, event: Any, default_tag: str) -> None:
+        if event.tag is not None and event.tag not in (default_tag, "!"):
+            raise self._fail(f"YAML tag '{event.tag}' is not allowed in a spec; "
+                             "write plain values", event)
+
+    def _scalar(self, event: Any) -> Any:
+        tag = event.tag
+        if tag is None or tag == "!":
+            tag = self.loader.resolve(yaml.ScalarNode, event.value, event.implicit)
+        if tag not in _PLAIN_TAGS:
+            raise self._fail(f"YAML tag '{tag}' is not allowed in a spec; write plain values",
+                             event)
+        node = yaml.ScalarNode(tag, event.value, event.start_mark, event.end_mark, event.style)
+        return self.loader.construct_object(node)
+
+
+def is_spec_file(path: Path) -> bool:
+    """Whether a path names a spec file by its suffix."""
+    return path.suffix.lower() in (".yaml", ".yml")

@@ -1,0 +1,171 @@
+"""Quantities with units: parsing spec strings into SI floats, and display units.
+
+pint is the authority on units. Building its registry costs about three times a
+numpy import, so the units engineers write every day are looked up in
+``COMMON_UNITS``, a table of pint's own factors (``tests/test_units.py`` checks
+every entry against pint), and pint is loaded only for anything else.
+
+Angles need care: pint treats the radian as dimensionless, so a plain number or
+``Hz`` would pass as an angle or an angular speed. Every dimension here therefore
+names the root units pint must reduce to, radian included, and ``25 Hz`` is
+refused for a speed rather than read silently as 25 rad/s.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import re
+from dataclasses import dataclass
+from typing import Any
+
+
+class UnitError(ValueError):
+    """A quantity string that cannot be read, or is of the wrong dimension."""
+
+
+@dataclass(frozen=True)
+class Dimension:
+    """A physical dimension as spec fields use it."""
+
+    name: str            # "length"
+    si_unit: str         # "m", as results and JSON name it
+    root: str            # pint's root units, "meter"
+    example: str         # "12.7 mm"
+    display_unit: str    # engineering unit of tables, "mm"
+
+
+LENGTH = Dimension("length", "m", "meter", "12.7 mm", "mm")
+ANGLE = Dimension("angle", "rad", "radian", "20 deg", "deg")
+ANGULAR_SPEED = Dimension("angular speed", "rad/s", "radian / second", "1500 rpm", "rpm")
+ANGULAR_ACCEL = Dimension("angular acceleration", "rad/s²", "radian / second ** 2",
+                          "10 rad/s^2", "rad/s²")
+DIMENSIONS = {d.name: d for d in (LENGTH, ANGLE, ANGULAR_SPEED, ANGULAR_ACCEL)}
+
+_TAU = 2.0 * math.pi
+_DEG = math.pi / 180.0
+
+#: unit text -> (pint root units, factor to SI). Verified against pint in the tests.
+#: Decimal sub-units divide (26 mm -> 26 / 1000 = 0.026 exactly as typed, where
+#: 26 * 1e-3 would give 0.026000000000000002); see ``_DIVISORS``.
+COMMON_UNITS: dict[str, tuple[str, float]] = {
+    "m": ("meter", 1.0),
+    "cm": ("meter", 1e-2),
+    "mm": ("meter", 1e-3),
+    "um": ("meter", 1e-6),
+    "µm": ("meter", 1e-6),
+    "μm": ("meter", 1e-6),
+    "in": ("meter", 0.0254),
+    "inch": ("meter", 0.0254),
+    "ft": ("meter", 0.3048),
+    "rad": ("radian", 1.0),
+    "mrad": ("radian", 1e-3),
+    "deg": ("radian", _DEG),
+    "degree": ("radian", _DEG),
+    "°": ("radian", _DEG),
+    "arcmin": ("radian", _DEG / 60.0),
+    "arcsec": ("radian", _DEG / 3600.0),
+    "turn": ("radian", _TAU),
+    "rad/s": ("radian / second", 1.0),
+    "deg/s": ("radian / second", _DEG),
+    "rpm": ("radian / second", _TAU / 60.0),
+    "rev/min": ("radian / second", _TAU / 60.0),
+    "rps": ("radian / second", _TAU),
+    "rev/s": ("radian / second", _TAU),
+    "rad/s^2": ("radian / second ** 2", 1.0),
+    "rad/s**2": ("radian / second ** 2", 1.0),
+    "rad/s²": ("radian / second ** 2", 1.0),
+    "rpm/s": ("radian / second ** 2", _TAU / 60.0),
+    "deg/s^2": ("radian / second ** 2", _DEG),
+}
+
+_DIVISORS: dict[str, float] = {"cm": 1e2, "mm": 1e3, "um": 1e6, "µm": 1e6, "μm": 1e6,
+                               "mrad": 1e3}
+
+#: SI unit -> (engineering unit, factor from SI), for tables.
+DISPLAY_UNITS: dict[str, tuple[str, float]] = {
+    "m": ("mm", 1e3),
+    "rad": ("deg", 1.0 / _DEG),
+    "rad/s": ("rpm", 60.0 / _TAU),
+    "rad/s²": ("rad/s²", 1.0),
+    "m/s": ("m/s", 1.0),
+    "m/s²": ("m/s²", 1.0),
+    "Hz": ("Hz", 1.0),
+    "1": ("", 1.0),
+}
+
+_QUANTITY = re.compile(
+    r"^\s*(?P<number>[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(?P<unit>\S.*?)?\s*$")
+
+
+def parse_quantity(text: Any, dimension: Dimension) -> float:
+    """Read ``"12.7 mm"`` as a value of ``dimension`` and return it in SI units.
+
+    Raises
+    ------
+    UnitError : bare number, unknown unit, wrong dimension, or a value that is
+        not a finite number; the message says how to write the quantity.
+    """
+    if isinstance(text, bool) or not isinstance(text, (str, int, float)):
+        raise UnitError(f"expected a {dimension.name} with a unit, like '{dimension.example}'")
+    if isinstance(text, (int, float)):
+        unit = dimension.example.split()[1]
+        raise UnitError(f"a bare number has no unit: write it as '{text} {unit}' "
+                        f"(a {dimension.name}, like '{dimension.example}')")
+    match = _QUANTITY.match(text)
+    if match is None:
+        if re.search(r"\b(nan|inf|infinity)\b", text, re.IGNORECASE):
+            raise UnitError(f"'{text}' is not a finite number; give a {dimension.name} like "
+                            f"'{dimension.example}'")
+        raise UnitError(f"cannot read '{text}' as a {dimension.name}; write a number and a unit, "
+                        f"like '{dimension.example}'")
+    number, unit = float(match["number"]), match["unit"]
+    if unit is None:
+        raise UnitError(f"'{text}' has no unit: write it like '{dimension.example}'")
+    root, factor = COMMON_UNITS.get(unit) or _pint_unit(unit)
+    if root != dimension.root:
+        raise UnitError(f"'{unit}' is not a unit of {dimension.name} ({_describe_root(root)}); "
+                        f"write it like '{dimension.example}'")
+    divisor = _DIVISORS.get(unit)
+    value = number / divisor if divisor else number * factor
+    if not math.isfinite(value):
+        raise UnitError(f"'{text}' is out of range for a {dimension.name}")
+    return value
+
+
+@functools.lru_cache(maxsize=256)
+def _pint_unit(unit: str) -> tuple[str, float]:
+    """(root units, factor to SI) of a unit pint knows; the registry loads on first use."""
+    import pint
+
+    registry = _registry()
+    try:
+        factor, root = registry.get_root_units(registry.parse_units(unit))
+    except (pint.errors.PintError, AttributeError, TypeError, ValueError, SyntaxError) as exc:
+        raise UnitError(f"unknown unit '{unit}'") from exc
+    return str(root), float(factor)
+
+
+@functools.lru_cache(maxsize=1)
+def _registry() -> Any:
+    import pint
+
+    return pint.UnitRegistry()
+
+
+def _describe_root(root: str) -> str:
+    for dimension in DIMENSIONS.values():
+        if dimension.root == root:
+            article = "an" if dimension.name[0] in "aeiou" else "a"
+            return f"it is {article} {dimension.name}"
+    if root in ("", "dimensionless"):
+        return "it is dimensionless"
+    if root == "1 / second":
+        return "it is a frequency; for a speed of rotation write rpm, rev/s or rad/s"
+    return f"it reduces to {root}"
+
+
+def to_display(value: float, si_unit: str) -> tuple[float, str]:
+    """(value, unit) in the engineering unit of ``si_unit`` for tables."""
+    unit, factor = DISPLAY_UNITS.get(si_unit, (si_unit, 1.0))
+    return value * factor, unit
