@@ -148,9 +148,16 @@ def _pint_unit(unit: str) -> tuple[str, float]:
 
 @functools.lru_cache(maxsize=1)
 def _registry() -> Any:
+    return make_registry()
+
+
+def make_registry() -> Any:
+    """pint's default registry, plus ``rev`` (as in rev/min), which machinists write."""
     import pint
 
-    return pint.UnitRegistry()
+    registry = pint.UnitRegistry()
+    registry.define("rev = revolution")
+    return registry
 
 
 def _describe_root(root: str) -> str:

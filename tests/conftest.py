@@ -1,0 +1,40 @@
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from bearingcalc.cli import app
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+class Run:
+    """A finished CLI run: exit code, stdout and stderr."""
+
+    def __init__(self, result) -> None:
+        self.code = result.exit_code
+        self.out = result.stdout
+        self.err = result.stderr
+        self.exception = result.exception
+
+
+@pytest.fixture
+def cli():
+    runner = CliRunner()
+
+    def run(*args: str) -> Run:
+        return Run(runner.invoke(app, [str(a) for a in args]))
+
+    return run
+
+
+@pytest.fixture
+def spec_file(tmp_path):
+    def write(text: str | bytes, name: str = "spec.yaml") -> Path:
+        path = tmp_path / name
+        path.write_bytes(text if isinstance(text, bytes) else text.encode())
+        return path
+
+    return write
