@@ -74,8 +74,8 @@ def evaluate_document(document: Document) -> Evaluation:
     code = int(status)
     if code:
         name, reason = kind.status_reasons[code]
-        name = spec.field_as_written(name)  # type: ignore[attr-defined]
-        written = document.data.get(name)
+        name = getattr(spec, "field_as_written", lambda field: field)(name)
+        written = _value_at(document.data, name)
         got = f", got {written}" if isinstance(written, (str, int, float)) else ""
         raise document.error(f"{reason}{got}", field=name)
     results: dict[str, float | None] = {}
@@ -110,6 +110,15 @@ def evaluate_file(path: str | Path) -> list[Evaluation | SpecError]:
         except SpecError as error:
             outcomes.append(error)
     return outcomes
+
+
+def _value_at(data: Any, dotted: str) -> Any:
+    """The value at a dotted key path of a document, or None."""
+    for key in dotted.split("."):
+        if not isinstance(data, dict):
+            return None
+        data = data.get(key)
+    return data
 
 
 def _default_name(document: Document) -> str:

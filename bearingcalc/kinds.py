@@ -14,7 +14,10 @@ from typing import Any
 
 from numpy.typing import NDArray
 
-from bearingcalc.core import thrust_bearing
+from bearingcalc.core import bevel_gears, cone_on_plane, disk_on_circle, thrust_bearing
+from bearingcalc.spec.bevel_gears import BevelGearsSpec
+from bearingcalc.spec.cone_on_plane import ConeOnPlaneSpec
+from bearingcalc.spec.disk_on_circle import DiskOnCircleSpec
 from bearingcalc.spec.fields import SpecModel
 from bearingcalc.spec.thrust_bearing import ThrustBearingSpec
 
@@ -28,6 +31,7 @@ class Kind:
     model: type[SpecModel]
     solver: ModuleType
     margins: tuple[str, ...]   # result keys that must be >= 0 for the design to pass
+
 
     @property
     def evaluate(self) -> Callable[[Mapping[str, Any]], tuple[dict[str, NDArray], NDArray]]:
@@ -48,5 +52,11 @@ KINDS: dict[str, Kind] = {
     for kind in (
         Kind("thrust-bearing", "balls between a fixed race and a turning shaft",
              ThrustBearingSpec, thrust_bearing, margins=("slip_margin",)),
+        Kind("disk-on-circle", "a disk rolling on a fixed or turning circle, outside or inside",
+             DiskOnCircleSpec, disk_on_circle, margins=()),
+        Kind("cone-on-plane", "a cone rolling on a plane about its fixed apex",
+             ConeOnPlaneSpec, cone_on_plane, margins=()),
+        Kind("bevel-gears", "an epicyclic bevel pair: gear B on a shaft, gear A on an arm",
+             BevelGearsSpec, bevel_gears, margins=("slip_margin",)),
     )
 }

@@ -81,7 +81,9 @@ def print_tables(evaluations: Iterable[Evaluation], descriptions: dict[str, dict
             style = "bold" if key in evaluation.margins else None
             table.add_row(key, shown, unit, meanings.get(key, ""), style=style)
         console.print(table)
-        if evaluation.within_limits:
+        if not evaluation.margins:
+            console.print("[bold green]PASS[/]: no limits apply to this kind")
+        elif evaluation.within_limits:
             console.print("[bold green]PASS[/]: within limits")
         else:
             console.print(f"[bold red]FAIL[/]: {'; '.join(evaluation.violations)}")

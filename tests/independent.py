@@ -61,3 +61,41 @@ def thrust_bearing_3d(r: float, theta: float, b: float, shaft_speed: float) -> d
         "rel_e3": float(rel @ e3),
         "residual": residual,
     }
+
+
+def bevel_pair_3d(a: float, b: float, shaft_angle: float, arm_speed: float,
+                  gear_b_speed: float) -> dict[str, float]:
+    """An epicyclic bevel pair placed in 3-D and solved for no slip at the pitch point.
+
+    The pitch angles come from a root find of the common-apex condition
+    a/sinα = b/sin(γ − α) (scipy.optimize.brentq), not from the tangent formula.
+    Gear B's axis is k = z through the apex O; the contact line makes β with k;
+    gear A's axis n3 lies in the same plane at γ from k (so k·n3 = cosγ). The
+    unknown spin w of A on the arm solves (ω_Z k + w n3) × C = Ω k × C by least
+    squares.
+    """
+    from scipy.optimize import brentq
+
+    alpha = brentq(lambda x: a * np.sin(shaft_angle - x) - b * np.sin(x), 1e-12,
+                   shaft_angle - 1e-12, xtol=1e-15, rtol=1e-15)
+    beta = shaft_angle - alpha
+    cone_distance = b / np.sin(beta)
+    k = np.array([0.0, 0.0, 1.0])
+    contact = cone_distance * np.array([np.sin(beta), 0.0, np.cos(beta)])
+    n3 = np.array([np.sin(shaft_angle), 0.0, np.cos(shaft_angle)])
+    lhs = np.cross(n3, contact)[:, None]
+    rhs = np.cross(gear_b_speed * k, contact) - np.cross(arm_speed * k, contact)
+    (w,), *_ = np.linalg.lstsq(lhs, rhs, rcond=None)
+    omega_a = arm_speed * k + w * n3
+    return {
+        "gear_a_pitch_angle": alpha,
+        "gear_b_pitch_angle": beta,
+        "cone_distance": float(np.linalg.norm(contact)),
+        "distance_from_a_axis": float(np.linalg.norm(np.cross(n3, contact))),
+        "gear_a_speed_relative_to_arm": float(w),
+        "gear_a_speed": float(np.linalg.norm(omega_a)),
+        "relative_speed": float(np.linalg.norm(omega_a - gear_b_speed * k)),
+        "contact_point_speed": float(np.linalg.norm(np.cross(gear_b_speed * k, contact))),
+        "pitch_line_speed": float(np.linalg.norm(np.cross(w * n3, contact))),
+        "residual": float(np.linalg.norm(lhs[:, 0] * w - rhs)),
+    }

@@ -20,6 +20,8 @@ from collections.abc import Mapping
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from bearingcalc.core.common import broadcast_all, first_failure
+
 HALF_SQRT2 = np.sqrt(0.5)
 
 #: Result keys, their SI unit and meaning, in report order.
@@ -219,7 +221,6 @@ def thrust_bearing_status(ball_radius: ArrayLike, contact_angle: ArrayLike,
     b = np.asarray(pitch_radius, dtype=float)
     shape = np.broadcast_shapes(r.shape, theta.shape, b.shape,
                                 np.shape(ball_count) if ball_count is not None else ())
-    status = np.zeros(shape, dtype=np.int8)
     with np.errstate(invalid="ignore"):
         checks = [
             (1, ~(r > 0)),
@@ -232,10 +233,7 @@ def thrust_bearing_status(ball_radius: ArrayLike, contact_angle: ArrayLike,
             fits = z * np.arcsin(np.minimum(r / b, 1.0)) <= np.pi
             # A single ball always fits; two or more need b >= r.
             checks.append((5, ~(fits & ((z <= 1) | (b >= r)))))
-    # Apply in reverse so that the first failing check is the one reported.
-    for code, failed in reversed(checks):
-        status = np.where(failed, np.int8(code), status)
-    return status
+    return first_failure(checks, shape)
 
 
 def solve_thrust_bearing(ball_radius: ArrayLike | None, contact_angle: ArrayLike | None,
@@ -303,7 +301,6 @@ def solve_thrust_bearing(ball_radius: ArrayLike | None, contact_angle: ArrayLike
     b_star = pure_rolling_pitch_radius(r, theta)
     b_min, b_max = pitch_radius_window(r, theta, rho_max)
 
-    shape = np.broadcast_shapes(np.shape(r), omega_s.shape, rho_max.shape)
     results = {
         "ball_radius": r,
         "contact_angle": theta,
@@ -327,8 +324,7 @@ def solve_thrust_bearing(ball_radius: ArrayLike | None, contact_angle: ArrayLike
         z = np.asarray(ball_count, dtype=float)
         results["ball_pass_frequency_race"] = z * np.abs(cage) / (2 * np.pi)
         results["ball_pass_frequency_shaft"] = z * np.abs(omega_s - cage) / (2 * np.pi)
-    return {key: np.broadcast_to(value, np.broadcast_shapes(shape, np.shape(value)))
-            for key, value in results.items()}
+    return broadcast_all(results)
 
 
 def complete_geometry(ball_radius: ArrayLike | None, contact_angle: ArrayLike | None,
