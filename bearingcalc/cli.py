@@ -8,13 +8,16 @@ from __future__ import annotations
 
 import sys
 import traceback
+from collections.abc import Callable
 from enum import Enum
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, TextIO, TypeVar
 
 import typer
 
 from bearingcalc.errors import SpecError
+
+T = TypeVar("T")
 
 app = typer.Typer(add_completion=False, pretty_exceptions_enable=False, no_args_is_help=True,
                   help="Rolling-contact machine design: thrust bearings, bevel gears and more.")
@@ -73,6 +76,125 @@ def solve(
             raise typer.Exit(EXIT_INVALID)
         if not all(evaluation.within_limits for evaluation in evaluations):
             raise typer.Exit(EXIT_LIMIT)
+
+
+class CheckFormat(str, Enum):
+    table = "table"
+    json = "json"
+    junit = "junit"
+
+
+@app.command()
+def check(
+    paths: Annotated[list[str], typer.Argument(
+        help="Spec files, folders (searched recursively for *.yaml and *.yml) or globs.",
+        show_default=False, metavar="PATH...")],
+    output_format: Annotated[CheckFormat, typer.Option(
+        "--format", "-f", help="table, json (JSON Lines) or junit (JUnit XML).")
+    ] = CheckFormat.table,
+    output: Annotated[Path | None, typer.Option(
+        "--output", "-o", help="Write the report to this file (atomically) instead of stdout.",
+        dir_okay=False)] = None,
+    jobs: Annotated[int | None, typer.Option(
+        "--jobs", "-j", min=1, help="Worker processes [default: the number of cores].",
+        show_default=False)] = None,
+    show_all: Annotated[bool, typer.Option(
+        "--all", help="Table: list passing specs too when there are many.")] = False,
+    debug: DebugOption = False,
+) -> None:
+    """Check every spec: pass (within limits), fail (a limit violated) or invalid.
+
+    Exit status: 0 all pass; 1 some fail and none invalid; 2 any invalid.
+    """
+    with _errors_as_exit(debug):
+        import os
+
+        from bearingcalc import batch, reports
+
+        workers = jobs or os.cpu_count() or 1
+        records = _with_progress(lambda tick: batch.check_paths(paths, workers, tick))
+
+        def write(stream: TextIO) -> None:
+            if output_format is CheckFormat.json:
+                reports.write_check_json_lines(records, stream)
+            elif output_format is CheckFormat.junit:
+                reports.write_junit(records, stream)
+            else:
+                reports.print_check_table(records, show_all=show_all, stream=stream)
+
+        _emit(write, output)
+        raise typer.Exit(batch.exit_status(records))
+
+
+@app.command()
+def schema(
+    kind: Annotated[str | None, typer.Option(
+        "--kind", "-k", help="Only this kind's schema (see 'bearingcalc new --list').")] = None,
+) -> None:
+    """Print the JSON Schema (draft 2020-12) of the spec format, for editors and CI."""
+    import json
+
+    from bearingcalc.kinds import KINDS
+    from bearingcalc.schema import spec_schema
+
+    if kind is not None and kind not in KINDS:
+        print(f"error: --kind: unknown kind {kind!r}; known kinds: {', '.join(KINDS)}",
+              file=sys.stderr)
+        raise typer.Exit(EXIT_INVALID)
+    print(json.dumps(spec_schema(kind), indent=2, ensure_ascii=False))
+
+
+@app.command()
+def new(
+    kind: Annotated[str | None, typer.Argument(help="The kind of spec.", show_default=False)
+                    ] = None,
+    list_kinds: Annotated[bool, typer.Option("--list", help="List the kinds.")] = False,
+) -> None:
+    """Print a commented template spec of KIND, ready for 'bearingcalc check'."""
+    from importlib import resources
+
+    from bearingcalc.kinds import KINDS
+
+    if list_kinds or kind is None:
+        for name, entry in KINDS.items():
+            print(f"{name:16} {entry.summary}")
+        if kind is None and not list_kinds:
+            raise typer.Exit(EXIT_INVALID)
+        return
+    if kind not in KINDS:
+        print(f"error: unknown kind {kind!r}; known kinds: {', '.join(KINDS)}", file=sys.stderr)
+        raise typer.Exit(EXIT_INVALID)
+    print(resources.files("bearingcalc.templates").joinpath(f"{kind}.yaml").read_text("utf-8"),
+          end="")
+
+
+def _with_progress(work: Callable[[Callable[[int], None] | None], T]) -> T:
+    """Run ``work`` with a progress callback drawing a bar on stderr, when it is a terminal.
+
+    The bar counts files and appears only once a batch has taken a moment.
+    """
+    if not sys.stderr.isatty():
+        return work(None)
+    from rich.console import Console
+    from rich.progress import Progress
+
+    with Progress(console=Console(stderr=True), transient=True) as bar:
+        task = bar.add_task("checking", total=None)
+        return work(lambda n: bar.advance(task, n))
+
+
+def _emit(write: Callable[[TextIO], None], output: Path | None) -> None:
+    """Write a report to ``output`` atomically, or to stdout."""
+    if output is None:
+        write(sys.stdout)
+        return
+    from bearingcalc.output import atomic_write
+
+    try:
+        atomic_write(output, write)
+    except OSError as exc:
+        raise SpecError(f"cannot write the report: {exc.strerror or exc}",
+                        source=str(output)) from None
 
 
 def _print_error(error: Exception) -> None:

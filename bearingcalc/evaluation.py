@@ -10,10 +10,12 @@ from __future__ import annotations
 import difflib
 import functools
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 from pydantic import BaseModel, ValidationError
 
 from bearingcalc.errors import SpecError, SpecFieldError
@@ -66,12 +68,59 @@ def parse_document(document: Document) -> tuple[Kind, SpecModel]:
     return kind, spec
 
 
+def evaluate_documents(documents: Sequence[Document]) -> list[Evaluation | SpecError]:
+    """Evaluate many documents: each valid one solved, each bad one refused with its error.
+
+    Specs of the same kind that give the same inputs are stacked into arrays and
+    solved in one vectorised call, so a batch costs little more than its parsing.
+    """
+    outcomes: list[Evaluation | SpecError | None] = [None] * len(documents)
+    groups: dict[tuple[str, tuple[str, ...]], list[tuple[int, SpecModel, dict[str, Any]]]] = {}
+    for index, document in enumerate(documents):
+        try:
+            kind, spec = parse_document(document)
+        except SpecError as error:
+            outcomes[index] = error
+            continue
+        inputs = spec.solver_inputs()  # type: ignore[attr-defined]
+        absent = tuple(key for key, value in inputs.items() if value is None)
+        groups.setdefault((kind.name, absent), []).append((index, spec, inputs))
+    for (kind_name, _), members in groups.items():
+        kind = KINDS[kind_name]
+        stacked = {key: None if value is None else np.array([m[2][key] for m in members])
+                   for key, value in members[0][2].items()}
+        raw, status = kind.evaluate(stacked)
+        columns = {key: values.tolist() for key, values in raw.items()}
+        codes = status.tolist()
+        for row, (index, spec, _) in enumerate(members):
+            values = {key: column[row] for key, column in columns.items()}
+            try:
+                outcomes[index] = _judge(documents[index], kind, spec, values, codes[row])
+            except SpecError as error:
+                outcomes[index] = error
+    return outcomes  # type: ignore[return-value]
+
+
 def evaluate_document(document: Document) -> Evaluation:
-    """Solve one document and judge it against its limits."""
-    kind, spec = parse_document(document)
-    inputs = spec.solver_inputs()  # type: ignore[attr-defined]
-    raw, status = kind.evaluate(inputs)
-    code = int(status)
+    """Solve one document and judge it against its limits; raises SpecError."""
+    (outcome,) = evaluate_documents([document])
+    if isinstance(outcome, SpecError):
+        raise outcome
+    return outcome
+
+
+def evaluate_file(path: str | Path) -> list[Evaluation | SpecError]:
+    """Every document of a file, each evaluated or refused with its error."""
+    try:
+        documents = load_documents(path)
+    except SpecError as error:
+        return [error]
+    return evaluate_documents(documents)
+
+
+def _judge(document: Document, kind: Kind, spec: SpecModel, raw: dict[str, float],
+           code: int) -> Evaluation:
+    """One spec's results from its solved values and status code."""
     if code:
         name, reason = kind.status_reasons[code]
         name = getattr(spec, "field_as_written", lambda field: field)(name)
@@ -80,8 +129,7 @@ def evaluate_document(document: Document) -> Evaluation:
         raise document.error(f"{reason}{got}", field=name)
     results: dict[str, float | None] = {}
     warnings: list[str] = []
-    for key, array in raw.items():
-        value = float(array)
+    for key, value in raw.items():
         if math.isnan(value):
             raise document.error(f"{key} cannot be computed for this design; please report it")
         if math.isinf(value):
@@ -91,25 +139,10 @@ def evaluate_document(document: Document) -> Evaluation:
         else:
             results[key] = value
     units = {key: kind.results[key][0] for key in results}
-    margins = {key: results[key] for key in kind.margins if results.get(key) is not None}
+    margins = {key: value for key in kind.margins
+               if (value := results.get(key)) is not None}
     name = getattr(spec, "name", None) or _default_name(document)
-    return Evaluation(document.source, kind.name, name, results, units,
-                      margins, warnings)  # type: ignore[arg-type]
-
-
-def evaluate_file(path: str | Path) -> list[Evaluation | SpecError]:
-    """Every document of a file, each evaluated or refused with its error."""
-    try:
-        documents = load_documents(path)
-    except SpecError as error:
-        return [error]
-    outcomes: list[Evaluation | SpecError] = []
-    for document in documents:
-        try:
-            outcomes.append(evaluate_document(document))
-        except SpecError as error:
-            outcomes.append(error)
-    return outcomes
+    return Evaluation(document.source, kind.name, name, results, units, margins, warnings)
 
 
 def _value_at(data: Any, dotted: str) -> Any:

@@ -11,6 +11,7 @@ import json
 from collections.abc import Iterable, Sequence
 from typing import IO, Any
 
+from bearingcalc.batch import CheckRecord
 from bearingcalc.evaluation import Evaluation
 from bearingcalc.units import to_display
 
@@ -97,3 +98,82 @@ def format_number(value: float) -> str:
     if value == 0:
         return "0"
     return f"{value:.7g}"
+
+
+def check_record_json(record: CheckRecord) -> dict[str, Any]:
+    """The JSON object of one check verdict."""
+    return {"spec": record.spec, "kind": record.kind, "name": record.name,
+            "status": record.status, "messages": record.messages, "margins": record.margins}
+
+
+def write_check_json_lines(records: Iterable[CheckRecord], stream: IO[str]) -> None:
+    for record in records:
+        stream.write(json.dumps(check_record_json(record), allow_nan=False,
+                                ensure_ascii=False) + "\n")
+
+
+def write_junit(records: Sequence[CheckRecord], stream: IO[str]) -> None:
+    """JUnit XML: one testcase per spec; ``fail`` as failure, ``invalid`` as error."""
+    from xml.etree import ElementTree
+
+    failures = sum(r.status == "fail" for r in records)
+    errors = sum(r.status == "invalid" for r in records)
+    suites = ElementTree.Element("testsuites", name="bearingcalc check", tests=str(len(records)),
+                                 failures=str(failures), errors=str(errors))
+    suite = ElementTree.SubElement(suites, "testsuite", name="bearingcalc check",
+                                   tests=str(len(records)), failures=str(failures),
+                                   errors=str(errors), skipped="0")
+    for record in records:
+        case = ElementTree.SubElement(suite, "testcase", classname=record.kind or "spec",
+                                      name=record.spec, file=record.spec.split("#")[0])
+        text = "\n".join(record.messages)
+        if record.status == "fail":
+            ElementTree.SubElement(case, "failure", message=_first(record.messages),
+                                   type="limit").text = text
+        elif record.status == "invalid":
+            ElementTree.SubElement(case, "error", message=_first(record.messages),
+                                   type="invalid").text = text
+    ElementTree.indent(suites)
+    stream.write('<?xml version="1.0" encoding="UTF-8"?>\n')
+    stream.write(ElementTree.tostring(suites, encoding="unicode") + "\n")
+
+
+def print_check_table(records: Sequence[CheckRecord], *, show_all: bool,
+                      stream: IO[str] | None = None, many: int = 50) -> None:
+    """One row per spec (only fail/invalid rows past ``many`` specs unless ``show_all``),
+    then a summary line with the counts."""
+    from rich.console import Console
+    from rich.markup import escape
+    from rich.table import Table
+
+    console = Console(file=stream, highlight=False)
+    shown = records if show_all or len(records) <= many else [
+        r for r in records if r.status != "pass"]
+    if shown:
+        table = Table(show_edge=False)
+        for column in ("status", "name", "kind", "governing margin / problem"):
+            table.add_column(column, overflow="fold")
+        colours = {"pass": "green", "fail": "red", "invalid": "magenta"}
+        for record in shown:
+            governing = record.governing_margin
+            if record.status == "invalid":
+                detail = _first(record.messages)
+            elif governing is None:
+                detail = "no limits apply"
+            else:
+                detail = f"{governing[0]} = {format_number(governing[1])}"
+            table.add_row(f"[{colours[record.status]}]{record.status.upper()}[/]",
+                          escape(record.name or record.spec), record.kind or "",
+                          escape(detail))
+        console.print(table)
+    counts = {status: sum(r.status == status for r in records)
+              for status in ("pass", "fail", "invalid")}
+    hidden = len(records) - len(shown)
+    note = f" ({hidden} passing not shown; --all shows them)" if hidden else ""
+    console.print(f"{len(records)} specs: [green]{counts['pass']} pass[/], "
+                  f"[red]{counts['fail']} fail[/], "
+                  f"[magenta]{counts['invalid']} invalid[/]{note}")
+
+
+def _first(messages: Sequence[str]) -> str:
+    return messages[0] if messages else ""

@@ -14,6 +14,8 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, WithJsonSchema
 
 from bearingcalc.units import ANGLE, ANGULAR_ACCEL, ANGULAR_SPEED, LENGTH, Dimension, parse_quantity
 
+QUANTITY_PATTERN = r"^\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*[^\s\d.+-].*$"
+
 
 class SpecModel(BaseModel):
     """Base of spec models: unknown keys and non-finite numbers are refused."""
@@ -48,6 +50,8 @@ def quantity(dimension: Dimension, sign: str | None = None) -> Any:
         "type": "string",
         "description": f"{words}{dimension.name} with a unit, e.g. '{dimension.example}'",
         "examples": [dimension.example],
+        # A number, then a unit: refuses bare numbers and unit-less strings.
+        "pattern": QUANTITY_PATTERN,
         "x-dimension": dimension.name,
         "x-si-unit": dimension.si_unit,
     }

@@ -11,6 +11,7 @@ memory.
 from __future__ import annotations
 
 import os
+import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -65,13 +66,18 @@ def read_spec_text(path: str | os.PathLike[str]) -> str:
     """The text of a spec file, or a SpecError saying why it cannot be read."""
     label = str(path)
     try:
+        # A FIFO or device named *.yaml would block or never end: refuse before opening.
+        mode = os.stat(path).st_mode
+        if stat.S_ISDIR(mode):
+            raise SpecError("is a folder, not a spec file; give a .yaml file "
+                            "(or use 'bearingcalc check' for folders)", source=label)
+        if not stat.S_ISREG(mode):
+            raise SpecError("not a regular file; give a .yaml file", source=label)
         with open(path, "rb") as handle:
             raw = handle.read(MAX_FILE_BYTES + 1)
     except FileNotFoundError:
-        raise SpecError("no such file; check the path", source=label) from None
-    except IsADirectoryError:
-        raise SpecError("is a folder, not a spec file; give a .yaml file "
-                        "(or use 'bearingcalc check' for folders)", source=label) from None
+        what = "a broken symbolic link" if os.path.islink(path) else "no such file"
+        raise SpecError(f"{what}; check the path", source=label) from None
     except OSError as exc:
         raise SpecError(f"cannot read the file: {exc.strerror or exc}", source=label) from None
     if len(raw) > MAX_FILE_BYTES:

@@ -1,0 +1,177 @@
+"""Batch checking: find spec files, give every spec one status, use both cores.
+
+Statuses: ``pass`` (valid and within its limits), ``fail`` (valid, a limit is
+violated) and ``invalid`` (cannot be read or validated). One bad file never
+stops the batch.
+"""
+
+from __future__ import annotations
+
+import glob
+import os
+from collections.abc import Callable, Iterable, Sequence
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass, field
+from multiprocessing import get_context
+from pathlib import Path
+
+from bearingcalc.errors import SpecError
+from bearingcalc.evaluation import Evaluation, evaluate_documents
+from bearingcalc.spec.yaml_loader import Document, is_spec_file, load_documents
+
+PASS, FAIL, INVALID = "pass", "fail", "invalid"
+#: Below this many files a worker pool costs more than it saves.
+PARALLEL_THRESHOLD = 400
+
+
+@dataclass
+class CheckRecord:
+    """The verdict on one spec (one document of a file)."""
+
+    spec: str
+    kind: str | None
+    name: str | None
+    status: str
+    messages: list[str] = field(default_factory=list)
+    margins: dict[str, float] = field(default_factory=dict)
+
+    @property
+    def governing_margin(self) -> tuple[str, float] | None:
+        """The smallest margin, which decides pass or fail."""
+        if not self.margins:
+            return None
+        key = min(self.margins, key=self.margins.__getitem__)
+        return key, self.margins[key]
+
+
+def discover(paths: Sequence[str | Path]) -> list[Path | CheckRecord]:
+    """Spec files named by ``paths`` in order, with an invalid record where a path names none.
+
+    A path is a file (taken whatever its suffix), a folder (searched recursively
+    for ``*.yaml`` and ``*.yml``, skipping hidden folders and not following
+    symlinked folders, so links cannot loop) or a glob pattern. A file named
+    twice is checked once.
+    """
+    entries: list[Path | CheckRecord] = []
+    seen: set[Path] = set()
+
+    def add(found: Iterable[Path]) -> None:
+        for path in found:
+            if path not in seen:
+                seen.add(path)
+                entries.append(path)
+
+    for raw in paths:
+        path = Path(raw)
+        if path.is_dir():
+            found = sorted(_walk(path))
+            if not found:
+                entries.append(_invalid(str(path), "no spec files (*.yaml, *.yml) in this "
+                                        "folder"))
+            add(found)
+        elif path.exists() or path.is_symlink():
+            add([path])
+        elif glob.has_magic(str(raw)):
+            matches = [Path(p) for p in sorted(glob.glob(str(raw), recursive=True))]
+            found = [m for m in matches if not m.is_dir()]
+            if not found:
+                entries.append(_invalid(str(raw), "the pattern matches no file"))
+            add(found)
+        else:
+            entries.append(_invalid(str(raw), "no such file or folder; check the path"))
+    return entries
+
+
+def check_paths(paths: Sequence[str | Path], jobs: int = 1,
+                progress: Callable[[int], None] | None = None) -> list[CheckRecord]:
+    """Records for everything ``paths`` name, in the order they name it."""
+    entries = discover(paths)
+    files = [entry for entry in entries if isinstance(entry, Path)]
+    checked = iter(check_files(files, jobs, progress))
+    records: list[CheckRecord] = []
+    for entry in entries:
+        if isinstance(entry, CheckRecord):
+            records.append(entry)
+            continue
+        records.extend(next(checked))
+    return records
+
+
+def _walk(folder: Path) -> Iterable[Path]:
+    for root, dirs, names in os.walk(folder, followlinks=False):
+        dirs[:] = [d for d in dirs if not d.startswith(".")]
+        for name in names:
+            path = Path(root) / name
+            if is_spec_file(path):
+                yield path
+
+
+def check_files(files: Sequence[Path], jobs: int = 1,
+                progress: Callable[[int], None] | None = None) -> list[list[CheckRecord]]:
+    """The records of every spec in each of ``files``, one list per file, in order.
+
+    With ``jobs`` > 1 and enough files, files are shared among worker processes
+    in chunks; the records come back in the same order either way.
+    """
+    records: list[list[CheckRecord]] = []
+    if jobs <= 1 or len(files) < PARALLEL_THRESHOLD:
+        for chunk in _chunks(files, 200):
+            records.extend(check_chunk(chunk))
+            if progress:
+                progress(len(chunk))
+        return records
+    chunk_size = max(50, min(500, len(files) // (jobs * 4)))
+    context = get_context("fork") if "fork" in _start_methods() else None
+    with ProcessPoolExecutor(max_workers=jobs, mp_context=context) as pool:
+        chunks = list(_chunks(files, chunk_size))
+        for chunk, result in zip(chunks, pool.map(check_chunk, chunks), strict=True):
+            records.extend(result)
+            if progress:
+                progress(len(chunk))
+    return records
+
+
+def check_chunk(files: Sequence[Path]) -> list[list[CheckRecord]]:
+    """Records of a list of files: every document loaded, then all solved together."""
+    loaded: list[list[Document] | CheckRecord] = []
+    for path in files:
+        try:
+            loaded.append(load_documents(path))
+        except SpecError as error:
+            loaded.append(_invalid(str(path), str(error)))
+    documents = [doc for item in loaded if isinstance(item, list) for doc in item]
+    outcomes = iter(evaluate_documents(documents))
+    return [[item] if isinstance(item, CheckRecord) else [to_record(next(outcomes)) for _ in item]
+            for item in loaded]
+
+
+def to_record(outcome: Evaluation | SpecError) -> CheckRecord:
+    """The check verdict of one evaluation or error."""
+    if isinstance(outcome, SpecError):
+        return _invalid(outcome.source, str(outcome))
+    status = PASS if outcome.within_limits else FAIL
+    return CheckRecord(outcome.source, outcome.kind, outcome.name, status,
+                       [*outcome.violations, *outcome.warnings], dict(outcome.margins))
+
+
+def exit_status(records: Iterable[CheckRecord]) -> int:
+    """0 all pass; 1 some fail and none invalid; 2 any invalid."""
+    statuses = {record.status for record in records}
+    if INVALID in statuses or not statuses:
+        return 2
+    return 1 if FAIL in statuses else 0
+
+
+def _invalid(spec: str, message: str) -> CheckRecord:
+    return CheckRecord(spec, None, None, INVALID, [message])
+
+
+def _chunks(items: Sequence[Path], size: int) -> Iterable[Sequence[Path]]:
+    for start in range(0, len(items), size):
+        yield items[start:start + size]
+
+
+def _start_methods() -> list[str]:
+    import multiprocessing
+
+    return multiprocessing.get_all_start_methods()
