@@ -7,8 +7,8 @@ Adding a kind takes a solver module in ``core/`` (with ``RESULTS``,
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from collections.abc import Collection, Mapping
+from dataclasses import dataclass, field
 from types import ModuleType
 from typing import Any
 
@@ -31,11 +31,18 @@ class Kind:
     model: type[SpecModel]
     solver: ModuleType
     margins: tuple[str, ...]   # result keys that must be >= 0 for the design to pass
+    governing: tuple[str, ...]  # results a study shows first
+    #: result key -> the solver input that limits it symmetrically: |result| <= limit
+    limits: dict[str, str] = field(default_factory=dict)
 
+    def evaluate(self, inputs: Mapping[str, Any], wanted: Collection[str] | None = None
+                 ) -> tuple[dict[str, NDArray], NDArray]:
+        """Results and status codes (0 = feasible) of the solver on SI ``inputs``.
 
-    @property
-    def evaluate(self) -> Callable[[Mapping[str, Any]], tuple[dict[str, NDArray], NDArray]]:
-        return self.solver.evaluate  # type: ignore[no-any-return]
+        ``wanted`` names the results the caller needs; a solver may compute only
+        those (and the margins), or everything.
+        """
+        return self.solver.evaluate(inputs, wanted)  # type: ignore[no-any-return]
 
     @property
     def results(self) -> dict[str, tuple[str, str]]:
@@ -51,12 +58,18 @@ KINDS: dict[str, Kind] = {
     kind.name: kind
     for kind in (
         Kind("thrust-bearing", "balls between a fixed race and a turning shaft",
-             ThrustBearingSpec, thrust_bearing, margins=("slip_margin",)),
+             ThrustBearingSpec, thrust_bearing, margins=("slip_margin",),
+             governing=("slip_margin", "spin_to_roll"),
+             limits={"spin_to_roll": "max_spin_to_roll"}),
         Kind("disk-on-circle", "a disk rolling on a fixed or turning circle, outside or inside",
-             DiskOnCircleSpec, disk_on_circle, margins=()),
+             DiskOnCircleSpec, disk_on_circle, margins=(),
+             governing=("contact_point_accel", "center_speed")),
         Kind("cone-on-plane", "a cone rolling on a plane about its fixed apex",
-             ConeOnPlaneSpec, cone_on_plane, margins=()),
+             ConeOnPlaneSpec, cone_on_plane, margins=(),
+             governing=("precession_speed",)),
         Kind("bevel-gears", "an epicyclic bevel pair: gear B on a shaft, gear A on an arm",
-             BevelGearsSpec, bevel_gears, margins=("slip_margin",)),
+             BevelGearsSpec, bevel_gears, margins=("slip_margin",),
+             governing=("apex_mismatch", "slip_margin"),
+             limits={"apex_mismatch": "max_apex_mismatch"}),
     )
 }

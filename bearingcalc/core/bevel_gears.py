@@ -13,7 +13,7 @@ Inputs in SI (m, rad, rad/s), floats or broadcasting arrays.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -197,8 +197,13 @@ def complete_geometry(inputs: Mapping[str, ArrayLike | None]) -> tuple[NDArray, 
     return a, b, np.asarray(alpha, dtype=float), np.asarray(beta, dtype=float), gamma
 
 
-def evaluate(inputs: Mapping[str, ArrayLike | None]) -> tuple[dict[str, NDArray], NDArray]:
-    """Registry entry point: results and status codes from the spec's SI inputs."""
+def evaluate(inputs: Mapping[str, ArrayLike | None],
+             wanted: Collection[str] | None = None) -> tuple[dict[str, NDArray], NDArray]:
+    """Registry entry point: results and status codes from the spec's SI inputs.
+
+    ``wanted`` (the results a caller needs) is a hint this solver does not need:
+    it computes everything at once.
+    """
     a, b, alpha, beta, gamma = complete_geometry(inputs)
     status = bevel_gears_status(a, b, alpha, beta, gamma)
     results = solve_bevel_gears(a, b, alpha, beta, inputs["arm_speed"],  # type: ignore[arg-type]

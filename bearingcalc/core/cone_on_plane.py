@@ -10,7 +10,7 @@ contact line. Inputs in SI (rad, rad/s, rad/s², m), floats or broadcasting arra
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -87,8 +87,13 @@ def solve_cone_on_plane(half_angle: ArrayLike, spin_speed: ArrayLike, *,
     return broadcast_all(results)
 
 
-def evaluate(inputs: Mapping[str, ArrayLike | None]) -> tuple[dict[str, NDArray], NDArray]:
-    """Registry entry point: results and status codes from the spec's SI inputs."""
+def evaluate(inputs: Mapping[str, ArrayLike | None],
+             wanted: Collection[str] | None = None) -> tuple[dict[str, NDArray], NDArray]:
+    """Registry entry point: results and status codes from the spec's SI inputs.
+
+    ``wanted`` (the results a caller needs) is a hint this solver does not need:
+    it computes everything at once.
+    """
     height = inputs.get("axis_point_height")
     status = cone_on_plane_status(inputs["half_angle"], height)  # type: ignore[arg-type]
     results = solve_cone_on_plane(inputs["half_angle"], inputs["spin_speed"],  # type: ignore[arg-type]

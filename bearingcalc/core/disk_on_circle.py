@@ -16,7 +16,7 @@ positive sense. Inputs in SI (m, rad/s, rad/s²), floats or broadcasting arrays.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -115,8 +115,13 @@ def solve_disk_on_circle(disk_radius: ArrayLike, surface_radius: ArrayLike,
     })
 
 
-def evaluate(inputs: Mapping[str, ArrayLike]) -> tuple[dict[str, NDArray], NDArray]:
-    """Registry entry point: results and status codes from the spec's SI inputs."""
+def evaluate(inputs: Mapping[str, ArrayLike],
+             wanted: Collection[str] | None = None) -> tuple[dict[str, NDArray], NDArray]:
+    """Registry entry point: results and status codes from the spec's SI inputs.
+
+    ``wanted`` (the results a caller needs) is a hint this solver does not need:
+    it computes everything at once.
+    """
     internal = inputs["internal"]
     status = disk_on_circle_status(inputs["disk_radius"], inputs["surface_radius"], internal)
     results = solve_disk_on_circle(

@@ -15,7 +15,7 @@ the reason).
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -156,12 +156,14 @@ def spin_to_roll_ratio(ball_radius: ArrayLike, contact_angle: ArrayLike,
     r = np.asarray(ball_radius, dtype=float)
     theta = np.asarray(contact_angle, dtype=float)
     b = np.asarray(pitch_radius, dtype=float)
+    return np.where(_geometry_ok(r, theta, b), _spin_to_roll_unchecked(r, theta, b), np.nan)
+
+
+def _spin_to_roll_unchecked(r: NDArray, theta: NDArray, b: NDArray) -> NDArray:
     sin, cos = np.sin(theta), np.cos(theta)
-    ok = _geometry_ok(r, theta, b)
     with np.errstate(divide="ignore", invalid="ignore"):
         k = r * (1.0 + sin + cos) / (b - r * cos)
-        rho = (k * sin + sin - cos) / (k * cos + sin + cos)
-    return np.where(ok, rho, np.nan)
+        return (k * sin + sin - cos) / (k * cos + sin + cos)
 
 
 def pitch_radius_window(ball_radius: ArrayLike, contact_angle: ArrayLike,
@@ -343,11 +345,18 @@ def complete_geometry(ball_radius: ArrayLike | None, contact_angle: ArrayLike | 
             np.asarray(pitch_radius, dtype=float))
 
 
-def evaluate(inputs: Mapping[str, ArrayLike | None]) -> tuple[dict[str, NDArray], NDArray]:
+#: Results that :func:`evaluate` can compute alone, without every speed.
+_RATIO_ONLY = frozenset({"spin_to_roll", "slip_margin"})
+
+
+def evaluate(inputs: Mapping[str, ArrayLike | None],
+             wanted: Collection[str] | None = None) -> tuple[dict[str, NDArray], NDArray]:
     """Registry entry point: results and status codes from the spec's SI inputs.
 
     ``inputs`` holds ball_radius, contact_angle, pitch_radius (one may be None),
-    shaft_speed, ball_count (may be None) and max_spin_to_roll.
+    shaft_speed, ball_count (may be None) and max_spin_to_roll. When ``wanted``
+    names only spin_to_roll and slip_margin, only those are computed: the hot
+    path of Monte Carlo studies of the slip limit.
     """
     r, theta, b = complete_geometry(inputs["ball_radius"], inputs["contact_angle"],
                                     inputs["pitch_radius"])
@@ -355,6 +364,10 @@ def evaluate(inputs: Mapping[str, ArrayLike | None]) -> tuple[dict[str, NDArray]
     if inputs["pitch_radius"] is not None and inputs["contact_angle"] is None:
         # θ came out NaN because no pure-rolling angle exists: say why.
         status = np.where((status == 3) & ~(b > r), np.int8(6), status)
+    if wanted is not None and set(wanted) <= _RATIO_ONLY:
+        rho = np.where(status == 0, _spin_to_roll_unchecked(r, theta, b), np.nan)
+        margin = np.asarray(inputs.get("max_spin_to_roll", 0.01), dtype=float) - np.abs(rho)
+        return {"spin_to_roll": rho, "slip_margin": margin}, status
     results = solve_thrust_bearing(r, theta, b, inputs["shaft_speed"],
                                    ball_count=inputs.get("ball_count"),
                                    max_spin_to_roll=inputs.get("max_spin_to_roll", 0.01))

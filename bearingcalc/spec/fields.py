@@ -8,9 +8,11 @@ else.
 from __future__ import annotations
 
 import math
+import re
+from dataclasses import dataclass
 from typing import Annotated, Any
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, WithJsonSchema
+from pydantic import BaseModel, BeforeValidator, ConfigDict, PlainValidator, WithJsonSchema
 
 from bearingcalc.units import ANGLE, ANGULAR_ACCEL, ANGULAR_SPEED, LENGTH, Dimension, parse_quantity
 
@@ -24,38 +26,179 @@ class SpecModel(BaseModel):
                               validate_default=False)
 
 
+DISTRIBUTIONS = ("normal", "uniform", "triangular")
+
+
+@dataclass(frozen=True)
+class Tolerance:
+    """A manufacturing tolerance on one input, in SI units.
+
+    The band is [low, high] = [nominal − minus, nominal + plus]. ``uniform``
+    covers the band; ``triangular`` has its mode at the band centre and the band
+    as support; ``normal`` has its mean at the band centre and
+    σ = (half-width of the band) / ``sigma_level``, not truncated.
+    """
+
+    nominal: float
+    low: float
+    high: float
+    distribution: str = "normal"
+    sigma_level: float = 3.0
+    unit: str = ""          # SI unit of the values
+
+    @property
+    def center(self) -> float:
+        return 0.5 * (self.low + self.high)
+
+    @property
+    def half_width(self) -> float:
+        return 0.5 * (self.high - self.low)
+
+    @property
+    def std(self) -> float:
+        """Standard deviation of the distribution. [SI unit of the input]"""
+        width = self.high - self.low
+        if self.distribution == "uniform":
+            return width / math.sqrt(12.0)
+        if self.distribution == "triangular":
+            return width / math.sqrt(24.0)
+        return self.half_width / self.sigma_level
+
+
+class Measured(float):
+    """A quantity's nominal SI value that remembers its tolerance.
+
+    It is a float, so solving and checking use the nominal value unchanged;
+    tolerance studies read ``tolerance``.
+    """
+
+    tolerance: Tolerance | None
+
+    def __new__(cls, value: float, tolerance: Tolerance | None = None) -> Measured:
+        obj = super().__new__(cls, value)
+        obj.tolerance = tolerance
+        return obj
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (Measured, (float(self), self.tolerance))
+
+
+_PLUS_MINUS = re.compile(r"\s*(?:±|\+/-|\+-)\s*")
+_MAPPING_KEYS = {"nominal", "tolerance", "plus", "minus", "distribution", "sigma_level"}
+
+
 class _Quantity:
-    """Before-validator turning a quantity string into SI, with a sign check."""
+    """Validator turning a quantity (with an optional tolerance) into SI, with a sign check."""
 
     def __init__(self, dimension: Dimension, sign: str | None) -> None:
         self.dimension = dimension
         self.sign = sign
 
     def __call__(self, value: Any) -> float:
-        si = parse_quantity(value, self.dimension)
+        if isinstance(value, dict):
+            tolerance = self._mapping(value)
+        elif isinstance(value, str) and _PLUS_MINUS.search(value):
+            tolerance = self._plus_minus(value)
+        else:
+            nominal = parse_quantity(value, self.dimension)
+            self._check_sign(nominal, f"'{value}'")
+            return nominal
+        self._check_sign(tolerance.nominal, "the nominal value")
+        self._check_sign(tolerance.low, f"the band's low end ({tolerance.low:g} "
+                         f"{self.dimension.si_unit})")
+        return Measured(tolerance.nominal, tolerance)
+
+    def _check_sign(self, si: float, what: str) -> None:
         if self.sign == "positive" and not si > 0:
-            raise ValueError(f"must be greater than zero, got '{value}'")
+            raise ValueError(f"must be greater than zero, got {what}")
         if self.sign == "non-negative" and not si >= 0:
-            raise ValueError(f"must not be negative, got '{value}'")
-        return si
+            raise ValueError(f"must not be negative, got {what}")
+
+    def _plus_minus(self, text: str) -> Tolerance:
+        nominal_text, tolerance_text = _PLUS_MINUS.split(text, maxsplit=1)
+        if not _has_unit(nominal_text):  # "12.7 ± 0.005 mm": the unit is shared
+            unit = tolerance_text.strip().lstrip("0123456789.eE+-").strip()
+            nominal_text = f"{nominal_text} {unit}"
+        nominal = parse_quantity(nominal_text, self.dimension)
+        band = self._deviation(tolerance_text, "tolerance")
+        return Tolerance(nominal, nominal - band, nominal + band, unit=self.dimension.si_unit)
+
+    def _mapping(self, value: dict[str, Any]) -> Tolerance:
+        unknown = sorted(set(value) - _MAPPING_KEYS)
+        if unknown:
+            raise ValueError(f"unknown key '{unknown[0]}' in a tolerance; use nominal with "
+                             "tolerance, or plus and minus, and optionally distribution and "
+                             "sigma_level")
+        if "nominal" not in value:
+            raise ValueError(f"a tolerance mapping needs nominal, e.g. {{nominal: "
+                             f"{self.dimension.example}, tolerance: ...}}")
+        nominal = parse_quantity(value["nominal"], self.dimension)
+        if "tolerance" in value:
+            if "plus" in value or "minus" in value:
+                raise ValueError("give tolerance, or plus and minus, not both")
+            plus = minus = self._deviation(value["tolerance"], "tolerance")
+        elif "plus" in value and "minus" in value:
+            plus = self._deviation(value["plus"], "plus")
+            minus = self._deviation(value["minus"], "minus")
+        else:
+            raise ValueError("a tolerance mapping needs tolerance, or both plus and minus")
+        distribution = value.get("distribution", "normal")
+        if distribution not in DISTRIBUTIONS:
+            raise ValueError(f"unknown distribution {distribution!r}; use one of "
+                             f"{', '.join(DISTRIBUTIONS)}")
+        sigma_level = value.get("sigma_level", 3.0)
+        if "sigma_level" in value and distribution != "normal":
+            raise ValueError("sigma_level applies to the normal distribution only")
+        if isinstance(sigma_level, bool) or not isinstance(sigma_level, (int, float)) or not (
+                math.isfinite(sigma_level) and sigma_level > 0):
+            raise ValueError(f"sigma_level must be a number > 0, like 3, got {sigma_level!r}")
+        return Tolerance(nominal, nominal - minus, nominal + plus, distribution,
+                         float(sigma_level), self.dimension.si_unit)
+
+    def _deviation(self, text: Any, what: str) -> float:
+        deviation = parse_quantity(text, self.dimension)
+        if deviation < 0:
+            raise ValueError(f"{what} must not be negative, got '{text}'")
+        return deviation
+
+
+def _has_unit(text: str) -> bool:
+    return bool(re.search(r"[^\s\d.eE+-]", text))
 
 
 def quantity(dimension: Dimension, sign: str | None = None) -> Any:
     """Annotated float type of a quantity field of ``dimension``.
 
-    ``sign`` is None (any finite value), "positive" or "non-negative".
+    ``sign`` is None (any finite value), "positive" or "non-negative". The value
+    may carry a tolerance (``"12.7 mm ± 0.005 mm"`` or a mapping, see
+    :class:`Tolerance`), and then arrives as a :class:`Measured`.
     """
     words = {"positive": "positive ", "non-negative": "non-negative ", None: ""}[sign]
-    schema = {
+    text_form = {
         "type": "string",
-        "description": f"{words}{dimension.name} with a unit, e.g. '{dimension.example}'",
+        "description": f"{words}{dimension.name} with a unit, e.g. '{dimension.example}', "
+                       f"optionally with a tolerance ('{dimension.example} ± ...')",
         "examples": [dimension.example],
         # A number, then a unit: refuses bare numbers and unit-less strings.
         "pattern": QUANTITY_PATTERN,
-        "x-dimension": dimension.name,
-        "x-si-unit": dimension.si_unit,
     }
-    return Annotated[float, BeforeValidator(_Quantity(dimension, sign)), WithJsonSchema(schema)]
+    text_schema = {"type": "string", "pattern": QUANTITY_PATTERN}
+    mapping_form = {
+        "type": "object",
+        "description": "a toleranced value: nominal with tolerance, or plus and minus",
+        "properties": {
+            "nominal": text_schema, "tolerance": text_schema, "plus": text_schema,
+            "minus": text_schema, "distribution": {"enum": list(DISTRIBUTIONS)},
+            "sigma_level": {"type": "number", "exclusiveMinimum": 0},
+        },
+        "required": ["nominal"],
+        "additionalProperties": False,
+    }
+    schema = {"anyOf": [text_form, mapping_form], "x-dimension": dimension.name,
+              "x-si-unit": dimension.si_unit, "examples": [dimension.example]}
+    return Annotated[float, PlainValidator(_Quantity(dimension, sign),
+                                           json_schema_input_type=str),
+                     WithJsonSchema(schema)]
 
 
 def _count(minimum: int, what: str) -> Any:

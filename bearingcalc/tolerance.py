@@ -1,0 +1,526 @@
+"""Tolerance studies on the vectorised solvers: worst case, RSS, Monte Carlo, Sobol indices.
+
+Every method evaluates whole arrays of designs per solver call, never a Python
+loop per sample. Inputs are the spec fields that carry a tolerance (see
+:class:`bearingcalc.spec.fields.Tolerance` for the distributions).
+
+Monte Carlo streams: samples are drawn and solved in chunks, and only running
+statistics are kept, so memory does not grow with the number of samples. The
+sample stream is one sequence, whatever the chunk size or the number of
+threads: chunk k starts by fast-forwarding the Sobol engine, or advancing the
+PCG64 generator, to its first sample. Sums are taken per fixed block of
+``BLOCK`` samples and added exactly (``math.fsum``), and histogram counts are
+integers, so the statistics do not depend on chunking or threads either.
+"""
+
+from __future__ import annotations
+
+import copy
+import itertools
+import math
+import warnings
+from collections.abc import Callable, Sequence
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from bearingcalc.errors import BearingcalcError
+from bearingcalc.kinds import Kind
+from bearingcalc.spec.fields import SpecModel, Tolerance
+from bearingcalc.variation import evaluate_with, field_value, toleranced_fields
+
+METHODS = ("worst-case", "rss", "monte-carlo")
+SAMPLERS = ("sobol", "random")
+#: Samples per block: the unit of exact summation and the pilot for histogram ranges.
+BLOCK = 1 << 16
+#: Histogram bins per result for the Monte Carlo quantiles.
+HISTOGRAM_BINS = 1 << 16
+QUANTILES = {"p00135": 0.00135, "p50": 0.5, "p99865": 0.99865}
+#: Designs in the interior of the box, besides its corners, that seed the worst-case search.
+INTERIOR_POINTS = 1 << 10
+MAX_CORNER_INPUTS = 14
+
+
+class StudyError(BearingcalcError):
+    """A tolerance study that cannot be run as asked (no tolerances, bad options)."""
+
+
+@dataclass
+class StudyInput:
+    """One toleranced spec field."""
+
+    name: str
+    tolerance: Tolerance
+
+    @property
+    def low(self) -> float:
+        return self.tolerance.low
+
+    @property
+    def high(self) -> float:
+        return self.tolerance.high
+
+
+@dataclass
+class MonteCarloResult:
+    """Monte Carlo statistics of every result, the yield and the process capability."""
+
+    samples: int
+    seed: int
+    sampler: str
+    stats: dict[str, dict[str, float | None]]
+    histograms: dict[str, tuple[NDArray, NDArray]]   # key -> (bin edges, counts)
+    passed: int
+    infeasible: int
+
+    @property
+    def yield_fraction(self) -> float:
+        return self.passed / self.samples
+
+    @property
+    def ppm_out(self) -> float:
+        return 1e6 * (self.samples - self.passed) / self.samples
+
+
+@dataclass
+class Study:
+    """A tolerance study of one spec."""
+
+    kind: Kind
+    spec: SpecModel
+    inputs: list[StudyInput] = field(init=False)
+    nominal: dict[str, float] = field(init=False)
+
+    def __post_init__(self) -> None:
+        self.inputs = [StudyInput(name, tol) for name, tol in toleranced_fields(self.spec).items()]
+        if not self.inputs:
+            raise StudyError("the spec has no tolerances: give one on any input with a unit, "
+                             "like 'contact_angle: 20 deg ± 0.25 deg'")
+        results, _ = evaluate_with(self.kind, self.spec, {})
+        self.nominal = {key: float(value) for key, value in results.items()}
+
+    @property
+    def keys(self) -> list[str]:
+        """Every numeric result of the kind that this spec has."""
+        return list(self.nominal)
+
+    @property
+    def limit_values(self) -> dict[str, float]:
+        """Result key -> its symmetric limit value from the spec."""
+        inputs = self.spec.solver_inputs()  # type: ignore[attr-defined]
+        return {key: float(inputs[limit]) for key, limit in self.kind.limits.items()}
+
+    def evaluate(self, columns: NDArray, keys: Sequence[str] | None = None
+                 ) -> tuple[dict[str, NDArray], NDArray]:
+        """Results ``keys`` (default all; NaN where infeasible) and status codes at the
+        designs in the rows of ``columns`` (n, d)."""
+        keys = self.keys if keys is None else keys
+        values = {item.name: columns[:, i] for i, item in enumerate(self.inputs)}
+        wanted = {*keys, *self.kind.margins}
+        results, status = evaluate_with(self.kind, self.spec, values, wanted)
+        bad = status != 0
+        return {key: np.where(bad, np.nan, results[key]) for key in wanted}, status
+
+    # --- worst case -------------------------------------------------------------------
+
+    def worst_case(self) -> dict[str, dict[str, Any]]:
+        """Exact min and max of each result over the tolerance box, and where they occur.
+
+        All 2^d corners and ``INTERIOR_POINTS`` scrambled Sobol points of the box
+        are evaluated in one call; each extreme is then refined with L-BFGS-B
+        (scipy.optimize) within the box from the best point, with gradients from
+        one vectorised central-difference call per iteration. Infeasible designs
+        are skipped; ``feasible_fraction`` tells how much of the search was.
+        """
+        from scipy.optimize import minimize
+        from scipy.stats import qmc
+
+        d = len(self.inputs)
+        low = np.array([i.low for i in self.inputs])
+        width = np.array([i.high - i.low for i in self.inputs])
+        if d <= MAX_CORNER_INPUTS:
+            corners = np.array(list(itertools.product((0.0, 1.0), repeat=d)))
+        else:
+            corners = np.empty((0, d))
+        interior = qmc.Sobol(d, scramble=True, rng=0).random(INTERIOR_POINTS)
+        unit = np.vstack([corners, interior, np.full((1, d), 0.5)])
+        results, _ = self.evaluate(low + unit * width)
+        out: dict[str, dict[str, Any]] = {}
+        for key in self.keys:
+            values = results[key]
+            if np.all(np.isnan(values)):
+                out[key] = {"min": None, "max": None}
+                continue
+            entry: dict[str, Any] = {}
+            for sense, sign in (("min", 1.0), ("max", -1.0)):
+                start = unit[np.nanargmin(sign * values)]
+                best_u, best = self._refine(key, sign, start, low, width, minimize)
+                entry[sense] = best
+                entry[f"{sense}_inputs"] = {item.name: float(low[i] + best_u[i] * width[i])
+                                            for i, item in enumerate(self.inputs)}
+            out[key] = entry
+        return out
+
+    def _refine(self, key: str, sign: float, start: NDArray, low: NDArray, width: NDArray,
+                minimize: Callable[..., Any]) -> tuple[NDArray, float]:
+        d = len(start)
+        step = 1e-7
+        fixed = width == 0
+
+        def value_and_gradient(u: NDArray) -> tuple[float, NDArray]:
+            points = np.repeat(u[None, :], 2 * d + 1, axis=0)
+            for i in range(d):
+                up, down = min(u[i] + step, 1.0), max(u[i] - step, 0.0)
+                points[1 + 2 * i, i], points[2 + 2 * i, i] = up, down
+            values = sign * self.evaluate(low + points * width)[0][key]
+            if np.isnan(values[0]):
+                return 1e300, np.zeros(d)
+            grad = np.zeros(d)
+            for i in range(d):
+                up, down = values[1 + 2 * i], values[2 + 2 * i]
+                span = points[1 + 2 * i, i] - points[2 + 2 * i, i]
+                if not fixed[i] and span > 0 and np.isfinite(up) and np.isfinite(down):
+                    grad[i] = (up - down) / span
+            return float(values[0]), grad
+
+        start_value = value_and_gradient(start)[0]
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            found = minimize(value_and_gradient, start, jac=True, method="L-BFGS-B",
+                             bounds=[(0.0, 1.0)] * d, options={"ftol": 1e-15, "gtol": 1e-14,
+                                                               "maxiter": 200})
+        best_u, best = (found.x, found.fun) if found.fun < start_value else (start, start_value)
+        return np.asarray(best_u), float(sign * best)
+
+    # --- RSS ---------------------------------------------------------------------------
+
+    def rss(self) -> dict[str, dict[str, Any]]:
+        """First-order propagation: std = sqrt(Σ(∂f/∂xᵢ·σᵢ)²) at the distribution means.
+
+        Derivatives are central differences with one Richardson step (error of
+        order h⁴), all 4d + 1 designs in one solver call; h = σᵢ/100.
+        """
+        d = len(self.inputs)
+        center = np.array([i.tolerance.center for i in self.inputs])
+        sigma = np.array([i.tolerance.std for i in self.inputs])
+        step = np.where(sigma > 0, sigma * 1e-2, 0.0)
+        points = np.repeat(center[None, :], 4 * d + 1, axis=0)
+        for i in range(d):
+            for j, offset in enumerate((step[i], -step[i], step[i] / 2, -step[i] / 2)):
+                points[1 + 4 * i + j, i] += offset
+        results, _ = self.evaluate(points)
+        out: dict[str, dict[str, Any]] = {}
+        for key in self.keys:
+            values = results[key]
+            derivatives = np.zeros(d)
+            for i in range(d):
+                if step[i] == 0:
+                    continue
+                f_up, f_down, f_up2, f_down2 = values[1 + 4 * i: 5 + 4 * i]
+                coarse = (f_up - f_down) / (2 * step[i])
+                fine = (f_up2 - f_down2) / step[i]
+                derivatives[i] = (4 * fine - coarse) / 3
+            terms = (derivatives * sigma) ** 2
+            total = float(terms.sum())
+            mean = float(values[0])
+            if not (np.isfinite(mean) and np.isfinite(total)):
+                out[key] = {"mean": None, "std": None, "contributions": {}}
+                continue
+            shares = terms / total if total > 0 else np.zeros(d)
+            out[key] = {
+                "mean": mean,
+                "std": math.sqrt(total),
+                "contributions": {item.name: float(shares[i])
+                                  for i, item in enumerate(self.inputs)},
+                "sensitivities": {item.name: float(derivatives[i])
+                                  for i, item in enumerate(self.inputs)},
+            }
+        return out
+
+    # --- Monte Carlo --------------------------------------------------------------------
+
+    def draw(self, start: int, count: int, seed: int, sampler: str) -> NDArray:
+        """Samples ``start`` to ``start + count`` of the study's sample stream, shape (count, d).
+
+        The stream is the same however it is cut into pieces.
+        """
+        return self._shape(SampleStream(len(self.inputs), seed, sampler, start).next(count))
+
+    def _shape(self, uniform: NDArray) -> NDArray:
+        return np.column_stack([inverse_cdf(item.tolerance, uniform[:, i])
+                                for i, item in enumerate(self.inputs)])
+
+    def monte_carlo(self, samples: int, seed: int = 0, sampler: str = "sobol", *,
+                    chunk: int = 4 * BLOCK, threads: int = 2, keys: Sequence[str] | None = None,
+                    progress: Callable[[int], None] | None = None) -> MonteCarloResult:
+        """Statistics of every result (or of ``keys``) over ``samples`` drawn designs.
+
+        The blocks of the sample stream are shared among ``threads`` workers in
+        contiguous runs; each worker walks its run chunk by chunk with its own
+        sample engine and statistics, and the statistics are merged at the end.
+        numpy and scipy.special release the GIL, so the workers run in parallel.
+        """
+        if samples < 2:
+            raise StudyError("--samples must be at least 2")
+        if chunk % BLOCK:
+            raise StudyError(f"the chunk size must be a multiple of {BLOCK}")
+        keys = list(keys or self.keys)
+        limits = self.limit_values
+        pilot, _ = self.evaluate(self.draw(0, min(samples, BLOCK), seed, sampler), keys)
+        template = {key: _Accumulator(self.nominal[key], pilot[key]) for key in keys}
+        blocks = -(-samples // BLOCK)
+        workers = max(1, min(threads, blocks))
+        bounds = [blocks * w // workers for w in range(workers + 1)]
+
+        def work(first_block: int, end_block: int) -> tuple[dict[str, _Accumulator], int, int]:
+            accumulators = {key: acc.empty_like() for key, acc in template.items()}
+            passed = infeasible = 0
+            start, stop = first_block * BLOCK, min(end_block * BLOCK, samples)
+            stream = SampleStream(len(self.inputs), seed, sampler, start)
+            while start < stop:
+                count = min(chunk, stop - start)
+                results, status = self.evaluate(self._shape(stream.next(count)), keys)
+                ok = status == 0
+                for margin in self.kind.margins:
+                    ok &= results[margin] >= 0
+                for key in keys:
+                    accumulators[key].add(results[key])
+                passed += int(ok.sum())
+                infeasible += int((status != 0).sum())
+                start += count
+                if progress:
+                    progress(count)
+            return accumulators, passed, infeasible
+
+        with ThreadPoolExecutor(max_workers=workers) as pool:
+            futures = [pool.submit(work, bounds[w], bounds[w + 1]) for w in range(workers)]
+            outcomes = [future.result() for future in futures]
+        merged = template
+        passed = sum(outcome[1] for outcome in outcomes)
+        infeasible = sum(outcome[2] for outcome in outcomes)
+        for accumulators, _, _ in outcomes:
+            for key in keys:
+                merged[key].merge(accumulators[key])
+        stats = {key: merged[key].summary() for key in keys}
+        for key, limit in limits.items():
+            if key in stats:
+                stats[key]["cpk"] = _cpk(stats[key], limit)
+        histograms = {key: merged[key].histogram() for key in keys}
+        return MonteCarloResult(samples, seed, sampler, stats, histograms, passed, infeasible)
+
+    def cpk(self, mc: MonteCarloResult) -> float | None:
+        """The smallest Cpk over the kind's limits, or None without limits."""
+        values = [mc.stats[key].get("cpk") for key in self.kind.limits if key in mc.stats]
+        finite = [v for v in values if v is not None]
+        return min(finite) if finite else None
+
+    # --- Sobol indices -------------------------------------------------------------------
+
+    def sobol(self, samples: int, seed: int = 0) -> dict[str, dict[str, dict[str, float]] | None]:
+        """First- and total-order Sobol indices of every result (scipy.stats.sobol_indices).
+
+        Uses n = the largest power of 2 <= ``samples`` (at least 2^10, at most
+        2^16), which costs n·(d + 2) solver evaluations in one call. A result that
+        is infeasible somewhere in the sample gets None.
+        """
+        from scipy import stats
+
+        if len(self.inputs) < 2:
+            raise StudyError("--sobol needs at least two toleranced inputs")
+        n = 1 << max(10, min(16, int(math.log2(max(samples, 2)))))
+        dists = [_frozen(item.tolerance, stats) for item in self.inputs]
+        keys = self.keys
+
+        def func(x: NDArray) -> NDArray:
+            results, _ = self.evaluate(x.T)
+            return np.vstack([results[key] for key in keys])
+
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # NaN rows (infeasible designs) are reported below
+            result = stats.sobol_indices(func=func, n=n, dists=dists, rng=seed)
+        first = np.asarray(result.first_order)
+        total = np.asarray(result.total_order)
+        out: dict[str, dict[str, dict[str, float]] | None] = {}
+        for row, key in enumerate(keys):
+            if not (np.all(np.isfinite(first[row])) and np.all(np.isfinite(total[row]))):
+                out[key] = None
+                continue
+            out[key] = {
+                "first_order": {item.name: float(first[row, i])
+                                for i, item in enumerate(self.inputs)},
+                "total_order": {item.name: float(total[row, i])
+                                for i, item in enumerate(self.inputs)},
+            }
+        return out
+
+    def input_summary(self) -> dict[str, dict[str, Any]]:
+        """The JSON ``inputs`` object: nominal, band, distribution and std of each input."""
+        return {item.name: {"nominal": float(field_value(self.spec, item.name)),
+                            "low": item.low, "high": item.high,
+                            "distribution": item.tolerance.distribution,
+                            "std": item.tolerance.std}
+                for item in self.inputs}
+
+
+class SampleStream:
+    """A uniform sample stream on (0, 1)^d from ``start`` on, drawn in pieces.
+
+    ``sobol``: scrambled Sobol points (scipy.stats.qmc), fast-forwarded once to
+    ``start``; ``random``: numpy's PCG64 advanced to ``start``. Either way the
+    points are those of one sequence, however it is cut.
+    """
+
+    def __init__(self, d: int, seed: int, sampler: str, start: int = 0) -> None:
+        self.d = d
+        if sampler == "sobol":
+            from scipy.stats import qmc
+
+            self.engine = qmc.Sobol(d, scramble=True, rng=seed)
+            if start:
+                self.engine.fast_forward(start)
+            self.generator = None
+        elif sampler == "random":
+            bits = np.random.PCG64(seed)
+            bits.advance(start * d)  # one 64-bit draw per double
+            self.generator = np.random.Generator(bits)
+        else:
+            raise StudyError(f"unknown sampler {sampler!r}; use sobol or random")
+
+    def next(self, count: int) -> NDArray:
+        if self.generator is not None:
+            points = self.generator.random((count, self.d))
+        else:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")  # balance warnings: n not a power of 2
+                points = self.engine.random(count)
+        # Keep the inverse CDFs finite: a point exactly at 0 would map to −inf.
+        return np.clip(points, 1e-300, 1.0 - 2.0**-53)
+
+
+def inverse_cdf(tolerance: Tolerance, u: NDArray) -> NDArray:
+    """Map uniform points ``u`` to the tolerance's distribution."""
+    from scipy.special import ndtri
+
+    low, width = tolerance.low, tolerance.high - tolerance.low
+    if tolerance.distribution == "uniform":
+        return low + u * width
+    if tolerance.distribution == "triangular":
+        lower = low + width * np.sqrt(u / 2.0)
+        upper = tolerance.high - width * np.sqrt((1.0 - u) / 2.0)
+        return np.where(u < 0.5, lower, upper)
+    return tolerance.center + tolerance.std * ndtri(u)
+
+
+def _frozen(tolerance: Tolerance, stats: Any) -> Any:
+    low, width = tolerance.low, tolerance.high - tolerance.low
+    if tolerance.distribution == "uniform":
+        return stats.uniform(loc=low, scale=width)
+    if tolerance.distribution == "triangular":
+        return stats.triang(c=0.5, loc=low, scale=width)
+    return stats.norm(loc=tolerance.center, scale=tolerance.std)
+
+
+def _cpk(stats: dict[str, float | None], limit: float) -> float | None:
+    mean, std = stats.get("mean"), stats.get("std")
+    if mean is None or std is None or std <= 0:
+        return None
+    return min(limit - mean, mean + limit) / (3.0 * std)
+
+
+class _Accumulator:
+    """Running statistics of one result, exact however the samples are chunked.
+
+    Values are shifted by the nominal result before summing, which keeps the
+    variance free of cancellation. Quantiles come from a histogram of
+    ``HISTOGRAM_BINS`` bins spanning three times the range of the first
+    ``BLOCK`` samples (the pilot), centred on it, plus one bin each side for
+    values outside; a quantile is placed within its bin by linear interpolation,
+    so it is off by at most one bin width, 1/21845 of the pilot's range.
+    """
+
+    def __init__(self, shift: float, pilot: NDArray) -> None:
+        self.shift = shift if math.isfinite(shift) else 0.0
+        finite = pilot[np.isfinite(pilot)]
+        low, high = (float(finite.min()), float(finite.max())) if finite.size else (0.0, 1.0)
+        span = high - low
+        if span <= 0:
+            span = max(abs(low) * 1e-9, 1e-300)
+        self.edge = low - span
+        self.width = 3.0 * span / HISTOGRAM_BINS
+        self.sums: list[float] = []
+        self.squares: list[float] = []
+        self.count = 0
+        self.low, self.high = math.inf, -math.inf
+        self.counts = np.zeros(HISTOGRAM_BINS + 2, dtype=np.int64)
+
+    def empty_like(self) -> _Accumulator:
+        """An accumulator with the same shift and bins and nothing counted."""
+        twin = copy.copy(self)
+        twin.sums, twin.squares = [], []
+        twin.counts = np.zeros_like(self.counts)
+        return twin
+
+    def add(self, values: NDArray) -> None:
+        """Count a chunk of values that starts on a block boundary; NaN is skipped."""
+        finite = np.isfinite(values)
+        shifted = np.where(finite, values - self.shift, 0.0)
+        blocks = -(-len(values) // BLOCK)
+        if len(values) % BLOCK:
+            shifted = np.concatenate([shifted, np.zeros(blocks * BLOCK - len(values))])
+        per_block = shifted.reshape(blocks, BLOCK)
+        self.sums.extend(per_block.sum(axis=1).tolist())
+        self.squares.extend(np.einsum("ij,ij->i", per_block, per_block).tolist())
+        kept = values[finite] if not finite.all() else values
+        self.count += kept.size
+        if kept.size:
+            self.low = min(self.low, float(kept.min()))
+            self.high = max(self.high, float(kept.max()))
+        index = np.floor((kept - self.edge) * (1.0 / self.width))
+        np.clip(index, -1, HISTOGRAM_BINS, out=index)
+        self.counts += np.bincount(index.astype(np.int64) + 1, minlength=HISTOGRAM_BINS + 2)
+
+    def merge(self, other: _Accumulator) -> None:
+        """Add another accumulator's counts (sums are exact, so order does not matter)."""
+        self.sums.extend(other.sums)
+        self.squares.extend(other.squares)
+        self.count += other.count
+        self.low = min(self.low, other.low)
+        self.high = max(self.high, other.high)
+        self.counts += other.counts
+
+    def summary(self) -> dict[str, float | None]:
+        n = self.count
+        if n == 0:
+            return {name: None for name in ("mean", "std", "min", "max", *QUANTILES)}
+        total, squares = math.fsum(self.sums), math.fsum(self.squares)
+        mean_shifted = total / n
+        variance = max(squares - total * mean_shifted, 0.0) / (n - 1) if n > 1 else 0.0
+        out: dict[str, float | None] = {
+            "mean": self.shift + mean_shifted,
+            "std": math.sqrt(variance),
+            "min": self.low,
+            "max": self.high,
+        }
+        for name, q in QUANTILES.items():
+            out[name] = self.quantile(q)
+        return out
+
+    def quantile(self, q: float) -> float:
+        if self.low == self.high:
+            return self.low
+        rank = q * (self.count - 1)
+        cumulative = np.cumsum(self.counts)
+        index = int(np.searchsorted(cumulative, rank, side="right"))
+        before = cumulative[index - 1] if index > 0 else 0
+        inside = self.counts[index]
+        fraction = (rank - before + 0.5) / inside if inside else 0.5
+        value = self.edge + (index - 1 + min(max(fraction, 0.0), 1.0)) * self.width
+        return float(min(max(value, self.low), self.high))
+
+    def histogram(self) -> tuple[NDArray, NDArray]:
+        """(edges, counts) of the in-range bins."""
+        edges = self.edge + self.width * np.arange(HISTOGRAM_BINS + 1)
+        return edges, self.counts[1:-1].copy()
