@@ -168,6 +168,88 @@ def new(
           end="")
 
 
+class StudyFormat(str, Enum):
+    table = "table"
+    json = "json"
+
+
+@app.command()
+def tolerance(
+    spec_path: Annotated[Path, typer.Argument(
+        help="A YAML spec with tolerances on some inputs ('20 deg ± 0.25 deg').",
+        show_default=False, metavar="SPEC")],
+    method: Annotated[str, typer.Option(
+        "--method", "-m", help="Comma-separated: worst-case, rss, monte-carlo.")
+    ] = "worst-case,rss,monte-carlo",
+    samples: Annotated[int, typer.Option("--samples", "-n", min=2,
+                                         help="Monte Carlo samples.")] = 100_000,
+    seed: Annotated[int, typer.Option("--seed", min=0, help="Seed of the sampler.")] = 0,
+    sampler: Annotated[str, typer.Option("--sampler", help="sobol or random.")] = "sobol",
+    sobol: Annotated[bool, typer.Option("--sobol", help="Add Sobol sensitivity indices.")
+                     ] = False,
+    result: Annotated[list[str] | None, typer.Option(
+        "--result", "-r", help="Study this result (repeatable): it leads the table and plot, "
+        "and Monte Carlo and Sobol cover only the chosen results.")] = None,
+    output_format: Annotated[StudyFormat, typer.Option(
+        "--format", "-f", help="table (engineering units) or json (SI).")] = StudyFormat.table,
+    plot: Annotated[Path | None, typer.Option(
+        "--plot", help="Histogram of the leading result, .png or .svg.", dir_okay=False)
+    ] = None,
+    output: Annotated[Path | None, typer.Option(
+        "--output", "-o", help="Write the report to this file (atomically).", dir_okay=False)
+    ] = None,
+    jobs: Annotated[int | None, typer.Option(
+        "--jobs", "-j", min=1, help="Threads for Monte Carlo [default: the number of cores].",
+        show_default=False)] = None,
+    debug: DebugOption = False,
+) -> None:
+    """Worst case, RSS and Monte Carlo of every result under the spec's tolerances.
+
+    Exit status: 0 the margins stay within their limits (at worst case when it is
+    run); 1 they can be exceeded; 2 the spec or the options are invalid.
+    """
+    with _errors_as_exit(debug):
+        import os
+
+        from bearingcalc import reports
+        from bearingcalc.evaluation import load_one_spec
+        from bearingcalc.tolerance import StudyError, run_study
+
+        methods = [m.strip() for m in method.split(",") if m.strip()]
+        if plot is not None and plot.suffix.lower() not in (".png", ".svg"):
+            raise SpecError("--plot: give a .png or .svg file name", source=str(plot))
+        if plot is not None and "monte-carlo" not in methods:
+            raise SpecError("--plot draws the Monte Carlo histogram: add monte-carlo to "
+                            "--method", source=str(plot))
+        kind, spec, document = load_one_spec(spec_path)
+        threads = jobs or os.cpu_count() or 1
+        try:
+            report = _with_progress(lambda tick: run_study(
+                kind, spec, document.source, methods=methods, samples=samples, seed=seed,
+                sampler=sampler, sobol=sobol, results=result or (), threads=threads,
+                progress=tick))
+        except StudyError as error:
+            raise SpecError(str(error), source=document.source) from None
+
+        def write(stream: TextIO) -> None:
+            if output_format is StudyFormat.json:
+                import json
+
+                stream.write(json.dumps(report.record, allow_nan=False,
+                                        ensure_ascii=False) + "\n")
+            else:
+                reports.print_tolerance_table(report, stream)
+
+        if plot is not None and report.governing:
+            from bearingcalc.output import atomic_write
+            from bearingcalc.plots import tolerance_histogram
+
+            atomic_write(plot, lambda f: tolerance_histogram(report, report.governing[0], f,
+                                                             fmt=plot.suffix[1:]), binary=True)
+        _emit(write, output)
+        raise typer.Exit(EXIT_LIMIT if report.within_limits is False else EXIT_OK)
+
+
 def _with_progress(work: Callable[[Callable[[int], None] | None], T]) -> T:
     """Run ``work`` with a progress callback drawing a bar on stderr, when it is a terminal.
 

@@ -118,6 +118,26 @@ def evaluate_file(path: str | Path) -> list[Evaluation | SpecError]:
     return evaluate_documents(documents)
 
 
+def load_one_spec(path: str | Path) -> tuple[Kind, SpecModel, Document]:
+    """The one spec of a file (``file.yaml#N`` picks a document of several); raises SpecError."""
+    text_path, _, index = str(path).rpartition("#")
+    if not text_path or not index.isdigit() or Path(str(path)).exists():
+        text_path, index = str(path), ""
+    documents = load_documents(text_path)
+    if index:
+        if not 1 <= int(index) <= len(documents):
+            raise SpecError(f"the file has {len(documents)} documents, not {index}",
+                            source=text_path)
+        document = documents[int(index) - 1]
+    elif len(documents) > 1:
+        raise SpecError(f"the file holds {len(documents)} specs; pick one as "
+                        f"{text_path}#1 .. #{len(documents)}", source=text_path)
+    else:
+        document = documents[0]
+    kind, spec = parse_document(document)
+    return kind, spec, document
+
+
 def _judge(document: Document, kind: Kind, spec: SpecModel, raw: dict[str, float],
            code: int) -> Evaluation:
     """One spec's results from its solved values and status code."""

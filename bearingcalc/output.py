@@ -7,11 +7,14 @@ import os
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
-from typing import IO
+from typing import IO, Any
 
 
-def atomic_write(path: str | Path, write: Callable[[IO[str]], None]) -> None:
+def atomic_write(path: str | Path, write: Callable[[IO[Any]], None], *,
+                 binary: bool = False) -> None:
     """Call ``write`` on a temporary file beside ``path``, then rename it over ``path``.
+
+    ``binary`` opens the file for bytes (pictures) instead of UTF-8 text.
 
     If ``write`` raises (or the process is interrupted) the temporary file is
     removed and an existing ``path`` is left exactly as it was.
@@ -19,11 +22,12 @@ def atomic_write(path: str | Path, write: Callable[[IO[str]], None]) -> None:
     target = Path(path)
     if target.exists() and not target.is_file():
         # /dev/null, /dev/stdout, a FIFO: nothing to protect, and nothing to rename over.
-        with open(target, "w", encoding="utf-8", newline="") as stream:
+        with open(target, *_mode(binary)) as stream:  # type: ignore[call-overload]
             write(stream)
         return
+    mode, encoding, newline = _mode(binary)
     handle = tempfile.NamedTemporaryFile(  # noqa: SIM115 - closed below, renamed on success
-        "w", encoding="utf-8", newline="", dir=target.parent or ".",
+        mode, encoding=encoding, newline=newline, dir=target.parent or ".",
         prefix=f".{target.name}.", suffix=".tmp", delete=False)
     try:
         with handle:
@@ -35,3 +39,7 @@ def atomic_write(path: str | Path, write: Callable[[IO[str]], None]) -> None:
         with contextlib.suppress(OSError):
             os.unlink(handle.name)
         raise
+
+
+def _mode(binary: bool) -> tuple[str, str | None, str | None]:
+    return ("wb", None, None) if binary else ("w", "utf-8", "")

@@ -437,8 +437,9 @@ class _Accumulator:
     variance free of cancellation. Quantiles come from a histogram of
     ``HISTOGRAM_BINS`` bins spanning three times the range of the first
     ``BLOCK`` samples (the pilot), centred on it, plus one bin each side for
-    values outside; a quantile is placed within its bin by linear interpolation,
-    so it is off by at most one bin width, 1/21845 of the pilot's range.
+    values outside. A quantile interpolates between the two order statistics
+    around it, each placed within its bin, so it is off by at most one bin
+    width, 1/21845 of the pilot's range.
     """
 
     def __init__(self, shift: float, pilot: NDArray) -> None:
@@ -472,7 +473,9 @@ class _Accumulator:
             shifted = np.concatenate([shifted, np.zeros(blocks * BLOCK - len(values))])
         per_block = shifted.reshape(blocks, BLOCK)
         self.sums.extend(per_block.sum(axis=1).tolist())
-        self.squares.extend(np.einsum("ij,ij->i", per_block, per_block).tolist())
+        # np.sum's pairwise order depends only on the block, not on where the chunk
+        # sits in memory (einsum's does), which keeps the result chunk-invariant.
+        self.squares.extend(np.square(per_block).sum(axis=1).tolist())
         kept = values[finite] if not finite.all() else values
         self.count += kept.size
         if kept.size:
@@ -509,18 +512,126 @@ class _Accumulator:
         return out
 
     def quantile(self, q: float) -> float:
+        """The q-quantile as numpy's default (linear) method defines it, placing the two
+        order statistics around it each within its bin: off by at most one bin width."""
         if self.low == self.high:
             return self.low
         rank = q * (self.count - 1)
+        below = math.floor(rank)
         cumulative = np.cumsum(self.counts)
-        index = int(np.searchsorted(cumulative, rank, side="right"))
-        before = cumulative[index - 1] if index > 0 else 0
-        inside = self.counts[index]
-        fraction = (rank - before + 0.5) / inside if inside else 0.5
-        value = self.edge + (index - 1 + min(max(fraction, 0.0), 1.0)) * self.width
+        lower = self._order_statistic(cumulative, below)
+        upper = self._order_statistic(cumulative, min(below + 1, self.count - 1))
+        value = lower + (rank - below) * (upper - lower)
         return float(min(max(value, self.low), self.high))
+
+    def _order_statistic(self, cumulative: NDArray, rank: int) -> float:
+        index = int(np.searchsorted(cumulative, rank, side="right"))
+        before = int(cumulative[index - 1]) if index > 0 else 0
+        if index == 0:
+            return self.low  # below the histogram: only the minimum is known
+        if index == len(self.counts) - 1:
+            return self.high
+        fraction = (rank - before + 0.5) / int(self.counts[index])
+        return self.edge + (index - 1 + fraction) * self.width
 
     def histogram(self) -> tuple[NDArray, NDArray]:
         """(edges, counts) of the in-range bins."""
         edges = self.edge + self.width * np.arange(HISTOGRAM_BINS + 1)
         return edges, self.counts[1:-1].copy()
+
+
+@dataclass
+class StudyReport:
+    """Everything a tolerance run found: the contract's JSON object and the histograms."""
+
+    record: dict[str, Any]
+    histograms: dict[str, tuple[NDArray, NDArray]]
+    governing: list[str]
+    limits: dict[str, float]
+    margins: tuple[str, ...]
+
+    @property
+    def within_limits(self) -> bool | None:
+        """Whether every margin stays >= 0: at worst case if run, else in every sample."""
+        results = self.record["results"]
+        if not self.margins:
+            return None
+        worst = [results[m].get("worst_case", {}).get("min") for m in self.margins]
+        if all(w is not None for w in worst):
+            return all(w >= 0 for w in worst)  # type: ignore[operator]
+        if self.record.get("yield") is not None:
+            return bool(self.record["yield"] == 1.0)
+        return None
+
+
+def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str],
+              samples: int = 100_000, seed: int = 0, sampler: str = "sobol",
+              sobol: bool = False, results: Sequence[str] = (), threads: int = 2,
+              progress: Callable[[int], None] | None = None) -> StudyReport:
+    """Run the chosen methods and assemble the report (SI units throughout).
+
+    ``results`` narrows Monte Carlo and Sobol to those result keys (and names the
+    governing results); worst case and RSS always cover every result.
+    """
+    unknown = [m for m in methods if m not in METHODS]
+    if unknown:
+        raise StudyError(f"unknown method {unknown[0]!r}; use {', '.join(METHODS)}")
+    if sampler not in SAMPLERS:
+        raise StudyError(f"unknown sampler {sampler!r}; use {' or '.join(SAMPLERS)}")
+    study = Study(kind, spec)
+    missing = [key for key in results if key not in study.keys]
+    if missing:
+        raise StudyError(f"--result {missing[0]!r} is not a result of this {kind.name} spec; "
+                         f"choose from {', '.join(study.keys)}")
+    governing = list(results) or [key for key in kind.governing if key in study.keys]
+    focus = list(results) or study.keys
+    record: dict[str, Any] = {
+        "spec": source, "kind": kind.name, "name": getattr(spec, "name", None),
+        "samples": None, "seed": None, "sampler": None,
+        "inputs": study.input_summary(),
+        "results": {key: {"nominal": value} for key, value in study.nominal.items()},
+        "yield": None, "ppm_out": None, "cpk": None, "infeasible_samples": None,
+        "units": {**{key: kind.results[key][0] for key in study.keys},
+                  **{item.name: item.tolerance.unit for item in study.inputs}},
+        "warnings": [],
+    }
+    if "worst-case" in methods:
+        for key, entry in study.worst_case().items():
+            record["results"][key]["worst_case"] = entry
+    if "rss" in methods:
+        for key, entry in study.rss().items():
+            record["results"][key]["rss"] = entry
+    histograms: dict[str, tuple[NDArray, NDArray]] = {}
+    if "monte-carlo" in methods:
+        mc = study.monte_carlo(samples, seed, sampler, threads=threads,
+                               keys=list(dict.fromkeys([*focus, *kind.margins])),
+                               progress=progress)
+        for key, stats in mc.stats.items():
+            record["results"][key]["monte_carlo"] = stats
+        record.update({"samples": samples, "seed": seed, "sampler": sampler,
+                       "yield": mc.yield_fraction, "ppm_out": mc.ppm_out,
+                       "cpk": study.cpk(mc), "infeasible_samples": mc.infeasible})
+        if mc.infeasible:
+            record["warnings"].append(f"{mc.infeasible} of {samples} samples are impossible "
+                                      "designs; they count as out of spec")
+        histograms = mc.histograms
+    if sobol:
+        for key, entry in study.sobol(samples, seed).items():
+            if key in focus and entry is not None:
+                record["results"][key]["sobol"] = entry
+            elif key in focus:
+                record["warnings"].append(f"{key}: no Sobol indices, the result is undefined "
+                                          "for part of the tolerance box")
+    return StudyReport(_finite(record), histograms, governing, study.limit_values,
+                       kind.margins)
+
+
+def _finite(value: Any) -> Any:
+    """The record with every non-finite float replaced by None (JSON has no NaN)."""
+    if isinstance(value, dict):
+        return {key: _finite(item) for key, item in value.items()}
+    if isinstance(value, list):
+        return [_finite(item) for item in value]
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value

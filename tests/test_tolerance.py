@@ -1,0 +1,311 @@
+"""Tolerance studies against independent computations (issue: tolerance studies)."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+from numpy.testing import assert_allclose
+from scipy.stats import norm
+
+from bearingcalc.core.thrust_bearing import solve_thrust_bearing
+from bearingcalc.evaluation import parse_document
+from bearingcalc.spec.yaml_loader import load_documents
+from bearingcalc.tolerance import BLOCK, HISTOGRAM_BINS, Study
+from tests.conftest import ROOT
+
+TB = """kind: thrust-bearing
+ball_diameter: 12.7 mm ± 0.005 mm
+contact_angle: 30 deg ± 0.25 deg
+pitch_radius: 26 mm ± 0.03 mm
+shaft_speed: 1500 rpm
+limits:
+  max_spin_to_roll: 0.004
+"""
+
+# center_speed = R·Ω − r·ω (internal contact): linear in the two toleranced speeds.
+R_RING, R_DISK = 0.08, 0.02
+DISK = """kind: disk-on-circle
+disk_radius: 20 mm
+surface_radius: 80 mm
+contact: internal
+disk_speed: {disk}
+surface_speed: {ring}
+"""
+
+
+def study_of(spec_file, text) -> Study:
+    (document,) = load_documents(spec_file(text))
+    kind, spec = parse_document(document)
+    return Study(kind, spec)
+
+
+def linear_disk(spec_file, disk="600 rad/s ± 6 rad/s", ring="-100 rad/s ± 3 rad/s"):
+    return study_of(spec_file, DISK.format(disk=disk, ring=ring))
+
+
+def test_worst_case_bounds_a_dense_grid_and_finds_the_interior_maximum(spec_file):
+    study = study_of(spec_file, TB)
+    wc = study.worst_case()
+    d, theta, b = np.meshgrid(np.linspace(0.012695, 0.012705, 31),
+                              np.radians(np.linspace(29.75, 30.25, 31)),
+                              np.linspace(0.02597, 0.02603, 31), indexing="ij")
+    grid = solve_thrust_bearing(d / 2, theta, b, 1500 * math.pi / 30, max_spin_to_roll=0.004)
+    for key in ("spin_to_roll", "slip_margin", "ball_speed", "pitch_radius_max"):
+        values = grid[key]
+        # At least as extreme as every grid point, and no further than the grid allows.
+        assert wc[key]["min"] <= values.min() + 1e-12 * abs(values.min())
+        assert wc[key]["max"] >= values.max() - 1e-12 * abs(values.max())
+        span = values.max() - values.min()
+        assert wc[key]["min"] >= values.min() - 0.01 * span
+        assert wc[key]["max"] <= values.max() + 0.01 * span
+    # slip_margin = 0.004 − |ρ| peaks where ρ = 0, inside the box, not at a corner.
+    assert_allclose(wc["slip_margin"]["max"], 0.004, rtol=1e-9)
+    at = wc["slip_margin"]["max_inputs"]
+    rho = solve_thrust_bearing(at["ball_diameter"] / 2, at["contact_angle"],
+                               at["pitch_radius"], 1.0)["spin_to_roll"]
+    assert abs(rho) < 1e-11
+
+
+def test_rss_is_exact_for_a_linear_result(spec_file):
+    study = linear_disk(spec_file)
+    rss = study.rss()["center_speed"]
+    sigma_disk, sigma_ring = 6 / 3, 3 / 3
+    exact = math.hypot(R_RING * sigma_ring, R_DISK * sigma_disk)
+    assert_allclose(rss["std"], exact, rtol=1e-9)
+    assert_allclose(rss["mean"], R_RING * -100 - R_DISK * 600, rtol=1e-12)
+    shares = rss["contributions"]
+    assert_allclose(shares["surface_speed"], (R_RING * sigma_ring) ** 2 / exact**2, rtol=1e-9)
+
+
+def test_rss_derivatives_match_plain_finite_differences(spec_file):
+    study = study_of(spec_file, TB)
+    rss = study.rss()["spin_to_roll"]
+    center = {"d": 0.0127, "theta": math.radians(30), "b": 0.026}
+    sigma = {"d": 0.005e-3 / 3, "theta": math.radians(0.25) / 3, "b": 0.03e-3 / 3}
+
+    def rho(d, theta, b):
+        return float(solve_thrust_bearing(d / 2, theta, b, 1.0)["spin_to_roll"])
+
+    terms = []
+    for name in center:
+        h = 1e-3 * sigma[name]
+        up, down = dict(center), dict(center)
+        up[name] += h
+        down[name] -= h
+        terms.append(((rho(**up) - rho(**down)) / (2 * h) * sigma[name]) ** 2)
+    assert_allclose(rss["std"], math.sqrt(sum(terms)), rtol=1e-6)
+
+
+@pytest.mark.parametrize("distribution", ["normal", "uniform", "triangular"])
+def test_monte_carlo_moments_of_a_linear_result_are_analytic(spec_file, distribution):
+    disk = f"{{nominal: 600 rad/s, tolerance: 6 rad/s, distribution: {distribution}}}"
+    study = linear_disk(spec_file, disk=disk)
+    mc = study.monte_carlo(1 << 17, keys=["center_speed"])
+    stats = mc.stats["center_speed"]
+    disk_std = {"normal": 2.0, "uniform": 12 / math.sqrt(12), "triangular": 12 / math.sqrt(24)}
+    exact_std = math.hypot(R_RING * 1.0, R_DISK * disk_std[distribution])
+    exact_mean = R_RING * -100 - R_DISK * 600
+    assert abs(stats["mean"] - exact_mean) < 1e-3 * exact_std
+    assert_allclose(stats["std"], exact_std, rtol=2e-3)
+
+
+def test_monte_carlo_agrees_with_rss_for_small_tolerances(spec_file):
+    small = TB.replace("0.005 mm", "0.00005 mm").replace("0.25 deg", "0.0025 deg").replace(
+        "0.03 mm", "0.0003 mm")
+    study = study_of(spec_file, small)
+    rss = study.rss()["spin_to_roll"]
+    mc = study.monte_carlo(1 << 16, keys=["spin_to_roll"]).stats["spin_to_roll"]
+    assert_allclose(mc["std"], rss["std"], rtol=5e-3)
+    assert abs(mc["mean"] - rss["mean"]) < 1e-2 * rss["std"]
+
+
+def test_yield_matches_the_analytic_probability(spec_file):
+    # apex mismatch m = c·b − 1 with c = sinα/(a·sinβ): |m| <= L holds for b in
+    # [(1 − L)/c, (1 + L)/c], and b is normal.
+    text = """kind: bevel-gears
+gear_a: {pitch_radius: 15 mm, pitch_angle: 30 deg}
+gear_b: {pitch_radius: 26 mm ± 0.06 mm, pitch_angle: 60 deg}
+arm_speed: 100 rpm
+limits: {max_apex_mismatch: 0.001}
+"""
+    study = study_of(spec_file, text)
+    mc = study.monte_carlo(1 << 18, keys=["apex_mismatch"])
+    c = math.sin(math.radians(30)) / (0.015 * math.sin(math.radians(60)))
+    low, high = (1 - 0.001) / c, (1 + 0.001) / c
+    sigma = 0.06e-3 / 3
+    expected = norm.cdf((high - 0.026) / sigma) - norm.cdf((low - 0.026) / sigma)
+    assert 0.2 < expected < 0.95
+    assert abs(mc.yield_fraction - expected) < 2e-4
+    assert_allclose(mc.ppm_out, 1e6 * (1 - mc.yield_fraction))
+
+
+def test_sobol_indices_of_an_additive_function(spec_file):
+    study = linear_disk(spec_file)
+    indices = study.sobol(1 << 16)["center_speed"]
+    variance = (R_RING * 1.0) ** 2 + (R_DISK * 2.0) ** 2
+    expected = {"surface_speed": (R_RING * 1.0) ** 2 / variance,
+                "disk_speed": (R_DISK * 2.0) ** 2 / variance}
+    for name, value in expected.items():
+        assert abs(indices["first_order"][name] - value) < 0.01
+        assert abs(indices["total_order"][name] - value) < 0.01
+
+
+@pytest.mark.parametrize("sampler", ["sobol", "random"])
+def test_same_seed_same_answer_whatever_the_chunks_and_threads(spec_file, sampler):
+    study = study_of(spec_file, TB)
+    samples = 5 * BLOCK + 1234
+    runs = [study.monte_carlo(samples, seed=7, sampler=sampler, chunk=chunk, threads=threads)
+            for chunk, threads in ((BLOCK, 1), (4 * BLOCK, 2), (2 * BLOCK, 3))]
+    for run in runs[1:]:
+        assert run.stats == runs[0].stats
+        assert run.passed == runs[0].passed
+    other_seed = study.monte_carlo(samples, seed=8, sampler=sampler)
+    assert other_seed.stats["spin_to_roll"]["mean"] != runs[0].stats["spin_to_roll"]["mean"]
+
+
+def test_quantiles_are_within_one_histogram_bin_of_the_exact_ones(spec_file):
+    study = study_of(spec_file, TB)
+    samples = 3 * BLOCK
+    mc = study.monte_carlo(samples, keys=["spin_to_roll"])
+    values, _ = study.evaluate(study.draw(0, samples, 0, "sobol"), ["spin_to_roll"])
+    exact = values["spin_to_roll"]
+    pilot = exact[:BLOCK]
+    bin_width = 3 * (pilot.max() - pilot.min()) / HISTOGRAM_BINS
+    stats = mc.stats["spin_to_roll"]
+    for name, q in (("p00135", 0.00135), ("p50", 0.5), ("p99865", 0.99865)):
+        assert abs(stats[name] - np.quantile(exact, q)) <= bin_width
+    assert stats["min"] == exact.min() and stats["max"] == exact.max()
+    assert_allclose(stats["mean"], exact.mean(), rtol=1e-12)
+    assert_allclose(stats["std"], exact.std(ddof=1), rtol=1e-10)
+
+
+def test_impossible_samples_count_as_out_of_spec_and_never_crash(spec_file):
+    text = TB.replace("30 deg ± 0.25 deg", "44 deg ± 3 deg")
+    study = study_of(spec_file, text)
+    mc = study.monte_carlo(1 << 16, keys=["spin_to_roll"])
+    assert 0 < mc.infeasible < mc.samples
+    assert mc.passed <= mc.samples - mc.infeasible
+    assert all(v is None or math.isfinite(v) for v in mc.stats["spin_to_roll"].values())
+
+
+# --- the command ---------------------------------------------------------------------------
+
+CONTRACT_TOP = {"spec", "samples", "seed", "sampler", "inputs", "results", "yield", "ppm_out",
+                "cpk", "units"}
+TOLERANCED = sorted((ROOT / "specs" / "tolerances").glob("*.yaml"))
+
+
+@pytest.mark.parametrize("spec", TOLERANCED, ids=lambda p: p.stem)
+def test_every_kind_runs_every_method_with_sobol_in_json(cli, spec):
+    run = cli("tolerance", spec, "--sobol", "--samples", "4096", "--format", "json")
+    assert run.code in (0, 1), run.err
+    record = json.loads(run.out)
+    assert set(record) >= CONTRACT_TOP
+    assert record["samples"] == 4096 and record["seed"] == 0 and record["sampler"] == "sobol"
+    for entry in record["inputs"].values():
+        assert set(entry) == {"nominal", "low", "high", "distribution", "std"}
+    for key, entry in record["results"].items():
+        assert {"nominal", "worst_case", "rss", "monte_carlo"} <= set(entry), key
+        assert {"min", "max"} <= set(entry["worst_case"])
+        assert {"mean", "std", "contributions"} <= set(entry["rss"])
+        assert {"mean", "std", "min", "max", "p00135", "p50", "p99865"} <= set(
+            entry["monte_carlo"])
+        assert key in record["units"]
+    assert any("sobol" in entry for entry in record["results"].values())
+    assert 0 <= record["yield"] <= 1
+
+
+@pytest.mark.parametrize("spec", TOLERANCED, ids=lambda p: p.stem)
+def test_every_kind_prints_a_table(cli, spec):
+    run = cli("tolerance", spec, "--samples", "4096")
+    assert run.code in (0, 1), run.err
+    assert "worst case" in run.out and "Monte Carlo" in run.out
+
+
+def test_methods_not_run_are_left_out(cli):
+    run = cli("tolerance", TOLERANCED[-1], "--method", "rss", "--format", "json")
+    record = json.loads(run.out)
+    entry = next(iter(record["results"].values()))
+    assert "rss" in entry and "worst_case" not in entry and "monte_carlo" not in entry
+    assert record["samples"] is None and record["yield"] is None
+
+
+def test_result_option_leads_the_table_and_narrows_monte_carlo(cli):
+    run = cli("tolerance", ROOT / "specs/tolerances/thrust-bearing.yaml", "--result",
+              "cage_speed", "-n", "4096", "-f", "json")
+    record = json.loads(run.out)
+    assert "monte_carlo" in record["results"]["cage_speed"]
+    assert "monte_carlo" not in record["results"]["ball_speed"]
+    assert "worst_case" in record["results"]["ball_speed"]
+
+
+@pytest.mark.parametrize("suffix", [".png", ".svg"])
+def test_plot_is_a_valid_image(cli, tmp_path, suffix):
+    path = tmp_path / f"hist{suffix}"
+    run = cli("tolerance", ROOT / "specs/tolerances/thrust-bearing.yaml", "-n", "8192",
+              "--plot", path)
+    assert run.code in (0, 1), run.err
+    data = path.read_bytes()
+    assert len(data) > 5000
+    if suffix == ".png":
+        assert data.startswith(b"\x89PNG\r\n\x1a\n")
+        from matplotlib.image import imread
+
+        assert imread(path).shape[0] > 300
+    else:
+        assert b"<svg" in data[:2000]
+
+
+def test_random_sampler_and_seed_are_recorded(cli):
+    run = cli("tolerance", TOLERANCED[0], "-n", "5000", "--sampler", "random", "--seed", "3",
+              "-f", "json", "--method", "monte-carlo")
+    record = json.loads(run.out)
+    assert (record["sampler"], record["seed"], record["samples"]) == ("random", 3, 5000)
+
+
+BAD = [
+    ("contact_angle: 30 deg ± -0.25 deg", "tolerance must not be negative"),
+    ("contact_angle: 30 deg ± 0.25 mm", "'mm' is not a unit of angle"),
+    ("contact_angle: {nominal: 30 deg, tolerance: 1 deg, distribution: gauss}",
+     "unknown distribution 'gauss'"),
+    ("contact_angle: {nominal: 30 deg, plus: 1 deg}", "needs tolerance, or both plus and minus"),
+    ("pitch_radius: 26 mm ± 30 mm", "must be greater than zero, got the band's low end"),
+    ("ball_count: 12 ± 1", "must be a whole number of balls"),
+]
+
+
+@pytest.mark.parametrize(("line", "fragment"), BAD, ids=[f"bad{i}" for i in range(len(BAD))])
+def test_bad_tolerance_input_is_one_line_and_exit_2(cli, spec_file, line, fragment):
+    key = line.split(":")[0]
+    text = "\n".join(row for row in TB.splitlines() if not row.startswith(key + ":"))
+    run = cli("tolerance", spec_file(text + "\n" + line + "\n"))
+    assert run.code == 2
+    assert run.err.count("\n") == 1 and fragment in run.err, run.err
+
+
+@pytest.mark.parametrize(("args", "fragment"), [
+    (["--method", "exact"], "unknown method 'exact'"),
+    (["--sampler", "halton"], "unknown sampler 'halton'"),
+    (["--result", "speed"], "--result 'speed' is not a result"),
+    (["--plot", "x.pdf"], "give a .png or .svg"),
+    (["--plot", "x.png", "--method", "rss"], "add monte-carlo"),
+])
+def test_bad_options_are_one_line_and_exit_2(cli, spec_file, args, fragment):
+    run = cli("tolerance", spec_file(TB), *args)
+    assert run.code == 2 and fragment in run.err and run.err.count("\n") == 1, run.err
+
+
+def test_no_tolerance_and_sobol_with_one_input_are_clear_errors(cli):
+    run = cli("tolerance", ROOT / "specs" / "thrust-bearing.yaml")
+    assert run.code == 2 and "no tolerances" in run.err
+    one = ROOT / "specs" / "tolerances" / "bevel-gears.yaml"
+    assert cli("tolerance", one, "--sobol", "-n", "2048").code in (0, 1)
+
+
+def test_limit_exceeded_at_worst_case_exits_1(cli, spec_file):
+    run = cli("tolerance", spec_file(TB), "-n", "4096")
+    assert run.code == 1 and "FAIL" in run.out
+    assert "slip_margin reaches" in run.out
