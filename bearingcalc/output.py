@@ -34,6 +34,8 @@ def atomic_write(path: str | Path, write: Callable[[IO[Any]], None], *,
             write(handle)
             handle.flush()
             os.fsync(handle.fileno())
+        # Temporary files are private (0600); give the report the mode a new file gets.
+        os.chmod(handle.name, _new_file_mode(target))
         os.replace(handle.name, target)
     except BaseException:
         with contextlib.suppress(OSError):
@@ -43,3 +45,11 @@ def atomic_write(path: str | Path, write: Callable[[IO[Any]], None], *,
 
 def _mode(binary: bool) -> tuple[str, str | None, str | None]:
     return ("wb", None, None) if binary else ("w", "utf-8", "")
+
+
+def _new_file_mode(target: Path) -> int:
+    if target.exists():
+        return target.stat().st_mode & 0o777
+    umask = os.umask(0)
+    os.umask(umask)
+    return 0o666 & ~umask
