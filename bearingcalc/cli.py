@@ -227,7 +227,8 @@ def tolerance(
             report = _with_progress(lambda tick: run_study(
                 kind, spec, document.source, methods=methods, samples=samples, seed=seed,
                 sampler=sampler, sobol=sobol, results=result or (), threads=threads,
-                progress=tick))
+                progress=tick), total=samples if "monte-carlo" in methods else None,
+                label="Monte Carlo")
         except StudyError as error:
             raise SpecError(str(error), source=document.source) from None
 
@@ -250,19 +251,29 @@ def tolerance(
         raise typer.Exit(EXIT_LIMIT if report.within_limits is False else EXIT_OK)
 
 
-def _with_progress(work: Callable[[Callable[[int], None] | None], T]) -> T:
+def _with_progress(work: Callable[[Callable[[int], None] | None], T], total: int | None = None,
+                   label: str = "checking") -> T:
     """Run ``work`` with a progress callback drawing a bar on stderr, when it is a terminal.
 
-    The bar counts files and appears only once a batch has taken a moment.
+    The bar is transient and shows after a second, so quick runs print nothing extra.
     """
     if not sys.stderr.isatty():
         return work(None)
+    import time
+
     from rich.console import Console
     from rich.progress import Progress
 
-    with Progress(console=Console(stderr=True), transient=True) as bar:
-        task = bar.add_task("checking", total=None)
-        return work(lambda n: bar.advance(task, n))
+    started = time.monotonic()
+    with Progress(console=Console(stderr=True), transient=True, auto_refresh=False) as bar:
+        task = bar.add_task(label, total=total)
+
+        def tick(count: int) -> None:
+            bar.advance(task, count)
+            if time.monotonic() - started > 1.0:
+                bar.refresh()
+
+        return work(tick)
 
 
 def _emit(write: Callable[[TextIO], None], output: Path | None) -> None:
