@@ -251,6 +251,77 @@ def tolerance(
         raise typer.Exit(EXIT_LIMIT if report.within_limits is False else EXIT_OK)
 
 
+class SweepFormat(str, Enum):
+    table = "table"
+    csv = "csv"
+    json = "json"
+
+
+@app.command()
+def sweep(
+    spec_path: Annotated[Path, typer.Argument(
+        help="A YAML spec; the varied inputs replace its values.", show_default=False,
+        metavar="SPEC")],
+    vary: Annotated[list[str], typer.Option(
+        "--vary", "-v", help="NAME=START:STOP:N with units, e.g. contact_angle=5deg:40deg:36; "
+        "once for a line, twice for a grid.", show_default=False)],
+    result: Annotated[list[str] | None, typer.Option(
+        "--result", "-r", help="Results for the table and plot (repeatable) "
+        "[default: the kind's governing results].")] = None,
+    output_format: Annotated[SweepFormat | None, typer.Option(
+        "--format", "-f", help="table, csv or json (JSON Lines) [default: csv for "
+        "--output *.csv, json for *.json or *.jsonl, else table].", show_default=False)
+    ] = None,
+    output: Annotated[Path | None, typer.Option(
+        "--output", "-o", help="Write to this file (atomically).", dir_okay=False)] = None,
+    plot: Annotated[Path | None, typer.Option(
+        "--plot", help="Chart of the sweep, .png or .svg.", dir_okay=False)] = None,
+    debug: DebugOption = False,
+) -> None:
+    """Solve the spec over a line or grid of one or two inputs; impossible points are gaps."""
+    with _errors_as_exit(debug):
+        from bearingcalc import reports
+        from bearingcalc import sweep as sweeps
+        from bearingcalc.evaluation import load_one_spec
+
+        if plot is not None and plot.suffix.lower() not in (".png", ".svg"):
+            raise SpecError("--plot: give a .png or .svg file name", source=str(plot))
+        kind, spec, document = load_one_spec(spec_path)
+        try:
+            axes = [sweeps.parse_axis(text, spec) for text in vary]
+            solved = sweeps.run_sweep(kind, spec, document.source, axes)
+        except sweeps.SweepError as error:
+            raise SpecError(str(error), source=document.source) from None
+        keys = result or [k for k in kind.governing if k in solved.results]
+        unknown = [k for k in keys if k not in solved.results]
+        if unknown:
+            raise SpecError(f"--result {unknown[0]!r} is not a result of this {kind.name} spec;"
+                            f" choose from {', '.join(solved.results)}", source=document.source)
+        chosen = output_format or _format_for(output)
+
+        def write(stream: TextIO) -> None:
+            if chosen is SweepFormat.csv:
+                reports.write_sweep_csv(solved, stream)
+            elif chosen is SweepFormat.json:
+                reports.write_sweep_json_lines(solved, stream)
+            else:
+                reports.print_sweep_table(solved, keys, stream)
+
+        if plot is not None:
+            from bearingcalc.output import atomic_write
+            from bearingcalc.plots import sweep_plot
+
+            atomic_write(plot, lambda f: sweep_plot(solved, keys, f, fmt=plot.suffix[1:]),
+                         binary=True)
+        _emit(write, output)
+
+
+def _format_for(output: Path | None) -> SweepFormat:
+    suffix = output.suffix.lower() if output is not None else ""
+    return {".csv": SweepFormat.csv, ".json": SweepFormat.json,
+            ".jsonl": SweepFormat.json}.get(suffix, SweepFormat.table)
+
+
 def _with_progress(work: Callable[[Callable[[int], None] | None], T], total: int | None = None,
                    label: str = "checking") -> T:
     """Run ``work`` with a progress callback drawing a bar on stderr, when it is a terminal.

@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
-from typing import IO
+from typing import IO, Any
 
 import numpy as np
 
+from bearingcalc.sweep import Sweep
 from bearingcalc.tolerance import StudyReport
 from bearingcalc.units import to_display
 
@@ -64,3 +66,104 @@ def tolerance_histogram(report: StudyReport, key: str, path: str | Path | IO[byt
     figure.tight_layout()
     figure.savefig(path, format=fmt)
     plt.close(figure)
+
+
+def sweep_plot(sweep: Sweep, keys: Sequence[str], path: str | Path | IO[bytes], *,
+               fmt: str | None = None) -> None:
+    """A line sweep: the chosen results against the input, one y axis per unit, limits
+    drawn and the range within limits shaded. A grid sweep: filled contours of the first
+    chosen result, the limit contour bold, impossible designs left blank."""
+    plt = _pyplot()
+    figure, axes = plt.subplots(figsize=(8, 5), dpi=120)
+    if len(sweep.axes) == 1:
+        _line(sweep, keys, figure, axes)
+    else:
+        _contour(sweep, keys[0], figure, axes)
+    axes.set_title(f"{sweep.name} ({sweep.kind.name})")
+    figure.tight_layout()
+    figure.savefig(path, format=fmt)
+    plt.close(figure)
+
+
+def _axis_label(name: str, si_unit: str) -> tuple[float, str]:
+    scale, unit = to_display(1.0, si_unit)
+    return scale, f"{name} [{unit}]" if unit else name
+
+
+def _limit_levels(sweep: Sweep, key: str) -> list[float]:
+    if key in sweep.limits:
+        return [-sweep.limits[key], sweep.limits[key]]
+    if key in sweep.kind.margins:
+        return [0.0]
+    return []
+
+
+def _line(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> None:
+    axis = sweep.axes[0]
+    x_scale, x_label = _axis_label(axis.name, axis.unit)
+    x = sweep.inputs[axis.name] * x_scale
+    units = sweep.units
+    by_unit: dict[str, list[str]] = {}
+    for key in keys:
+        by_unit.setdefault(units[key], []).append(key)
+    colours = iter(["#4c72b0", "#dd8452", "#55a868", "#c44e52", "#8172b3", "#937860"])
+    handles = []
+    for n, (si_unit, members) in enumerate(by_unit.items()):
+        target = axes if n == 0 else axes.twinx()
+        if n > 1:
+            target.spines["right"].set_position(("axes", 1 + 0.12 * (n - 1)))
+        scale, unit = to_display(1.0, si_unit)
+        for key in members:
+            colour = next(colours, "#333333")
+            (line,) = target.plot(x, sweep.results[key] * scale, color=colour, label=key)
+            handles.append(line)
+            for level in _limit_levels(sweep, key):
+                target.axhline(level * scale, color=colour, linestyle=":", linewidth=1.2)
+        target.set_ylabel(", ".join(members) + (f" [{unit}]" if unit else ""))
+    ok = sweep.within_limits
+    if sweep.kind.margins and ok.any():
+        # Shade each run of points within limits out to the midpoints beside it.
+        middles = np.concatenate([[x[0]], (x[1:] + x[:-1]) / 2, [x[-1]]])
+        edges = np.flatnonzero(np.diff(np.concatenate([[0], ok.astype(int), [0]])))
+        for i, (start, stop) in enumerate(zip(edges[::2], edges[1::2], strict=True)):
+            axes.axvspan(middles[start], middles[stop], color="#55a868", alpha=0.15,
+                         label="within limits" if i == 0 else None)
+        handles.append(axes.get_legend_handles_labels()[0][-1])
+    impossible = sweep.status != 0
+    if impossible.any():
+        axes.text(0.01, 0.01, f"{int(impossible.sum())} of {len(impossible)} points are "
+                  "impossible designs (gaps)", transform=axes.transAxes, fontsize="small",
+                  color="#555555")
+    axes.set_xlabel(x_label)
+    axes.legend(handles=handles, loc="best", fontsize="small", framealpha=0.9)
+    axes.grid(alpha=0.3)
+
+
+def _contour(sweep: Sweep, key: str, figure: Any, axes: Any) -> None:
+    first, second = sweep.axes
+    x_scale, x_label = _axis_label(second.name, second.unit)
+    y_scale, y_label = _axis_label(first.name, first.unit)
+    z_scale, z_label = _axis_label(key, sweep.units[key])
+    shape = sweep.shape
+    x = second.values * x_scale
+    y = first.values * y_scale
+    z = np.ma.masked_invalid(sweep.results[key].reshape(shape) * z_scale)
+    if z.count() == 0:
+        axes.text(0.5, 0.5, "no possible design in this range", ha="center",
+                  transform=axes.transAxes)
+    else:
+        filled = axes.contourf(x, y, z, levels=24, cmap="viridis")
+        figure.colorbar(filled, ax=axes, label=z_label)
+        margin = sweep.kind.margins[0] if sweep.kind.margins else None
+        if margin is not None:
+            m = np.ma.masked_invalid(sweep.results[margin].reshape(shape))
+            if m.count() and m.min() < 0 < m.max():
+                lines = axes.contour(x, y, m, levels=[0.0], colors="black", linewidths=2.5)
+                axes.clabel(lines, fmt={0.0: f"{margin} = 0"}, fontsize="small")
+    axes.set_facecolor("#dddddd")  # masked (impossible) points show as the background
+    impossible = sweep.status != 0
+    if impossible.any():
+        axes.text(0.01, 0.01, "grey: impossible designs", transform=axes.transAxes,
+                  fontsize="small", color="#333333")
+    axes.set_xlabel(x_label)
+    axes.set_ylabel(y_label)

@@ -12,9 +12,11 @@ from collections.abc import Iterable, Sequence
 from typing import IO, Any
 
 import numpy as np
+from numpy.typing import NDArray
 
 from bearingcalc.batch import CheckRecord
 from bearingcalc.evaluation import Evaluation
+from bearingcalc.sweep import Sweep
 from bearingcalc.tolerance import StudyReport
 from bearingcalc.units import to_display
 
@@ -187,6 +189,7 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
     table of the governing result, the yield and verdict, and a terminal histogram."""
     from rich import box
     from rich.console import Console
+    from rich.markup import escape
     from rich.table import Table
 
     record = report.record
@@ -223,7 +226,7 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
             return "\n".join(f"{to_display(v, units[key])[0]:.4g}" for v in values)
 
         wc, rss, mc = (entry.get(m) or {} for m in ("worst_case", "rss", "monte_carlo"))
-        table.add_row(f"{key}\n[{unit}]" if unit else key, cell(entry["nominal"]),
+        table.add_row(escape(f"{key}\n[{unit}]") if unit else key, cell(entry["nominal"]),
                       cell(wc.get("min"), wc.get("max")), cell(rss.get("mean"), rss.get("std")),
                       cell(mc.get("mean"), mc.get("std")),
                       cell(mc.get("p00135"), mc.get("p99865")))
@@ -305,3 +308,131 @@ def _terminal_histogram(console: Any, key: str, report: StudyReport, si_unit: st
         high = to_display(edges[group[-1] + 1], si_unit)[0]
         bar = "█" * round(width * total / peak)
         console.print(f"{format_number(low):>12} … {format_number(high):<12} {bar} {total}")
+
+
+SWEEP_CSV_ROWS = 50_000
+
+
+def sweep_columns(sweep: Sweep) -> list[tuple[str, NDArray]]:
+    """(header, values) of the CSV's numeric columns: the varied inputs, then every result."""
+    # "input." keeps a varied input apart from the result of the same name.
+    columns = [(f"input.{axis.name} [{axis.unit}]", sweep.inputs[axis.name])
+               for axis in sweep.axes]
+    units = sweep.units
+    columns += [(f"{key} [{units[key]}]", values) for key, values in sweep.results.items()]
+    return columns
+
+
+def write_sweep_csv(sweep: Sweep, stream: IO[str]) -> None:
+    """One row per point: the varied inputs, every result (SI, units in the header) and the
+    reason a point is impossible (empty results then).
+
+    Numbers are written in their shortest round-trip form by orjson, 50,000 rows at
+    a time: formatting a million rows is the cost of a large sweep, and Python's
+    float formatting would take several times as long.
+    """
+    import orjson
+
+    columns = sweep_columns(sweep)
+    stream.write(",".join([*(name for name, _ in columns), "reason"]) + "\n")
+    integer_axes = [axis.integer for axis in sweep.axes]
+    reasons = {code: ("," + _csv_text(sweep.reason(code))).encode() for code in
+               np.unique(sweep.status).tolist() if code}
+    for start in range(0, len(sweep.status), SWEEP_CSV_ROWS):
+        stop = min(start + SWEEP_CSV_ROWS, len(sweep.status))
+        block = np.column_stack([values[start:stop].astype(float) for _, values in columns])
+        text = orjson.dumps(np.ascontiguousarray(block), option=orjson.OPT_SERIALIZE_NUMPY)
+        lines = text[2:-2].replace(b"],[", b"\n").replace(b"null", b"").split(b"\n")
+        codes = sweep.status[start:stop].tolist()
+        if any(integer_axes):
+            lines = [_integer_fields(line, integer_axes) for line in lines]
+        stream.write(b"".join(line + reasons.get(code, b",") + b"\n"
+                              for line, code in zip(lines, codes, strict=True)).decode())
+
+
+def _integer_fields(line: bytes, integer_axes: list[bool]) -> bytes:
+    fields = line.split(b",", len(integer_axes))
+    for i, integer in enumerate(integer_axes):
+        if integer and fields[i].endswith(b".0"):
+            fields[i] = fields[i][:-2]
+    return b",".join(fields)
+
+
+def _csv_text(text: str) -> str:
+    return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n') else text
+
+
+def write_sweep_json_lines(sweep: Sweep, stream: IO[str]) -> None:
+    """JSON Lines, one object per point: {"inputs", "results", "reason"} (SI units, as
+    in the CSV header and the README)."""
+    import orjson
+
+    names = [axis.name for axis in sweep.axes]
+    integer = {axis.name: axis.integer for axis in sweep.axes}
+    keys = list(sweep.results)
+    for start in range(0, len(sweep.status), SWEEP_CSV_ROWS):
+        stop = min(start + SWEEP_CSV_ROWS, len(sweep.status))
+        inputs = {name: sweep.inputs[name][start:stop].tolist() for name in names}
+        results = {key: sweep.results[key][start:stop].tolist() for key in keys}
+        lines = []
+        for row, code in enumerate(sweep.status[start:stop].tolist()):
+            point = {name: (int(inputs[name][row]) if integer[name] else inputs[name][row])
+                     for name in names}
+            solved = {} if code else {key: results[key][row] for key in keys}
+            lines.append(orjson.dumps({"inputs": point, "results": solved,
+                                       "reason": sweep.reason(code) if code else None}))
+        stream.write(b"\n".join(lines).decode() + "\n")
+
+
+def print_sweep_table(sweep: Sweep, keys: Sequence[str], stream: IO[str] | None = None,
+                      grid_rows: int = 12, grid_columns: int = 8) -> None:
+    """All points of a line with the chosen results; for a grid, the first chosen result
+    on a compact grid (every n-th value of each axis)."""
+    from rich.console import Console
+    from rich.markup import escape
+    from rich.table import Table
+
+    console = Console(file=stream, highlight=False)
+    units = sweep.units
+
+    def shown(value: float, si_unit: str, digits: int = 7) -> str:
+        if not np.isfinite(value):
+            return "—"
+        return f"{to_display(value, si_unit)[0]:.{digits}g}"
+
+    def label(name: str, si_unit: str) -> str:
+        unit = to_display(0.0, si_unit)[1]
+        return escape(f"{name} [{unit}]") if unit else name
+
+    title = f"{sweep.name} ({sweep.kind.name}, {sweep.source})"
+    if len(sweep.axes) == 1:
+        axis = sweep.axes[0]
+        table = Table(title=title, title_justify="left")
+        for header in (label(axis.name, axis.unit), *(label(k, units[k]) for k in keys)):
+            table.add_column(header, justify="right")
+        table.add_column("impossible because")
+        for i, value in enumerate(sweep.inputs[axis.name].tolist()):
+            code = int(sweep.status[i])
+            table.add_row(shown(value, axis.unit),
+                          *(shown(sweep.results[k][i], units[k]) for k in keys),
+                          sweep.reason(code) if code else "")
+        console.print(table)
+        return
+    first, second = sweep.axes
+    key = keys[0]
+    values = sweep.results[key].reshape(sweep.shape)
+    rows = np.unique(np.linspace(0, len(first.values) - 1, grid_rows).round().astype(int))
+    cols = np.unique(np.linspace(0, len(second.values) - 1, grid_columns).round().astype(int))
+    table = Table(title=f"{escape(title)}\n{label(key, units[key])} by "
+                  f"{label(first.name, first.unit)} (rows) and {label(second.name, second.unit)}"
+                  " (columns); —: impossible design", title_justify="left")
+    table.add_column("")
+    for j in cols:
+        table.add_column(shown(second.values[j], second.unit, 4), justify="right")
+    for i in rows:
+        table.add_row(shown(first.values[i], first.unit, 4),
+                      *(shown(values[i, j], units[key], 4) for j in cols))
+    console.print(table)
+    if len(rows) < len(first.values) or len(cols) < len(second.values):
+        console.print(f"(every point of the {len(first.values)} × {len(second.values)} grid is "
+                      "in --format csv or json)")

@@ -7,12 +7,15 @@ else.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
+import typing
 from dataclasses import dataclass
 from typing import Annotated, Any
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, PlainValidator, WithJsonSchema
+from pydantic.fields import FieldInfo
 
 from bearingcalc.units import ANGLE, ANGULAR_ACCEL, ANGULAR_SPEED, LENGTH, Dimension, parse_quantity
 
@@ -201,16 +204,24 @@ def quantity(dimension: Dimension, sign: str | None = None) -> Any:
                      WithJsonSchema(schema)]
 
 
-def _count(minimum: int, what: str) -> Any:
-    def check(value: Any) -> int:
+class _Count:
+    """Validator of a whole-number field (teeth, balls) with a minimum."""
+
+    def __init__(self, minimum: int, what: str) -> None:
+        self.minimum = minimum
+        self.what = what
+
+    def __call__(self, value: Any) -> int:
         if isinstance(value, bool) or not isinstance(value, int):
-            raise ValueError(f"must be a whole number of {what}, got {value!r}")
-        if value < minimum:
-            raise ValueError(f"must be at least {minimum}, got {value}")
+            raise ValueError(f"must be a whole number of {self.what}, got {value!r}")
+        if value < self.minimum:
+            raise ValueError(f"must be at least {self.minimum}, got {value}")
         return value
 
+
+def _count(minimum: int, what: str) -> Any:
     schema = {"type": "integer", "minimum": minimum, "description": f"number of {what}"}
-    return Annotated[int, BeforeValidator(check), WithJsonSchema(schema)]
+    return Annotated[int, BeforeValidator(_Count(minimum, what)), WithJsonSchema(schema)]
 
 
 def _plain_number(value: Any) -> float:
@@ -230,3 +241,45 @@ BallCount = _count(1, "balls")
 ToothCount = _count(5, "teeth")
 Ratio = Annotated[float, BeforeValidator(_plain_number),
                   WithJsonSchema({"type": "number", "minimum": 0})]
+
+
+def field_parser(info: FieldInfo) -> tuple[str, Any, str] | None:
+    """How to read a value of a spec field from text, for sweeps.
+
+    Returns ("quantity", text -> SI float, SI unit), ("integer", text -> int, "1"),
+    ("number", text -> float, "1"), or None for fields that are not numbers.
+    """
+    metadata = list(info.metadata)
+    for arg in typing.get_args(info.annotation):
+        metadata.extend(typing.get_args(arg)[1:])
+    for item in metadata:
+        func = getattr(item, "func", None)
+        if isinstance(func, _Quantity):
+            return ("quantity", functools.partial(_parse_as, dimension=func.dimension),
+                    func.dimension.si_unit)
+        if isinstance(func, _Count):
+            return "integer", _whole_number, "1"
+        if func is _plain_number:
+            return "number", _finite_number, "1"
+    return None
+
+
+def _parse_as(text: str, dimension: Dimension) -> float:
+    return parse_quantity(text, dimension)
+
+
+def _whole_number(text: str) -> int:
+    try:
+        return int(text)
+    except ValueError:
+        raise ValueError(f"'{text}' is not a whole number") from None
+
+
+def _finite_number(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise ValueError(f"'{text}' is not a number") from None
+    if not math.isfinite(value):
+        raise ValueError(f"'{text}' is not a finite number")
+    return value

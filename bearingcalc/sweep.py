@@ -1,0 +1,155 @@
+"""Design sweeps: a spec solved over a line or a grid of one or two of its inputs.
+
+All points are solved in one vectorised call (see :mod:`bearingcalc.variation`).
+A point where the design is impossible is not an error: its results are NaN
+and it carries the reason (the solver's status code).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+from pydantic import BaseModel
+
+from bearingcalc.errors import BearingcalcError
+from bearingcalc.kinds import Kind
+from bearingcalc.spec.fields import SpecModel, field_parser
+from bearingcalc.variation import evaluate_with, field_value
+
+MAX_POINTS = 4_000_000
+
+
+class SweepError(BearingcalcError):
+    """A sweep that cannot be run as asked."""
+
+
+@dataclass
+class Axis:
+    """One varied input: its dotted field name, values (SI) and unit."""
+
+    name: str
+    values: NDArray
+    unit: str
+    integer: bool = False
+
+
+@dataclass
+class Sweep:
+    """The solved points of a sweep, flattened in row-major order of the axes."""
+
+    kind: Kind
+    source: str
+    name: str
+    axes: list[Axis]
+    inputs: dict[str, NDArray]        # axis name -> value at each point
+    results: dict[str, NDArray]       # key -> value at each point, NaN where infeasible
+    status: NDArray                   # 0 feasible, else a key of kind.status_reasons
+    limits: dict[str, float]          # result key -> symmetric limit value
+
+    @property
+    def units(self) -> dict[str, str]:
+        return {key: self.kind.results[key][0] for key in self.results}
+
+    def reason(self, code: int) -> str:
+        """The words for a status code: 'field: why'."""
+        field, why = self.kind.status_reasons[code]
+        return f"{field}: {why}"
+
+    @property
+    def within_limits(self) -> NDArray:
+        """Feasible points whose margins are all >= 0."""
+        ok = self.status == 0
+        for margin in self.kind.margins:
+            ok &= self.results[margin] >= 0
+        return ok
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        return tuple(len(axis.values) for axis in self.axes)
+
+
+_VARY = re.compile(r"^\s*(?P<name>[A-Za-z_][\w.]*)\s*=\s*(?P<start>[^:]+):(?P<stop>[^:]+):"
+                   r"(?P<count>\s*\d+\s*)$")
+
+
+def parse_axis(text: str, spec: SpecModel) -> Axis:
+    """An axis from ``NAME=START:STOP:N`` (START and STOP with units where the field has one)."""
+    match = _VARY.match(text)
+    if match is None:
+        raise SweepError(f"--vary {text!r}: write NAME=START:STOP:N, like "
+                         "contact_angle=5deg:40deg:36")
+    name, count = match["name"], int(match["count"])
+    if count < 2:
+        raise SweepError(f"--vary {name}: N must be at least 2, got {count}")
+    parser = _parser_at(type(spec), name)
+    try:
+        current = field_value(spec, name)
+    except AttributeError:
+        current = None
+    if current is None:
+        raise SweepError(f"--vary {name}: the spec leaves {name} out (it is solved, or "
+                         "optional and not given); give it a value in the spec to sweep it")
+    if isinstance(current, BaseModel):
+        raise SweepError(f"--vary {name}: {name} is a group of fields; vary one of them, "
+                         f"like {name}.{next(iter(type(current).model_fields))}")
+    kind_of_field, converter, unit = parser
+    try:
+        start, stop = converter(match["start"].strip()), converter(match["stop"].strip())
+    except ValueError as exc:
+        raise SweepError(f"--vary {name}: {exc}") from None
+    if kind_of_field == "integer":
+        values = np.unique(np.round(np.linspace(start, stop, count)).astype(np.int64))
+        if len(values) < count:
+            raise SweepError(f"--vary {name}: {name} is a whole number; {start}..{stop} holds "
+                             f"only {len(values)} distinct values, ask for at most that many")
+        return Axis(name, values, unit, integer=True)
+    return Axis(name, np.linspace(start, stop, count), unit)
+
+
+def _parser_at(model: type[BaseModel], path: str) -> tuple[str, Any, str]:
+    current: type[BaseModel] = model
+    parts = path.split(".")
+    for i, part in enumerate(parts):
+        if part not in current.model_fields or part in ("kind", "name"):
+            known = ", ".join(f for f in current.model_fields if f not in ("kind", "name"))
+            where = ".".join(parts[:i]) or "the spec"
+            raise SweepError(f"--vary {path}: {where} has no input '{part}'; inputs: {known}")
+        info = current.model_fields[part]
+        if i == len(parts) - 1:
+            parser = field_parser(info)
+            if parser is None:
+                raise SweepError(f"--vary {path}: {path} is not a number that can be swept")
+            return parser
+        nested = next((c for c in (info.annotation, *getattr(info.annotation, "__args__", ()))
+                       if isinstance(c, type) and issubclass(c, BaseModel)), None)
+        if nested is None:
+            raise SweepError(f"--vary {path}: {'.'.join(parts[:i + 1])} has no fields")
+        current = nested
+    raise AssertionError("unreachable")
+
+
+def run_sweep(kind: Kind, spec: SpecModel, source: str, axes: list[Axis]) -> Sweep:
+    """Solve every point of the line or grid spanned by ``axes`` in one call."""
+    if not 1 <= len(axes) <= 2:
+        raise SweepError("give one --vary for a line or two for a grid")
+    if len(axes) == 2 and axes[0].name == axes[1].name:
+        raise SweepError(f"--vary {axes[0].name} is given twice")
+    points = int(np.prod([len(axis.values) for axis in axes]))
+    if points > MAX_POINTS:
+        raise SweepError(f"{points} points is more than {MAX_POINTS}; use fewer")
+    grids = np.meshgrid(*(axis.values for axis in axes), indexing="ij")
+    inputs = {axis.name: grid.ravel() for axis, grid in zip(axes, grids, strict=True)}
+    results, status = evaluate_with(kind, spec, inputs)
+    feasible = status == 0
+    shape = (points,)
+    solved = {key: np.where(feasible, np.broadcast_to(value, shape), np.nan)
+              for key, value in results.items()}
+    limits_input = spec.solver_inputs()  # type: ignore[attr-defined]
+    limits = {key: float(limits_input[limit]) for key, limit in kind.limits.items()}
+    name = getattr(spec, "name", None) or source
+    return Sweep(kind, source, name, axes, inputs, solved,
+                 np.broadcast_to(status, shape).copy(), limits)
