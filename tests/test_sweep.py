@@ -83,7 +83,7 @@ def test_every_csv_row_equals_solve_of_the_same_point(cli, tmp_path):
         path.write_text(text)
         (document,) = load_documents(path)
         if row["reason"]:
-            with pytest.raises(Exception, match="ball_count|contact"):
+            with pytest.raises(Exception, match=r"ball_count|contact"):
                 evaluate_document(document)
             continue
         solved = evaluate_document(document).results
