@@ -4,13 +4,15 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
-from typing import IO, Any
+from typing import IO, TYPE_CHECKING, Any
 
 import numpy as np
 
-from bearingcalc.sweep import Sweep
-from bearingcalc.tolerance import StudyReport
 from bearingcalc.units import to_display
+
+if TYPE_CHECKING:
+    from bearingcalc.sweep import Sweep
+    from bearingcalc.tolerance import StudyReport
 
 
 def _pyplot():  # type: ignore[no-untyped-def]

@@ -9,16 +9,18 @@ import csv
 import io
 import json
 from collections.abc import Iterable, Sequence
-from typing import IO, Any
+from typing import IO, TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
-from bearingcalc.batch import CheckRecord
-from bearingcalc.evaluation import Evaluation
-from bearingcalc.sweep import Sweep
-from bearingcalc.tolerance import StudyReport
 from bearingcalc.units import to_display
+
+if TYPE_CHECKING:  # the report types only; their modules load with their commands
+    from bearingcalc.batch import CheckRecord
+    from bearingcalc.evaluation import Evaluation
+    from bearingcalc.sweep import Sweep
+    from bearingcalc.tolerance import StudyReport
 
 
 def evaluation_record(evaluation: Evaluation) -> dict[str, Any]:
