@@ -11,7 +11,7 @@ import traceback
 from collections.abc import Callable
 from enum import Enum
 from pathlib import Path
-from typing import Annotated, TextIO, TypeVar
+from typing import Annotated, BinaryIO, TextIO, TypeVar
 
 import typer
 
@@ -32,6 +32,11 @@ class SolveFormat(str, Enum):
 
 
 DebugOption = Annotated[bool, typer.Option("--debug", help="Show tracebacks of internal errors.")]
+OutputOption = Annotated[Path | None, typer.Option(
+    "--output", "-o", help="Write to this file instead of stdout (atomically: a failed run "
+    "leaves an existing file as it was).", dir_okay=False)]
+PlotOption = Annotated[Path | None, typer.Option(
+    "--plot", help="Draw a chart to this .png or .svg file.", dir_okay=False)]
 
 
 @app.callback()
@@ -92,9 +97,7 @@ def check(
     output_format: Annotated[CheckFormat, typer.Option(
         "--format", "-f", help="table, json (JSON Lines) or junit (JUnit XML).")
     ] = CheckFormat.table,
-    output: Annotated[Path | None, typer.Option(
-        "--output", "-o", help="Write the report to this file (atomically) instead of stdout.",
-        dir_okay=False)] = None,
+    output: OutputOption = None,
     jobs: Annotated[int | None, typer.Option(
         "--jobs", "-j", min=1, help="Worker processes [default: the number of cores].",
         show_default=False)] = None,
@@ -192,12 +195,8 @@ def tolerance(
         "and Monte Carlo and Sobol cover only the chosen results.")] = None,
     output_format: Annotated[StudyFormat, typer.Option(
         "--format", "-f", help="table (engineering units) or json (SI).")] = StudyFormat.table,
-    plot: Annotated[Path | None, typer.Option(
-        "--plot", help="Histogram of the leading result, .png or .svg.", dir_okay=False)
-    ] = None,
-    output: Annotated[Path | None, typer.Option(
-        "--output", "-o", help="Write the report to this file (atomically).", dir_okay=False)
-    ] = None,
+    plot: PlotOption = None,
+    output: OutputOption = None,
     jobs: Annotated[int | None, typer.Option(
         "--jobs", "-j", min=1, help="Threads for Monte Carlo [default: the number of cores].",
         show_default=False)] = None,
@@ -216,8 +215,7 @@ def tolerance(
         from bearingcalc.tolerance import StudyError, run_study
 
         methods = [m.strip() for m in method.split(",") if m.strip()]
-        if plot is not None and plot.suffix.lower() not in (".png", ".svg"):
-            raise SpecError("--plot: give a .png or .svg file name", source=str(plot))
+        _check_plot_name(plot)
         if plot is not None and "monte-carlo" not in methods:
             raise SpecError("--plot draws the Monte Carlo histogram: add monte-carlo to "
                             "--method", source=str(plot))
@@ -242,11 +240,10 @@ def tolerance(
                 reports.print_tolerance_table(report, stream)
 
         if plot is not None and report.governing:
-            from bearingcalc.output import atomic_write
             from bearingcalc.plots import tolerance_histogram
 
-            atomic_write(plot, lambda f: tolerance_histogram(report, report.governing[0], f,
-                                                             fmt=plot.suffix[1:]), binary=True)
+            _save_plot(plot, lambda f, fmt: tolerance_histogram(report, report.governing[0], f,
+                                                                fmt=fmt))
         _emit(write, output)
         raise typer.Exit(EXIT_LIMIT if report.within_limits is False else EXIT_OK)
 
@@ -272,10 +269,8 @@ def sweep(
         "--format", "-f", help="table, csv or json (JSON Lines) [default: csv for "
         "--output *.csv, json for *.json or *.jsonl, else table].", show_default=False)
     ] = None,
-    output: Annotated[Path | None, typer.Option(
-        "--output", "-o", help="Write to this file (atomically).", dir_okay=False)] = None,
-    plot: Annotated[Path | None, typer.Option(
-        "--plot", help="Chart of the sweep, .png or .svg.", dir_okay=False)] = None,
+    output: OutputOption = None,
+    plot: PlotOption = None,
     debug: DebugOption = False,
 ) -> None:
     """Solve the spec over a line or grid of one or two inputs; impossible points are gaps."""
@@ -284,8 +279,7 @@ def sweep(
         from bearingcalc import sweep as sweeps
         from bearingcalc.evaluation import load_one_spec
 
-        if plot is not None and plot.suffix.lower() not in (".png", ".svg"):
-            raise SpecError("--plot: give a .png or .svg file name", source=str(plot))
+        _check_plot_name(plot)
         kind, spec, document = load_one_spec(spec_path)
         try:
             axes = [sweeps.parse_axis(text, spec) for text in vary]
@@ -308,11 +302,9 @@ def sweep(
                 reports.print_sweep_table(solved, keys, stream)
 
         if plot is not None:
-            from bearingcalc.output import atomic_write
             from bearingcalc.plots import sweep_plot
 
-            atomic_write(plot, lambda f: sweep_plot(solved, keys, f, fmt=plot.suffix[1:]),
-                         binary=True)
+            _save_plot(plot, lambda f, fmt: sweep_plot(solved, keys, f, fmt=fmt))
         _emit(write, output)
 
 
@@ -345,6 +337,22 @@ def _with_progress(work: Callable[[Callable[[int], None] | None], T], total: int
                 bar.refresh()
 
         return work(tick)
+
+
+def _check_plot_name(plot: Path | None) -> None:
+    if plot is not None and plot.suffix.lower() not in (".png", ".svg"):
+        raise SpecError("--plot: give a .png or .svg file name", source=str(plot))
+
+
+def _save_plot(plot: Path, draw: Callable[[BinaryIO, str], None]) -> None:
+    """Draw a picture into ``plot`` atomically, in the format its suffix names."""
+    from bearingcalc.output import atomic_write
+
+    try:
+        atomic_write(plot, lambda stream: draw(stream, plot.suffix[1:].lower()), binary=True)
+    except OSError as exc:
+        raise SpecError(f"cannot write the plot: {exc.strerror or exc}",
+                        source=str(plot)) from None
 
 
 def _emit(write: Callable[[TextIO], None], output: Path | None) -> None:
