@@ -99,7 +99,7 @@ def check(
     ] = CheckFormat.table,
     output: OutputOption = None,
     jobs: Annotated[int | None, typer.Option(
-        "--jobs", "-j", min=1, help="Worker processes [default: the number of cores].",
+        "--jobs", "-j", min=1, help="Worker processes (default: the number of cores).",
         show_default=False)] = None,
     show_all: Annotated[bool, typer.Option(
         "--all", help="Table: list passing specs too when there are many.")] = False,
@@ -198,7 +198,7 @@ def tolerance(
     plot: PlotOption = None,
     output: OutputOption = None,
     jobs: Annotated[int | None, typer.Option(
-        "--jobs", "-j", min=1, help="Threads for Monte Carlo [default: the number of cores].",
+        "--jobs", "-j", min=1, help="Threads for Monte Carlo (default: the number of cores).",
         show_default=False)] = None,
     debug: DebugOption = False,
 ) -> None:
@@ -264,10 +264,10 @@ def sweep(
         "once for a line, twice for a grid.", show_default=False)],
     result: Annotated[list[str] | None, typer.Option(
         "--result", "-r", help="Results for the table and plot (repeatable) "
-        "[default: the kind's governing results].")] = None,
+        "(default: the kind's governing results).")] = None,
     output_format: Annotated[SweepFormat | None, typer.Option(
-        "--format", "-f", help="table, csv or json (JSON Lines) [default: csv for "
-        "--output *.csv, json for *.json or *.jsonl, else table].", show_default=False)
+        "--format", "-f", help="table, csv or json (JSON Lines) (default: csv for "
+        "--output *.csv, json for *.json or *.jsonl, else table).", show_default=False)
     ] = None,
     output: OutputOption = None,
     plot: PlotOption = None,
