@@ -319,12 +319,15 @@ class Study:
 
     # --- Sobol indices -------------------------------------------------------------------
 
-    def sobol(self, samples: int, seed: int = 0) -> dict[str, dict[str, dict[str, float]] | None]:
-        """First- and total-order Sobol indices of every result (scipy.stats.sobol_indices).
+    def sobol(self, samples: int, seed: int = 0, keys: Sequence[str] | None = None
+              ) -> dict[str, dict[str, dict[str, float]] | str]:
+        """First- and total-order Sobol indices of each result (scipy.stats.sobol_indices).
 
         Uses n = the largest power of 2 <= ``samples`` (at least 2^10, at most
-        2^16), which costs n·(d + 2) solver evaluations in one call. A result that
-        is infeasible somewhere in the sample gets None.
+        2^16), which costs n·(d + 2) solver evaluations in one call. A result
+        without indices gets the reason instead: it does not vary, or the design
+        is impossible somewhere in the sample (scipy needs finite values and would
+        otherwise return meaningless numbers).
         """
         from scipy import stats
 
@@ -332,28 +335,38 @@ class Study:
             raise StudyError("--sobol needs at least two toleranced inputs")
         n = 1 << max(10, min(16, int(math.log2(max(samples, 2)))))
         dists = [_frozen(item.tolerance, stats) for item in self.inputs]
-        keys = self.keys
+        keys = list(keys or self.keys)
+        impossible = np.zeros(len(keys), dtype=bool)
+        constant = np.ones(len(keys), dtype=bool)
 
         def func(x: NDArray) -> NDArray:
-            results, _ = self.evaluate(x.T)
-            return np.vstack([results[key] for key in keys])
+            results, _ = self.evaluate(x.T, keys)
+            outputs = np.vstack([results[key] for key in keys])
+            finite = np.isfinite(outputs)
+            impossible[:] |= ~finite.all(axis=1)
+            outputs = np.where(finite, outputs, 0.0)
+            constant[:] &= np.ptp(outputs, axis=1) == 0
+            return outputs
 
         with warnings.catch_warnings():
-            warnings.simplefilter("ignore")  # NaN rows (infeasible designs) are reported below
+            warnings.simplefilter("ignore")  # rows without indices are reported below
             result = stats.sobol_indices(func=func, n=n, dists=dists, rng=seed)
         first = np.asarray(result.first_order)
         total = np.asarray(result.total_order)
-        out: dict[str, dict[str, dict[str, float]] | None] = {}
+        out: dict[str, dict[str, dict[str, float]] | str] = {}
         for row, key in enumerate(keys):
-            if not (np.all(np.isfinite(first[row])) and np.all(np.isfinite(total[row]))):
-                out[key] = None
-                continue
-            out[key] = {
-                "first_order": {item.name: float(first[row, i])
-                                for i, item in enumerate(self.inputs)},
-                "total_order": {item.name: float(total[row, i])
-                                for i, item in enumerate(self.inputs)},
-            }
+            if impossible[row]:
+                out[key] = "impossible designs in the sample"
+            elif constant[row] or not (np.isfinite(first[row]).all()
+                                       and np.isfinite(total[row]).all()):
+                out[key] = "does not vary with the tolerances"
+            else:
+                out[key] = {
+                    "first_order": {item.name: float(first[row, i])
+                                    for i, item in enumerate(self.inputs)},
+                    "total_order": {item.name: float(total[row, i])
+                                    for i, item in enumerate(self.inputs)},
+                }
         return out
 
     def input_summary(self) -> dict[str, dict[str, Any]]:
@@ -616,12 +629,11 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
                                       "designs; they count as out of spec")
         histograms = mc.histograms
     if sobol:
-        for key, entry in study.sobol(samples, seed).items():
-            if key in focus and entry is not None:
+        for key, entry in study.sobol(samples, seed, focus).items():
+            if isinstance(entry, str):
+                record["warnings"].append(f"{key}: no Sobol indices, {entry}")
+            else:
                 record["results"][key]["sobol"] = entry
-            elif key in focus:
-                record["warnings"].append(f"{key}: no Sobol indices, the result is undefined "
-                                          "for part of the tolerance box")
     return StudyReport(_finite(record), histograms, governing, study.limit_values,
                        kind.margins)
 

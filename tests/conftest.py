@@ -3,11 +3,16 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from hypothesis import settings
 from typer.testing import CliRunner
 
 from bearingcalc.cli import app
 
 ROOT = Path(__file__).resolve().parent.parent
+
+# The same examples on every run, so CI cannot fail on a draw a developer never saw.
+settings.register_profile("deterministic", derandomize=True, print_blob=True)
+settings.load_profile("deterministic")
 
 
 class Run:

@@ -309,3 +309,12 @@ def test_limit_exceeded_at_worst_case_exits_1(cli, spec_file):
     run = cli("tolerance", spec_file(TB), "-n", "4096")
     assert run.code == 1 and "FAIL" in run.out
     assert "slip_margin reaches" in run.out
+
+
+def test_sobol_gives_no_numbers_where_designs_are_impossible_or_results_constant(spec_file):
+    study = study_of(spec_file, TB.replace("30 deg ± 0.25 deg", "44 deg ± 3 deg"))
+    indices = study.sobol(1 << 12, keys=["spin_to_roll", "shaft_speed"])
+    assert indices["spin_to_roll"] == "impossible designs in the sample"
+    feasible = study_of(spec_file, TB).sobol(1 << 12, keys=["spin_to_roll", "shaft_speed"])
+    assert feasible["shaft_speed"] == "does not vary with the tolerances"
+    assert abs(sum(feasible["spin_to_roll"]["first_order"].values()) - 1) < 0.05
