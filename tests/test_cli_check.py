@@ -245,7 +245,7 @@ def check_jsonschema(schema_file, *files):
 
 
 def test_check_jsonschema_accepts_every_example_spec(schema_file):
-    done = check_jsonschema(schema_file, *sorted((ROOT / "specs").glob("*.yaml")))
+    done = check_jsonschema(schema_file, *sorted((ROOT / "specs").rglob("*.yaml")))
     assert done.returncode == 0, done.stdout + done.stderr
 
 
