@@ -167,3 +167,15 @@ def test_sweep_values_are_evenly_spaced_in_si(cli):
               "-f", "csv")
     radii = [float(r["input.disk_radius [m]"]) for r in csv_rows(run.out)]
     assert np.allclose(radii, np.linspace(0.0127, 0.0635, 5), rtol=1e-15)
+
+
+def test_one_document_of_a_multi_document_file_is_picked_with_a_hash(cli, spec_file):
+    text = (SPECS / "thrust-bearing.yaml").read_text() + "---\n" + (
+        SPECS / "cone-on-plane.yaml").read_text()
+    path = spec_file(text)
+    run = cli("sweep", path, "--vary", "half_angle=10deg:20deg:3")
+    assert run.code == 2 and "pick one as" in run.err and "#1 .. #2" in run.err
+    run = cli("sweep", f"{path}#2", "--vary", "half_angle=10deg:20deg:3", "-f", "csv")
+    assert run.code == 0 and len(csv_rows(run.out)) == 3
+    run = cli("tolerance", f"{path}#3")
+    assert run.code == 2 and "has 2 documents, not 3" in run.err
