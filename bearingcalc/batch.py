@@ -12,7 +12,7 @@ import os
 from collections.abc import Callable, Iterable, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
-from multiprocessing import get_context
+from multiprocessing import get_all_start_methods, get_context
 from pathlib import Path
 
 from bearingcalc.errors import SpecError
@@ -121,7 +121,8 @@ def check_files(files: Sequence[Path], jobs: int = 1,
                 progress(len(chunk))
         return records
     chunk_size = max(50, min(500, len(files) // (jobs * 4)))
-    context = get_context("fork") if "fork" in _start_methods() else None
+    # fork shares the loaded modules with the workers: no second start-up per worker.
+    context = get_context("fork") if "fork" in get_all_start_methods() else None
     with ProcessPoolExecutor(max_workers=jobs, mp_context=context) as pool:
         chunks = list(_chunks(files, chunk_size))
         for chunk, result in zip(chunks, pool.map(check_chunk, chunks), strict=True):
@@ -170,8 +171,3 @@ def _chunks(items: Sequence[Path], size: int) -> Iterable[Sequence[Path]]:
     for start in range(0, len(items), size):
         yield items[start:start + size]
 
-
-def _start_methods() -> list[str]:
-    import multiprocessing
-
-    return multiprocessing.get_all_start_methods()
