@@ -44,6 +44,17 @@ class Kind:
         """
         return self.solver.evaluate(inputs, wanted)  # type: ignore[no-any-return]
 
+    def limit_values(self, inputs: Mapping[str, Any]) -> dict[str, float]:
+        """Result key -> its symmetric limit, read from the solver ``inputs``."""
+        return {key: float(inputs[limit]) for key, limit in self.limits.items()}
+
+    def within_limits(self, results: Mapping[str, NDArray], status: NDArray) -> NDArray:
+        """Where a design is possible (status 0) and every margin is >= 0."""
+        ok = status == 0
+        for margin in self.margins:
+            ok = ok & (results[margin] >= 0)
+        return ok
+
     @property
     def results(self) -> dict[str, tuple[str, str]]:
         """Result key -> (SI unit, meaning), in report order."""

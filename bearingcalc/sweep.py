@@ -62,10 +62,7 @@ class Sweep:
     @property
     def within_limits(self) -> NDArray:
         """Feasible points whose margins are all >= 0."""
-        ok = self.status == 0
-        for margin in self.kind.margins:
-            ok &= self.results[margin] >= 0
-        return ok
+        return self.kind.within_limits(self.results, self.status)
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -148,8 +145,7 @@ def run_sweep(kind: Kind, spec: SpecModel, source: str, axes: list[Axis]) -> Swe
     shape = (points,)
     solved = {key: np.where(feasible, np.broadcast_to(value, shape), np.nan)
               for key, value in results.items()}
-    limits_input = spec.solver_inputs()  # type: ignore[attr-defined]
-    limits = {key: float(limits_input[limit]) for key, limit in kind.limits.items()}
+    limits = kind.limit_values(spec.solver_inputs())  # type: ignore[attr-defined]
     name = getattr(spec, "name", None) or source
     return Sweep(kind, source, name, axes, inputs, solved,
                  np.broadcast_to(status, shape).copy(), limits)

@@ -110,8 +110,7 @@ class Study:
     @property
     def limit_values(self) -> dict[str, float]:
         """Result key -> its symmetric limit value from the spec."""
-        inputs = self.spec.solver_inputs()  # type: ignore[attr-defined]
-        return {key: float(inputs[limit]) for key, limit in self.kind.limits.items()}
+        return self.kind.limit_values(self.spec.solver_inputs())  # type: ignore[attr-defined]
 
     def evaluate(self, columns: NDArray, keys: Sequence[str] | None = None
                  ) -> tuple[dict[str, NDArray], NDArray]:
@@ -283,9 +282,7 @@ class Study:
             while start < stop:
                 count = min(chunk, stop - start)
                 results, status = self.evaluate(self._shape(stream.next(count)), keys)
-                ok = status == 0
-                for margin in self.kind.margins:
-                    ok &= results[margin] >= 0
+                ok = self.kind.within_limits(results, status)
                 for key in keys:
                     accumulators[key].add(results[key])
                 passed += int(ok.sum())
