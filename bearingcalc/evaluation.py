@@ -20,7 +20,7 @@ from pydantic import BaseModel, ValidationError
 
 from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind
-from bearingcalc.spec.fields import SpecModel
+from bearingcalc.spec.fields import SpecModel, nested_model
 from bearingcalc.spec.yaml_loader import Document, load_documents
 
 
@@ -216,10 +216,7 @@ def _model_at(model: type[BaseModel], loc: tuple[str, ...]) -> type[BaseModel] |
     for part in loc:
         if current is None or part not in current.model_fields:
             return None
-        annotation = current.model_fields[part].annotation
-        candidates = [annotation, *getattr(annotation, "__args__", ())]
-        current = next((c for c in candidates
-                        if isinstance(c, type) and issubclass(c, BaseModel)), None)
+        current = nested_model(current.model_fields[part])
     return current
 
 

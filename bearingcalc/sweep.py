@@ -17,7 +17,7 @@ from pydantic import BaseModel
 
 from bearingcalc.errors import BearingcalcError
 from bearingcalc.kinds import Kind
-from bearingcalc.spec.fields import SpecModel, field_parser
+from bearingcalc.spec.fields import SpecModel, field_parser, nested_model
 from bearingcalc.variation import evaluate_with, field_value
 
 MAX_POINTS = 4_000_000
@@ -121,8 +121,7 @@ def _parser_at(model: type[BaseModel], path: str) -> tuple[str, Any, str]:
             if parser is None:
                 raise SweepError(f"--vary {path}: {path} is not a number that can be swept")
             return parser
-        nested = next((c for c in (info.annotation, *getattr(info.annotation, "__args__", ()))
-                       if isinstance(c, type) and issubclass(c, BaseModel)), None)
+        nested = nested_model(info)
         if nested is None:
             raise SweepError(f"--vary {path}: {'.'.join(parts[:i + 1])} has no fields")
         current = nested

@@ -243,6 +243,13 @@ Ratio = Annotated[float, BeforeValidator(_plain_number),
                   WithJsonSchema({"type": "number", "minimum": 0})]
 
 
+def nested_model(info: FieldInfo) -> type[BaseModel] | None:
+    """The spec model a field holds (``gear_a`` -> Gear), or None for a plain value."""
+    annotation = info.annotation
+    return next((c for c in (annotation, *typing.get_args(annotation))
+                 if isinstance(c, type) and issubclass(c, BaseModel)), None)
+
+
 def field_parser(info: FieldInfo) -> tuple[str, Any, str] | None:
     """How to read a value of a spec field from text, for sweeps.
 
