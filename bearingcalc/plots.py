@@ -31,17 +31,18 @@ def tolerance_histogram(report: StudyReport, key: str, path: str | Path | IO[byt
     plt = _pyplot()
     record = report.record
     si_unit = record["units"][key]
-    edges, counts = report.histograms[key]
-    occupied = np.nonzero(counts)[0]
-    first, last = occupied[0], occupied[-1] + 1
-    groups = np.array_split(np.arange(first, last), min(bins, last - first))
-    low_edges = np.array([edges[g[0]] for g in groups])
-    widths = np.array([edges[g[-1] + 1] - edges[g[0]] for g in groups])
-    totals = np.array([counts[g].sum() for g in groups])
+    from bearingcalc.tolerance import coarse_histogram
+
+    lows, highs, totals = coarse_histogram(*report.histograms[key], bins)
     scale, unit = to_display(1.0, si_unit)
     figure, axes = plt.subplots(figsize=(8, 4.5), dpi=120)
-    axes.bar(low_edges * scale, totals, width=widths * scale, align="edge",
-             color="#4c72b0", edgecolor="none", label=f"Monte Carlo, {record['samples']} samples")
+    if totals.size:
+        axes.bar(lows * scale, totals, width=(highs - lows) * scale, align="edge",
+                 color="#4c72b0", edgecolor="none",
+                 label=f"Monte Carlo, {record['samples']} samples")
+    else:
+        axes.text(0.5, 0.5, "every sample is an impossible design", ha="center",
+                  transform=axes.transAxes)
     entry = record["results"][key]
     mc = entry.get("monte_carlo") or {}
     if mc.get("std") is not None:

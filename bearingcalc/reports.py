@@ -295,21 +295,18 @@ def _spread(std: float | None, si_unit: str) -> str:
 def _terminal_histogram(console: Any, key: str, report: StudyReport, si_unit: str,
                         rows: int = 12, width: int = 40) -> None:
     """A small sideways histogram of ``key``'s Monte Carlo samples."""
-    edges, counts = report.histograms[key]
-    occupied = np.nonzero(counts)[0]
-    if occupied.size == 0:
+    from bearingcalc.tolerance import coarse_histogram
+
+    lows, highs, totals = coarse_histogram(*report.histograms[key], rows)
+    if totals.size == 0:
         return
-    first, last = occupied[0], occupied[-1] + 1
-    groups = np.array_split(np.arange(first, last), min(rows, last - first))
     unit = to_display(0.0, si_unit)[1]
     console.print(f"\n{key}{f' [{unit}]' if unit else ''}, Monte Carlo histogram:")
-    totals = [int(counts[g].sum()) for g in groups]
-    peak = max(totals) or 1
-    for group, total in zip(groups, totals, strict=True):
-        low = to_display(edges[group[0]], si_unit)[0]
-        high = to_display(edges[group[-1] + 1], si_unit)[0]
+    peak = int(totals.max()) or 1
+    for low, high, total in zip(lows, highs, totals.tolist(), strict=True):
         bar = "█" * round(width * total / peak)
-        console.print(f"{format_number(low):>12} … {format_number(high):<12} {bar} {total}")
+        console.print(f"{format_number(to_display(low, si_unit)[0]):>12} … "
+                      f"{format_number(to_display(high, si_unit)[0]):<12} {bar} {total}")
 
 
 SWEEP_CSV_ROWS = 50_000

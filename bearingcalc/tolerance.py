@@ -550,6 +550,21 @@ class _Accumulator:
         return edges, self.counts[1:-1].copy()
 
 
+def coarse_histogram(edges: NDArray, counts: NDArray, bins: int
+                     ) -> tuple[NDArray, NDArray, NDArray]:
+    """(low edges, high edges, counts) of at most ``bins`` bars merging the fine bins
+    between the first and last occupied one; empty when nothing was counted."""
+    occupied = np.flatnonzero(counts)
+    if occupied.size == 0:
+        return np.empty(0), np.empty(0), np.empty(0, dtype=np.int64)
+    first, last = occupied[0], occupied[-1] + 1
+    groups = np.array_split(np.arange(first, last), min(bins, last - first))
+    lows = np.array([edges[g[0]] for g in groups])
+    highs = np.array([edges[g[-1] + 1] for g in groups])
+    totals = np.array([counts[g].sum() for g in groups], dtype=np.int64)
+    return lows, highs, totals
+
+
 @dataclass
 class StudyReport:
     """Everything a tolerance run found: the contract's JSON object and the histograms."""

@@ -318,3 +318,13 @@ def test_sobol_gives_no_numbers_where_designs_are_impossible_or_results_constant
     feasible = study_of(spec_file, TB).sobol(1 << 12, keys=["spin_to_roll", "shaft_speed"])
     assert feasible["shaft_speed"] == "does not vary with the tolerances"
     assert abs(sum(feasible["spin_to_roll"]["first_order"].values()) - 1) < 0.05
+
+
+def test_a_study_where_every_sample_is_impossible_still_reports_and_plots(cli, spec_file,
+                                                                          tmp_path):
+    path = tmp_path / "hist.png"
+    run = cli("tolerance", spec_file(TB.replace("30 deg ± 0.25 deg", "50 deg ± 1 deg")),
+              "-n", "2048", "--plot", path)
+    assert run.code == 1, run.err
+    assert "2048 impossible designs" in run.out and "FAIL" in run.out
+    assert path.read_bytes().startswith(b"\x89PNG")
