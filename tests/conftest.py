@@ -1,5 +1,6 @@
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
@@ -23,6 +24,13 @@ class Run:
         self.out = result.stdout
         self.err = result.stderr
         self.exception = result.exception
+
+
+def solve_json(cli, path) -> list[dict]:
+    """The JSON records of `bearingcalc solve PATH --format json` (exit 0 or 1)."""
+    run = cli("solve", path, "--format", "json")
+    assert run.code in (0, 1), run.err
+    return [json.loads(line) for line in run.out.splitlines()]
 
 
 @pytest.fixture

@@ -2,14 +2,13 @@
 
 from __future__ import annotations
 
-import json
 import math
 
 import pytest
 from numpy.testing import assert_allclose
 
 from bearingcalc.kinds import KINDS
-from tests.conftest import ROOT
+from tests.conftest import ROOT, solve_json
 from tests.independent import bevel_pair_3d
 
 CONTRACT_KEYS = {
@@ -46,10 +45,8 @@ arm_speed: 120 rpm
 
 
 def solve_one(cli, path):
-    run = cli("solve", path, "--format", "json")
-    assert run.code in (0, 1), run.err
-    (line,) = run.out.splitlines()
-    return json.loads(line)
+    (record,) = solve_json(cli, path)
+    return record
 
 
 def test_every_kind_has_an_example_spec_and_complete_result_metadata():

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from tests.conftest import ROOT
+from tests.conftest import ROOT, solve_json
 from tests.independent import thrust_bearing_3d
 
 THRUST_RESULT_KEYS = [
@@ -31,12 +31,6 @@ contact_angle: 30 deg
 pitch_radius: 26 mm
 shaft_speed: 1500 rpm
 """
-
-
-def solve_json(cli, path):
-    run = cli("solve", path, "--format", "json")
-    assert run.code in (0, 1), run.err
-    return [json.loads(line) for line in run.out.splitlines()]
 
 
 @pytest.mark.parametrize("spec", EXAMPLE_SPECS, ids=lambda p: p.name)
