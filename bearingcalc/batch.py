@@ -140,6 +140,9 @@ def check_chunk(files: Sequence[Path]) -> list[list[CheckRecord]]:
             loaded.append(load_documents(path))
         except SpecError as error:
             loaded.append(_invalid(str(path), str(error)))
+        except Exception as exc:  # one file's surprise never stops the batch
+            loaded.append(_invalid(str(path), f"{path}: internal error ({type(exc).__name__}); "
+                                   "please report it with this file"))
     documents = [doc for item in loaded if isinstance(item, list) for doc in item]
     outcomes = iter(evaluate_documents(documents))
     return [[item] if isinstance(item, CheckRecord) else [to_record(next(outcomes)) for _ in item]
@@ -149,7 +152,7 @@ def check_chunk(files: Sequence[Path]) -> list[list[CheckRecord]]:
 def to_record(outcome: Evaluation | SpecError) -> CheckRecord:
     """The check verdict of one evaluation or error."""
     if isinstance(outcome, SpecError):
-        return _invalid(outcome.source, str(outcome))
+        return CheckRecord(outcome.source, None, None, INVALID, outcome.lines())
     status = PASS if outcome.within_limits else FAIL
     return CheckRecord(outcome.source, outcome.kind, outcome.name, status,
                        [*outcome.violations, *outcome.warnings], dict(outcome.margins))

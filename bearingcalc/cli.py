@@ -370,7 +370,16 @@ def _emit(write: Callable[[TextIO], None], output: Path | None) -> None:
 
 
 def _print_error(error: Exception) -> None:
-    print(f"error: {error}" if not isinstance(error, SpecError) else str(error), file=sys.stderr)
+    lines = error.lines() if isinstance(error, SpecError) else [f"error: {error}"]
+    print("\n".join(_printable(line) for line in lines), file=sys.stderr)
+
+
+def _printable(text: str) -> str:
+    """``text`` with control characters shown as escapes, so a value from a spec cannot
+    move the cursor, colour the terminal or start a line of its own."""
+    from bearingcalc.reports import printable
+
+    return printable(text)
 
 
 class _errors_as_exit:

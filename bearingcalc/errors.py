@@ -20,6 +20,12 @@ class SpecError(BearingcalcError):
         self.source = source
         self.line = line
         self.field = field
+        #: Further problems of the same spec, each a line of its own.
+        self.more: list[SpecError] = []
+
+    def lines(self) -> list[str]:
+        """Every problem, one line each: this one first, then ``more``."""
+        return [str(self), *(str(other) for other in self.more)]
 
     def __str__(self) -> str:
         where = self.source if self.line is None else f"{self.source}:{self.line}"

@@ -79,26 +79,49 @@ def evaluate_documents(documents: Sequence[Document]) -> list[Evaluation | SpecE
     for index, document in enumerate(documents):
         try:
             kind, spec = parse_document(document)
+            inputs = spec.solver_inputs()  # type: ignore[attr-defined]
         except SpecError as error:
             outcomes[index] = error
             continue
-        inputs = spec.solver_inputs()  # type: ignore[attr-defined]
+        except Exception as exc:  # one spec's surprise never costs the others their report
+            outcomes[index] = _internal_error(document, exc)
+            continue
         absent = tuple(key for key, value in inputs.items() if value is None)
         groups.setdefault((kind.name, absent), []).append((index, spec, inputs))
     for (kind_name, _), members in groups.items():
         kind = KINDS[kind_name]
-        stacked = {key: None if value is None else np.array([m[2][key] for m in members])
-                   for key, value in members[0][2].items()}
-        raw, status = kind.evaluate(stacked)
-        columns = {key: values.tolist() for key, values in raw.items()}
-        codes = status.tolist()
-        for row, (index, spec, _) in enumerate(members):
-            values = {key: column[row] for key, column in columns.items()}
-            try:
-                outcomes[index] = _judge(documents[index], kind, spec, values, codes[row])
-            except SpecError as error:
-                outcomes[index] = error
+        try:
+            _solve_group(documents, kind, members, outcomes)
+        except Exception:
+            # Solve them one by one, so only the spec at fault is refused.
+            for member in members:
+                try:
+                    _solve_group(documents, kind, [member], outcomes)
+                except Exception as exc:
+                    outcomes[member[0]] = _internal_error(documents[member[0]], exc)
     return outcomes  # type: ignore[return-value]
+
+
+def _solve_group(documents: Sequence[Document], kind: Kind,
+                 members: list[tuple[int, SpecModel, dict[str, Any]]],
+                 outcomes: list[Evaluation | SpecError | None]) -> None:
+    """Solve specs of one kind with the same inputs given in one vectorised call."""
+    stacked = {key: None if value is None else np.array([m[2][key] for m in members])
+               for key, value in members[0][2].items()}
+    raw, status = kind.evaluate(stacked)
+    columns = {key: values.tolist() for key, values in raw.items()}
+    codes = status.tolist()
+    for row, (index, spec, _) in enumerate(members):
+        values = {key: column[row] for key, column in columns.items()}
+        try:
+            outcomes[index] = _judge(documents[index], kind, spec, values, codes[row])
+        except SpecError as error:
+            outcomes[index] = error
+
+
+def _internal_error(document: Document, exc: Exception) -> SpecError:
+    return document.error(f"internal error ({type(exc).__name__}: {str(exc)[:200]}); "
+                          "please report it with this spec")
 
 
 def evaluate_document(document: Document) -> Evaluation:
@@ -185,10 +208,18 @@ def _did_you_mean(word: str, choices: Any) -> str:
 
 
 def _spec_error(document: Document, model: type[SpecModel], exc: ValidationError) -> SpecError:
-    """The first problem of a ValidationError as one actionable line."""
+    """Every problem of a ValidationError, each as one actionable line, in line order.
+
+    The first is the error raised; the others are in its ``more``.
+    """
     problems = sorted(exc.errors(include_url=False),
                       key=lambda e: document.line_of(tuple(str(p) for p in e["loc"])))
-    error = problems[0]
+    errors = [_one_problem(document, model, problem) for problem in problems]
+    errors[0].more = errors[1:]
+    return errors[0]
+
+
+def _one_problem(document: Document, model: type[SpecModel], error: Any) -> SpecError:
     loc = tuple(str(part) for part in error["loc"])
     dotted = ".".join(loc)
     kind, message = error["type"], str(error["msg"])

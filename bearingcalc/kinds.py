@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from types import ModuleType
 from typing import Any
 
+import numpy as np
 from numpy.typing import NDArray
 
 from bearingcalc.core import bevel_gears, cone_on_plane, disk_on_circle, thrust_bearing
@@ -20,6 +21,11 @@ from bearingcalc.spec.cone_on_plane import ConeOnPlaneSpec
 from bearingcalc.spec.disk_on_circle import DiskOnCircleSpec
 from bearingcalc.spec.fields import SpecModel
 from bearingcalc.spec.thrust_bearing import ThrustBearingSpec
+
+#: Status of a design whose inputs are valid but whose results overflow double precision.
+OUT_OF_RANGE = 99
+OUT_OF_RANGE_REASON = ("", "the design's numbers are out of the range of double precision; "
+                       "check the magnitudes of the inputs")
 
 
 @dataclass(frozen=True)
@@ -34,15 +40,27 @@ class Kind:
     governing: tuple[str, ...]  # results a study shows first
     #: result key -> the solver input that limits it symmetrically: |result| <= limit
     limits: dict[str, str] = field(default_factory=dict)
+    #: results that may legitimately be +inf (an edge that no design reaches)
+    unbounded: tuple[str, ...] = ()
 
     def evaluate(self, inputs: Mapping[str, Any], wanted: Collection[str] | None = None
                  ) -> tuple[dict[str, NDArray], NDArray]:
         """Results and status codes (0 = feasible) of the solver on SI ``inputs``.
 
         ``wanted`` names the results the caller needs; a solver may compute only
-        those (and the margins), or everything.
+        those (and the margins), or everything. A design the solver calls feasible
+        but whose numbers are not finite (an overflow) gets ``OUT_OF_RANGE``, so no
+        command ever prints or judges a non-finite number as a design's result.
         """
-        return self.solver.evaluate(inputs, wanted)  # type: ignore[no-any-return]
+        with np.errstate(all="ignore"):
+            results, status = self.solver.evaluate(inputs, wanted)
+            for key, values in results.items():
+                finite = np.isfinite(values)
+                if key in self.unbounded:
+                    finite |= values == np.inf
+                if not finite.all():
+                    status = np.where(finite | (status != 0), status, np.int8(OUT_OF_RANGE))
+        return results, status
 
     def limit_values(self, inputs: Mapping[str, Any]) -> dict[str, float]:
         """Result key -> its symmetric limit, read from the solver ``inputs``."""
@@ -62,7 +80,7 @@ class Kind:
 
     @property
     def status_reasons(self) -> dict[int, tuple[str, str]]:
-        return self.solver.STATUS_REASONS  # type: ignore[no-any-return]
+        return {**self.solver.STATUS_REASONS, OUT_OF_RANGE: OUT_OF_RANGE_REASON}
 
 
 KINDS: dict[str, Kind] = {
@@ -71,7 +89,8 @@ KINDS: dict[str, Kind] = {
         Kind("thrust-bearing", "balls between a fixed race and a turning shaft",
              ThrustBearingSpec, thrust_bearing, margins=("slip_margin",),
              governing=("slip_margin", "spin_to_roll"),
-             limits={"spin_to_roll": "max_spin_to_roll"}),
+             limits={"spin_to_roll": "max_spin_to_roll"},
+             unbounded=("pitch_radius_max",)),
         Kind("disk-on-circle", "a disk rolling on a fixed or turning circle, outside or inside",
              DiskOnCircleSpec, disk_on_circle, margins=(),
              governing=("contact_point_accel", "center_speed")),

@@ -8,6 +8,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import re
 from collections.abc import Iterable, Sequence
 from typing import IO, TYPE_CHECKING, Any
 
@@ -21,6 +22,40 @@ if TYPE_CHECKING:  # the report types only; their modules load with their comman
     from bearingcalc.evaluation import Evaluation
     from bearingcalc.sweep import Sweep
     from bearingcalc.tolerance import StudyReport
+
+
+_CONTROL = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029]")
+#: Width of tables when the output is not a terminal (a pipe, a CI log, a file): wide
+#: enough that a row stays one line, instead of rich's 80 columns.
+PIPE_WIDTH = 200
+
+
+def printable(text: str) -> str:
+    """``text`` with control characters written as escapes (``\\x1b``, ``\\n``).
+
+    Names, file names and values come from specs and must not move the cursor,
+    colour the terminal, start a fake line of their own or break XML.
+    """
+    return _CONTROL.sub(lambda m: repr(m.group())[1:-1], text)
+
+
+def console(stream: IO[str] | None = None) -> Any:
+    """A rich console on ``stream`` (default stdout): the terminal's width on a terminal,
+    ``PIPE_WIDTH`` columns elsewhere."""
+    import sys
+
+    from rich.console import Console
+
+    target = stream if stream is not None else sys.stdout
+    is_terminal = getattr(target, "isatty", lambda: False)()
+    return Console(file=stream, highlight=False, width=None if is_terminal else PIPE_WIDTH)
+
+
+def _text(text: str) -> str:
+    """Spec-supplied text made safe for a rich table: no control characters, no markup."""
+    from rich.markup import escape
+
+    return escape(printable(text))
 
 
 def evaluation_record(evaluation: Evaluation) -> dict[str, Any]:
@@ -68,12 +103,11 @@ def print_tables(evaluations: Iterable[Evaluation], descriptions: dict[str, dict
     ``descriptions`` maps kind -> result key -> meaning. The verdict is written
     in words, so the table reads the same without colour.
     """
-    from rich.console import Console
     from rich.table import Table
 
-    console = Console(file=stream, highlight=False)
+    out = console(stream)
     for evaluation in evaluations:
-        table = Table(title=f"{evaluation.name}  ({evaluation.kind}, {evaluation.source})",
+        table = Table(title=_text(f"{evaluation.name}  ({evaluation.kind}, {evaluation.source})"),
                       title_justify="left")
         table.add_column("result")
         table.add_column("value", justify="right")
@@ -88,16 +122,16 @@ def print_tables(evaluations: Iterable[Evaluation], descriptions: dict[str, dict
                 shown = format_number(number)
             style = "bold" if key in evaluation.margins else None
             table.add_row(key, shown, unit, meanings.get(key, ""), style=style)
-        console.print(table)
+        out.print(table)
         if not evaluation.margins:
-            console.print("[bold green]PASS[/]: no limits apply to this kind")
+            out.print("[bold green]PASS[/]: no limits apply to this kind")
         elif evaluation.within_limits:
-            console.print("[bold green]PASS[/]: within limits")
+            out.print("[bold green]PASS[/]: within limits")
         else:
-            console.print(f"[bold red]FAIL[/]: {'; '.join(evaluation.violations)}")
+            out.print(f"[bold red]FAIL[/]: {_text('; '.join(evaluation.violations))}")
         for warning in evaluation.warnings:
-            console.print(f"[yellow]warning[/]: {warning}")
-        console.print()
+            out.print(f"[yellow]warning[/]: {_text(warning)}")
+        out.print()
 
 
 def format_number(value: float) -> str:
@@ -132,13 +166,14 @@ def write_junit(records: Sequence[CheckRecord], stream: IO[str]) -> None:
                                    errors=str(errors), skipped="0")
     for record in records:
         case = ElementTree.SubElement(suite, "testcase", classname=record.kind or "spec",
-                                      name=record.spec, file=record.spec.split("#")[0])
-        text = "\n".join(record.messages)
+                                      name=printable(record.spec),
+                                      file=printable(record.spec.split("#")[0]))
+        text = "\n".join(printable(message) for message in record.messages)
         if record.status == "fail":
-            ElementTree.SubElement(case, "failure", message=_first(record.messages),
+            ElementTree.SubElement(case, "failure", message=printable(_first(record.messages)),
                                    type="limit").text = text
         elif record.status == "invalid":
-            ElementTree.SubElement(case, "error", message=_first(record.messages),
+            ElementTree.SubElement(case, "error", message=printable(_first(record.messages)),
                                    type="invalid").text = text
     ElementTree.indent(suites)
     stream.write('<?xml version="1.0" encoding="UTF-8"?>\n')
@@ -149,16 +184,14 @@ def print_check_table(records: Sequence[CheckRecord], *, show_all: bool,
                       stream: IO[str] | None = None, many: int = 50) -> None:
     """One row per spec (only fail/invalid rows past ``many`` specs unless ``show_all``),
     then a summary line with the counts."""
-    from rich.console import Console
-    from rich.markup import escape
     from rich.table import Table
 
-    console = Console(file=stream, highlight=False)
+    out = console(stream)
     shown = records if show_all or len(records) <= many else [
         r for r in records if r.status != "pass"]
     if shown:
         table = Table(show_edge=False)
-        for column in ("status", "name", "kind", "governing margin / problem"):
+        for column in ("status", "file", "name", "kind", "governing margin / problem"):
             table.add_column(column, overflow="fold")
         colours = {"pass": "green", "fail": "red", "invalid": "magenta"}
         for record in shown:
@@ -170,16 +203,26 @@ def print_check_table(records: Sequence[CheckRecord], *, show_all: bool,
             else:
                 detail = f"{governing[0]} = {format_number(governing[1])}"
             table.add_row(f"[{colours[record.status]}]{record.status.upper()}[/]",
-                          escape(record.name or record.spec), record.kind or "",
-                          escape(detail))
-        console.print(table)
+                          _text(record.spec), _text(record.name or ""), record.kind or "",
+                          _text(_without_source(detail, record.spec)))
+        out.print(table)
     counts = {status: sum(r.status == status for r in records)
               for status in ("pass", "fail", "invalid")}
     hidden = len(records) - len(shown)
     note = f" ({hidden} passing not shown; --all shows them)" if hidden else ""
-    console.print(f"{len(records)} specs: [green]{counts['pass']} pass[/], "
+    out.print(f"{plural(len(records), 'spec')}: [green]{counts['pass']} pass[/], "
                   f"[red]{counts['fail']} fail[/], "
                   f"[magenta]{counts['invalid']} invalid[/]{note}")
+
+
+def plural(count: int, noun: str) -> str:
+    """'1 spec', '2 specs'."""
+    return f"{count} {noun}" if count == 1 else f"{count} {noun}s"
+
+
+def _without_source(message: str, source: str) -> str:
+    """A problem without its leading 'file:' (the file column says it), keeping ':line:'."""
+    return message[len(source):].lstrip(":") if message.startswith(source + ":") else message
 
 
 def _first(messages: Sequence[str]) -> str:
@@ -190,15 +233,14 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
     """Worst case, RSS and Monte Carlo side by side (engineering units), the contribution
     table of the governing result, the yield and verdict, and a terminal histogram."""
     from rich import box
-    from rich.console import Console
     from rich.markup import escape
     from rich.table import Table
 
     record = report.record
-    console = Console(file=stream, highlight=False)
+    out = console(stream)
     units = record["units"]
-    console.print(f"[bold]{record['name'] or record['spec']}[/] ({record['kind']}, "
-                  f"{record['spec']})")
+    out.print(f"[bold]{_text(record['name'] or record['spec'])}[/] ({record['kind']}, "
+              f"{_text(record['spec'])})")
 
     inputs = Table(title="toleranced inputs", title_justify="left")
     for column in ("input", "nominal", "low", "high", "unit", "distribution", "σ"):
@@ -208,7 +250,7 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
         shown = [to_display(entry[k], units[name]) for k in ("nominal", "low", "high", "std")]
         inputs.add_row(name, *(format_number(v) for v, _ in shown[:3]), shown[0][1],
                        entry["distribution"], format_number(shown[3][0]))
-    console.print(inputs)
+    out.print(inputs)
 
     table = Table(title="results: worst case, RSS and Monte Carlo side by side",
                   title_justify="left", box=box.SIMPLE_HEAD, pad_edge=False)
@@ -232,7 +274,7 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
                       cell(wc.get("min"), wc.get("max")), cell(rss.get("mean"), rss.get("std")),
                       cell(mc.get("mean"), mc.get("std")),
                       cell(mc.get("p00135"), mc.get("p99865")))
-    console.print(table)
+    out.print(table)
 
     others = [key for key in results if key not in report.governing]
     if others and _ran(results, "worst_case"):
@@ -247,7 +289,7 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
                      for v in (results[key]["nominal"], wc.get("min"), wc.get("max"))]
             rest.add_row(key, to_display(0.0, units[key])[1],
                          *("" if v is None else format_number(v) for v, _ in shown))
-        console.print(rest)
+        out.print(rest)
 
     lead = report.governing[0] if report.governing else None
     rss_lead = (results.get(lead) or {}).get("rss") if lead else None
@@ -260,28 +302,28 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
             effect = rss_lead["sensitivities"][name] * record["inputs"][name]["std"]
             shares.add_row(name, f"{100 * share:.2f} %", format_number(
                 to_display(effect, units[lead])[0]))
-        console.print(shares)
+        out.print(shares)
 
     if record["yield"] is not None:
         cpk = "n/a" if record["cpk"] is None else f"{record['cpk']:.3f}"
-        console.print(f"Monte Carlo: {record['samples']} samples ({record['sampler']}, seed "
+        out.print(f"Monte Carlo: {record['samples']} samples ({record['sampler']}, seed "
                       f"{record['seed']}): yield {100 * record['yield']:.4f} %, "
                       f"{record['ppm_out']:.1f} ppm out of spec, Cpk {cpk}, "
                       f"{record['infeasible_samples']} impossible designs")
     verdict = report.within_limits
     if verdict is True:
-        console.print("[bold green]PASS[/]: every margin stays within its limit"
+        out.print("[bold green]PASS[/]: every margin stays within its limit"
                       + (" at worst case" if _ran(results, "worst_case") else ""))
     elif verdict is False:
         reached = [f"{m} reaches {format_number(results[m]['worst_case']['min'])}"
                    for m in report.margins if (results[m].get("worst_case") or {}).get("min")
                    is not None and results[m]["worst_case"]["min"] < 0]
-        console.print("[bold red]FAIL[/]: the tolerances can take a margin past its limit"
+        out.print("[bold red]FAIL[/]: the tolerances can take a margin past its limit"
                       + (f" ({'; '.join(reached)} at worst case)" if reached else ""))
     for warning in record["warnings"]:
-        console.print(f"[yellow]warning[/]: {warning}")
+        out.print(f"[yellow]warning[/]: {_text(warning)}")
     if lead and lead in report.histograms:
-        _terminal_histogram(console, lead, report, units[lead])
+        _terminal_histogram(out, lead, report, units[lead])
 
 
 def _ran(results: dict[str, Any], method: str) -> bool:
@@ -387,11 +429,10 @@ def print_sweep_table(sweep: Sweep, keys: Sequence[str], stream: IO[str] | None 
                       grid_rows: int = 12, grid_columns: int = 8) -> None:
     """All points of a line with the chosen results; for a grid, the first chosen result
     on a compact grid (every n-th value of each axis)."""
-    from rich.console import Console
     from rich.markup import escape
     from rich.table import Table
 
-    console = Console(file=stream, highlight=False)
+    out = console(stream)
     units = sweep.units
 
     def shown(value: float, si_unit: str, digits: int = 7) -> str:
@@ -403,10 +444,10 @@ def print_sweep_table(sweep: Sweep, keys: Sequence[str], stream: IO[str] | None 
         unit = to_display(0.0, si_unit)[1]
         return escape(f"{name} [{unit}]") if unit else name
 
-    title = f"{sweep.name} ({sweep.kind.name}, {sweep.source})"
+    title = printable(f"{sweep.name} ({sweep.kind.name}, {sweep.source})")
     if len(sweep.axes) == 1:
         axis = sweep.axes[0]
-        table = Table(title=title, title_justify="left")
+        table = Table(title=escape(title), title_justify="left")
         for header in (label(axis.name, axis.unit), *(label(k, units[k]) for k in keys)):
             table.add_column(header, justify="right")
         table.add_column("impossible because")
@@ -415,7 +456,7 @@ def print_sweep_table(sweep: Sweep, keys: Sequence[str], stream: IO[str] | None 
             table.add_row(shown(value, axis.unit),
                           *(shown(sweep.results[k][i], units[k]) for k in keys),
                           sweep.reason(code) if code else "")
-        console.print(table)
+        out.print(table)
         return
     first, second = sweep.axes
     key = keys[0]
@@ -431,7 +472,7 @@ def print_sweep_table(sweep: Sweep, keys: Sequence[str], stream: IO[str] | None 
     for i in rows:
         table.add_row(shown(first.values[i], first.unit, 4),
                       *(shown(values[i, j], units[key], 4) for j in cols))
-    console.print(table)
+    out.print(table)
     if len(rows) < len(first.values) or len(cols) < len(second.values):
-        console.print(f"(every point of the {len(first.values)} × {len(second.values)} grid is "
+        out.print(f"(every point of the {len(first.values)} × {len(second.values)} grid is "
                       "in --format csv or json)")

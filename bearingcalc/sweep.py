@@ -57,7 +57,7 @@ class Sweep:
     def reason(self, code: int) -> str:
         """The words for a status code: 'field: why'."""
         field, why = self.kind.status_reasons[code]
-        return f"{field}: {why}"
+        return f"{field}: {why}" if field else why
 
     @property
     def within_limits(self) -> NDArray:

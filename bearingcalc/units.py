@@ -94,55 +94,97 @@ DISPLAY_UNITS: dict[str, tuple[str, float]] = {
     "1": ("", 1.0),
 }
 
+#: A number in plain ASCII digits (full-width digits and the like are refused, as the
+#: JSON Schema refuses them), then the unit text.
 _QUANTITY = re.compile(
-    r"^\s*(?P<number>[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(?P<unit>\S.*?)?\s*$")
+    r"^\s*(?P<number>[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*(?P<unit>\S.*?)?\s*$",
+    re.ASCII)
+#: A unit is words (with optional small whole exponents) joined by *, / or spaces;
+#: anything else (brackets, stray operators, punctuation) is refused before pint sees it.
+_UNIT_WORD = r"(?:[A-Za-z_°µμ%Ω]+(?:\s*(?:\^|\*\*)\s*[-+]?[1-9][0-9]?|[²³])?)"
+_UNIT = re.compile(rf"^{_UNIT_WORD}(?:\s*[*/·]\s*{_UNIT_WORD}|\s+{_UNIT_WORD})*$")
+#: Longest quantity text handed on: longer ones are typos or attacks, and pint's parser
+#: is super-linear in the length.
+MAX_QUANTITY_CHARS = 80
+#: Largest magnitude of any quantity in SI units. Nothing in machine design comes near;
+#: beyond it tables in engineering units and the solvers' products would overflow.
+MAX_MAGNITUDE = 1e15
+
+
+def article(word: str) -> str:
+    """'a length', 'an angle'."""
+    return f"an {word}" if word[:1].lower() in "aeiou" else f"a {word}"
 
 
 def parse_quantity(text: Any, dimension: Dimension) -> float:
     """Read ``"12.7 mm"`` as a value of ``dimension`` and return it in SI units.
 
+    The whole text must parse: a number in ASCII digits, then a unit made of unit
+    words, small whole exponents and the operators * and /. Anything else is refused.
+
     Raises
     ------
-    UnitError : bare number, unknown unit, wrong dimension, or a value that is
-        not a finite number; the message says how to write the quantity.
+    UnitError : bare number, unknown unit, wrong dimension, trailing junk, or a value
+        that is not a finite number within ±MAX_MAGNITUDE; the message says how to
+        write the quantity.
     """
+    what = article(dimension.name)
     if isinstance(text, bool) or not isinstance(text, (str, int, float)):
-        raise UnitError(f"expected a {dimension.name} with a unit, like '{dimension.example}'")
+        raise UnitError(f"expected {what} with a unit, like '{dimension.example}'")
     if isinstance(text, (int, float)):
+        if isinstance(text, float) and not math.isfinite(text):
+            raise UnitError(f"{text} is not a finite number; give {what} like "
+                            f"'{dimension.example}'")
         unit = dimension.example.split()[1]
-        raise UnitError(f"a bare number has no unit: write it as '{text} {unit}' "
-                        f"(a {dimension.name}, like '{dimension.example}')")
+        shown = f"{text:g}" if isinstance(text, float) else _shorten(str(text))
+        raise UnitError(f"a bare number has no unit: write it as '{shown} {unit}' "
+                        f"({what}, like '{dimension.example}')")
+    if len(text) > MAX_QUANTITY_CHARS:
+        raise UnitError(f"'{_shorten(text)}' is too long for {what} (at most "
+                        f"{MAX_QUANTITY_CHARS} characters); write it like '{dimension.example}'")
     match = _QUANTITY.match(text)
     if match is None:
         if re.search(r"\b(nan|inf|infinity)\b", text, re.IGNORECASE):
-            raise UnitError(f"'{text}' is not a finite number; give a {dimension.name} like "
+            raise UnitError(f"'{text}' is not a finite number; give {what} like "
                             f"'{dimension.example}'")
-        raise UnitError(f"cannot read '{text}' as a {dimension.name}; write a number and a unit, "
+        raise UnitError(f"cannot read '{text}' as {what}; write a number and a unit, "
                         f"like '{dimension.example}'")
     number, unit = float(match["number"]), match["unit"]
     if unit is None:
         raise UnitError(f"'{text}' has no unit: write it like '{dimension.example}'")
+    if re.match(r"^,[0-9]", unit):
+        raise UnitError(f"'{text}': write the decimal point as '.', like "
+                        f"'{match['number']}.{unit[1:]}'")
+    if not _UNIT.match(unit):
+        raise UnitError(f"cannot read '{unit}' in '{text}' as a unit; write a number and a "
+                        f"unit with nothing after it, like '{dimension.example}'")
     root, factor = COMMON_UNITS.get(unit) or _pint_unit(unit)
     if root != dimension.root:
         raise UnitError(f"'{unit}' is not a unit of {dimension.name} ({_describe_root(root)}); "
                         f"write it like '{dimension.example}'")
     divisor = _DIVISORS.get(unit)
     value = number / divisor if divisor else number * factor
-    if not math.isfinite(value):
-        raise UnitError(f"'{text}' is out of range for a {dimension.name}")
+    if not (math.isfinite(value) and abs(value) <= MAX_MAGNITUDE):
+        raise UnitError(f"'{text}' is out of range for {what} (at most {MAX_MAGNITUDE:g} "
+                        f"{dimension.si_unit} in size)")
     return value
+
+
+def _shorten(text: str, keep: int = 24) -> str:
+    return text if len(text) <= 2 * keep else f"{text[:keep]}…{text[-8:]}"
 
 
 @functools.lru_cache(maxsize=256)
 def _pint_unit(unit: str) -> tuple[str, float]:
     """(root units, factor to SI) of a unit pint knows; the registry loads on first use."""
-    import pint
 
     registry = _registry()
     try:
         factor, root = registry.get_root_units(registry.parse_units(unit))
-    except (pint.errors.PintError, AttributeError, TypeError, ValueError, SyntaxError) as exc:
+    except Exception as exc:  # pint raises many types (KeyError, TokenError, ...) on junk
         raise UnitError(f"unknown unit '{unit}'") from exc
+    if not math.isfinite(float(factor)):
+        raise UnitError(f"unknown unit '{unit}'")
     return str(root), float(factor)
 
 
@@ -163,8 +205,7 @@ def make_registry() -> Any:
 def _describe_root(root: str) -> str:
     for dimension in DIMENSIONS.values():
         if dimension.root == root:
-            article = "an" if dimension.name[0] in "aeiou" else "a"
-            return f"it is {article} {dimension.name}"
+            return f"it is {article(dimension.name)}"
     if root in ("", "dimensionless"):
         return "it is dimensionless"
     if root == "1 / second":

@@ -144,7 +144,7 @@ BAD = [
      "gear_a.pitch_radius: disagrees with module × teeth / 2 = 15 mm"),
     (BEVEL + "gear_c: {teeth: 5}\n", 9, "unknown key 'gear_c'"),
     (BEVEL.replace("teeth: 12", "tooth: 12"), 3, "unknown key 'tooth' (did you mean 'teeth'?)"),
-    (BEVEL + "limits: {max_apex_mismatch: -1}\n", 9, "must be a finite number >= 0"),
+    (BEVEL + "limits: {max_apex_mismatch: -1}\n", 9, "must be a finite number from 0"),
 ]
 
 

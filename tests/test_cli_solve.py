@@ -167,7 +167,7 @@ BAD = [
     (TB.replace("26 mm", "-26 mm"), 4, "must be greater than zero"),
     (TB.replace("12.7 mm", "nan mm"), 2, "not a finite number"),
     (TB.replace("30 deg", "inf deg"), 3, "not a finite number"),
-    (TB.replace("30 deg", ".nan"), 3, "a bare number"),
+    (TB.replace("30 deg", ".nan"), 3, "nan is not a finite number; give an angle like"),
     (TB.replace("30 deg", "50 deg"), 3, "contact_angle: pure rolling needs 0 deg < θ < 45 deg, "
      "got 50 deg"),
     (TB.replace("30 deg", "0 deg"), 3, "pure rolling needs 0 deg < θ < 45 deg"),
@@ -180,8 +180,8 @@ BAD = [
      "give at least two of"),
     (TB.replace("contact_angle: 30 deg\n", "").replace("26 mm", "6 mm"), 3,
      "a pure-rolling contact angle exists only for b > r"),
-    (TB + "limits:\n  max_spin_to_roll: -0.1\n", 7, "must be a finite number >= 0"),
-    (TB + "limits:\n  max_spin_to_roll: .inf\n", 7, "must be a finite number >= 0"),
+    (TB + "limits:\n  max_spin_to_roll: -0.1\n", 7, "must be a finite number from 0"),
+    (TB + "limits:\n  max_spin_to_roll: .inf\n", 7, "must be a finite number from 0"),
     (TB + "limits: 0.1\n", 6, "must be a mapping"),
 ]
 

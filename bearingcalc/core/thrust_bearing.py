@@ -23,6 +23,8 @@ from numpy.typing import ArrayLike, NDArray
 from bearingcalc.core.common import broadcast_all, first_failure
 
 HALF_SQRT2 = np.sqrt(0.5)
+#: Relative slack of the ball-fit test, a few ulps of π.
+FIT_SLACK = 8 * np.finfo(float).eps
 
 #: Result keys, their SI unit and meaning, in report order.
 RESULTS: dict[str, tuple[str, str]] = {
@@ -224,15 +226,18 @@ def thrust_bearing_status(ball_radius: ArrayLike, contact_angle: ArrayLike,
     shape = np.broadcast_shapes(r.shape, theta.shape, b.shape,
                                 np.shape(ball_count) if ball_count is not None else ())
     with np.errstate(invalid="ignore"):
+        # θ before b: a b solved from an impossible θ is NaN, and θ is then the fault.
         checks = [
             (1, ~(r > 0)),
-            (2, ~(b > 0)),
             (3, ~((theta > 0) & (theta < np.pi / 4))),
+            (2, ~(b > 0)),
             (4, ~(b - r * np.cos(theta) > 0)),
         ]
         if ball_count is not None:
             z = np.asarray(ball_count, dtype=float)
-            fits = z * np.arcsin(np.minimum(r / b, 1.0)) <= np.pi
+            # A few ulps of slack: Z balls that fit exactly (6 at r/b = 1/2) must not be
+            # refused because asin and the product round up.
+            fits = z * np.arcsin(np.minimum(r / b, 1.0)) <= np.pi * (1.0 + FIT_SLACK)
             # A single ball always fits; two or more need b >= r.
             checks.append((5, ~(fits & ((z <= 1) | (b >= r)))))
     return first_failure(checks, shape)
@@ -281,7 +286,16 @@ def solve_thrust_bearing(ball_radius: ArrayLike | None, contact_angle: ArrayLike
     >>> round(float(out["pitch_radius"]), 5), round(float(out["spin_to_roll"]), 12)
     (2.24541, 0.0)
     """
+    solved = ball_radius is None or contact_angle is None or pitch_radius is None
     r, theta, b = complete_geometry(ball_radius, contact_angle, pitch_radius)
+    return _solve(r, theta, b, shaft_speed, ball_count, max_spin_to_roll, solved)
+
+
+def _solve(r: NDArray, theta: NDArray, b: NDArray, shaft_speed: ArrayLike,
+           ball_count: ArrayLike | None, max_spin_to_roll: ArrayLike,
+           solved: bool) -> dict[str, NDArray]:
+    """:func:`solve_thrust_bearing` on a complete geometry; ``solved`` says that one of
+    r, θ, b was solved for pure rolling, so spin is zero by construction."""
     omega_s = np.asarray(shaft_speed, dtype=float)
     rho_max = np.asarray(max_spin_to_roll, dtype=float)
     ok = _geometry_ok(r, theta, b)
@@ -300,6 +314,10 @@ def solve_thrust_bearing(ball_radius: ArrayLike | None, contact_angle: ArrayLike
     # ρ is a property of the geometry alone; computing it from K keeps it finite
     # (and exact) when the shaft is at rest and spin and roll are both zero.
     rho = spin_to_roll_ratio(r, theta, b)
+    if solved:
+        # Pure rolling by construction: the formulas would leave rounding dust of
+        # order 1e-17, which a limit of exactly 0 must not see.
+        spin, rho = spin * 0.0, rho * 0.0
     b_star = pure_rolling_pitch_radius(r, theta)
     b_min, b_max = pitch_radius_window(r, theta, rho_max)
 
@@ -364,13 +382,15 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
     if inputs["pitch_radius"] is not None and inputs["contact_angle"] is None:
         # θ came out NaN because no pure-rolling angle exists: say why.
         status = np.where((status == 3) & ~(b > r), np.int8(6), status)
+    solved = any(inputs[key] is None for key in ("ball_radius", "contact_angle", "pitch_radius"))
     if wanted is not None and set(wanted) <= _RATIO_ONLY:
         rho = np.where(status == 0, _spin_to_roll_unchecked(r, theta, b), np.nan)
+        if solved:
+            rho = rho * 0.0
         margin = np.asarray(inputs.get("max_spin_to_roll", 0.01), dtype=float) - np.abs(rho)
         return {"spin_to_roll": rho, "slip_margin": margin}, status
-    results = solve_thrust_bearing(r, theta, b, inputs["shaft_speed"],
-                                   ball_count=inputs.get("ball_count"),
-                                   max_spin_to_roll=inputs.get("max_spin_to_roll", 0.01))
+    results = _solve(r, theta, b, inputs["shaft_speed"], inputs.get("ball_count"),
+                     inputs.get("max_spin_to_roll", 0.01), solved)
     return results, status
 
 

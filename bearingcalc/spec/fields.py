@@ -17,9 +17,21 @@ from typing import Annotated, Any
 from pydantic import BaseModel, BeforeValidator, ConfigDict, PlainValidator, WithJsonSchema
 from pydantic.fields import FieldInfo
 
-from bearingcalc.units import ANGLE, ANGULAR_ACCEL, ANGULAR_SPEED, LENGTH, Dimension, parse_quantity
+from bearingcalc.units import (
+    ANGLE,
+    ANGULAR_ACCEL,
+    ANGULAR_SPEED,
+    LENGTH,
+    MAX_MAGNITUDE,
+    Dimension,
+    parse_quantity,
+)
 
-QUANTITY_PATTERN = r"^\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*[^\s\d.+-].*$"
+#: The JSON Schema's form of a quantity: an ASCII number, then a unit or a ± band
+#: ("12.7 mm", "12.7 mm ± 0.005 mm", "12.7 +/- 0.005 mm"). Units themselves are
+#: checked by ``bearingcalc check``.
+QUANTITY_PATTERN = (r"^\s*[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?\s*"
+                    r"([A-Za-z_°µμ%Ω]|(±|\+/-|\+-)\s*[0-9.]).*$")
 
 
 class SpecModel(BaseModel):
@@ -30,6 +42,9 @@ class SpecModel(BaseModel):
 
 
 DISTRIBUTIONS = ("normal", "uniform", "triangular")
+#: A normal tolerance's band is ±sigma_level·σ. Below 1 the distribution is wider than
+#: its own band (a band of ±5 µm read as σ = 500 µm is a typo, not a process).
+MIN_SIGMA_LEVEL, MAX_SIGMA_LEVEL = 1.0, 10.0
 
 
 @dataclass(frozen=True)
@@ -153,8 +168,11 @@ class _Quantity:
         if "sigma_level" in value and distribution != "normal":
             raise ValueError("sigma_level applies to the normal distribution only")
         if isinstance(sigma_level, bool) or not isinstance(sigma_level, (int, float)) or not (
-                math.isfinite(sigma_level) and sigma_level > 0):
-            raise ValueError(f"sigma_level must be a number > 0, like 3, got {sigma_level!r}")
+                MIN_SIGMA_LEVEL <= sigma_level <= MAX_SIGMA_LEVEL):
+            raise ValueError(
+                f"sigma_level must be a number from {MIN_SIGMA_LEVEL:g} to {MAX_SIGMA_LEVEL:g} "
+                f"(the band is ±sigma_level·σ; below 1 the distribution is wider than its "
+                f"band), like 3, got {sigma_level!r}")
         return Tolerance(nominal, nominal - minus, nominal + plus, distribution,
                          float(sigma_level), self.dimension.si_unit)
 
@@ -192,7 +210,8 @@ def quantity(dimension: Dimension, sign: str | None = None) -> Any:
         "properties": {
             "nominal": text_schema, "tolerance": text_schema, "plus": text_schema,
             "minus": text_schema, "distribution": {"enum": list(DISTRIBUTIONS)},
-            "sigma_level": {"type": "number", "exclusiveMinimum": 0},
+            "sigma_level": {"type": "number", "minimum": MIN_SIGMA_LEVEL,
+                            "maximum": MAX_SIGMA_LEVEL},
         },
         "required": ["nominal"],
         "additionalProperties": False,
@@ -204,32 +223,48 @@ def quantity(dimension: Dimension, sign: str | None = None) -> Any:
                      WithJsonSchema(schema)]
 
 
+#: Largest count of balls or teeth: far above any real part, and small enough that
+#: every product a solver forms stays finite.
+MAX_COUNT = 100_000
+
+
 class _Count:
-    """Validator of a whole-number field (teeth, balls) with a minimum."""
+    """Validator of a whole-number field (teeth, balls) with a minimum.
+
+    ``12.0`` counts as 12, as JSON Schema's ``integer`` type has it.
+    """
 
     def __init__(self, minimum: int, what: str) -> None:
         self.minimum = minimum
         self.what = what
 
     def __call__(self, value: Any) -> int:
+        if isinstance(value, float) and value.is_integer():
+            value = int(value)
         if isinstance(value, bool) or not isinstance(value, int):
             raise ValueError(f"must be a whole number of {self.what}, got {value!r}")
         if value < self.minimum:
             raise ValueError(f"must be at least {self.minimum}, got {value}")
+        if value > MAX_COUNT:
+            shown = value if value < 10**12 else f"a number of {len(str(value))} digits"
+            raise ValueError(f"must be at most {MAX_COUNT}, got {shown}")
         return value
 
 
 def _count(minimum: int, what: str) -> Any:
-    schema = {"type": "integer", "minimum": minimum, "description": f"number of {what}"}
+    schema = {"type": "integer", "minimum": minimum, "maximum": MAX_COUNT,
+              "description": f"number of {what}"}
     return Annotated[int, BeforeValidator(_Count(minimum, what)), WithJsonSchema(schema)]
 
 
 def _plain_number(value: Any) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise ValueError(f"must be a plain number, like 0.01, got {value!r}")
-    if not math.isfinite(value) or value < 0:
-        raise ValueError(f"must be a finite number >= 0, got {value!r}")
-    return float(value)
+    number = float(value) if not isinstance(value, int) or abs(value) < 10**300 else math.inf
+    if not (math.isfinite(number) and 0 <= number <= MAX_MAGNITUDE):
+        shown = f"{value!r}" if math.isfinite(number) else "a number out of range"
+        raise ValueError(f"must be a finite number from 0 to {MAX_MAGNITUDE:g}, got {shown}")
+    return number
 
 
 Length = quantity(LENGTH)

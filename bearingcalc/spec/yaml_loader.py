@@ -10,11 +10,13 @@ memory.
 
 from __future__ import annotations
 
+import math
 import os
+import re
 import stat
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import yaml
 
@@ -24,7 +26,33 @@ MAX_FILE_BYTES = 1024 * 1024
 MAX_NODES = 10_000
 MAX_DEPTH = 20
 
-_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+_BASE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+
+
+class _Yaml12Loader(_BASE_LOADER):  # type: ignore[misc, valid-type]
+    """PyYAML's parser with the YAML 1.2 core schema's plain-scalar rules.
+
+    PyYAML resolves plain scalars by YAML 1.1 rules: ``1e-2`` is a string, ``014``
+    octal, ``1:00`` sexagesimal, ``2024-01-01`` a date and ``<<`` a merge key.
+    Editors and check-jsonschema follow YAML 1.2, so specs are read the same way.
+    """
+
+    yaml_implicit_resolvers: ClassVar[dict[str | None, list[tuple[str, re.Pattern[str]]]]] = {}
+
+
+# The YAML 1.2 core schema (https://yaml.org/spec/1.2.2/#1023-core-schema), tag by tag.
+_CORE_SCHEMA = {
+    "tag:yaml.org,2002:null": (r"^(?:~|null|Null|NULL|)$", [*"~nN", ""]),
+    "tag:yaml.org,2002:bool": (r"^(?:true|True|TRUE|false|False|FALSE)$", list("tTfF")),
+    "tag:yaml.org,2002:int": (r"^(?:[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+)$",
+                              list("-+0123456789")),
+    "tag:yaml.org,2002:float": (
+        r"^(?:[-+]?(?:\.[0-9]+|[0-9]+(?:\.[0-9]*)?)(?:[eE][-+]?[0-9]+)?"
+        r"|[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN))$", list("-+.0123456789")),
+}
+for _tag, (_pattern, _first) in _CORE_SCHEMA.items():
+    _Yaml12Loader.add_implicit_resolver(_tag, re.compile(_pattern), _first)
+_LOADER = _Yaml12Loader
 _PLAIN_TAGS = {
     "tag:yaml.org,2002:str", "tag:yaml.org,2002:int", "tag:yaml.org,2002:float",
     "tag:yaml.org,2002:bool", "tag:yaml.org,2002:null",
@@ -263,8 +291,40 @@ class _Builder:
         if tag not in _PLAIN_TAGS:
             raise self._fail(f"YAML tag '{tag}' is not allowed in a spec; write plain values",
                              event)
-        node = yaml.ScalarNode(tag, event.value, event.start_mark, event.end_mark, event.style)
-        return self.loader.construct_object(node)
+        try:
+            return _core_value(tag, event.value)
+        except ValueError:
+            shown = event.value if len(event.value) <= 40 else f"{event.value[:30]}…"
+            raise self._fail(f"'{shown}' is not a valid {tag.rsplit(':', 1)[-1]}",
+                             event) from None
+
+
+def _core_value(tag: str, text: str) -> Any:
+    """The value of a scalar by the YAML 1.2 core schema (explicit tags included)."""
+    if tag.endswith(":str"):
+        return text
+    if tag.endswith(":null"):
+        if text not in ("~", "null", "Null", "NULL", ""):
+            raise ValueError(text)
+        return None
+    if tag.endswith(":bool"):
+        lowered = text.lower()
+        if lowered not in ("true", "false"):
+            raise ValueError(text)
+        return lowered == "true"
+    if tag.endswith(":int"):
+        if text.startswith(("0o", "0x")):
+            return int(text[2:], 8 if text[1] == "o" else 16)
+        if not re.fullmatch(r"[-+]?[0-9]+", text):
+            raise ValueError(text)
+        # Decimal, whatever the leading zeros: YAML 1.2 has no implicit octal.
+        return int(text, 10)
+    special = {".inf": math.inf, "+.inf": math.inf, "-.inf": -math.inf, ".nan": math.nan}
+    if text.lower() in special:
+        return special[text.lower()]
+    if not re.fullmatch(r"[-+]?(?:\.[0-9]+|[0-9]+(?:\.[0-9]*)?)(?:[eE][-+]?[0-9]+)?", text):
+        raise ValueError(text)
+    return float(text)
 
 
 def is_spec_file(path: Path) -> bool:
