@@ -7,6 +7,7 @@ stops the batch.
 
 from __future__ import annotations
 
+import fnmatch
 import glob
 import os
 from collections.abc import Callable, Iterable, Sequence
@@ -16,8 +17,8 @@ from multiprocessing import get_all_start_methods, get_context
 from pathlib import Path
 
 from bearingcalc.errors import SpecError
-from bearingcalc.evaluation import Evaluation, evaluate_documents
-from bearingcalc.spec.yaml_loader import Document, is_spec_file, load_documents
+from bearingcalc.evaluation import Evaluation, evaluate_documents, load_selected
+from bearingcalc.spec.yaml_loader import Document, is_spec_file
 
 PASS, FAIL, INVALID = "pass", "fail", "invalid"
 #: Below this many files a worker pool costs more than it saves.
@@ -48,38 +49,50 @@ def discover(paths: Sequence[str | Path]) -> list[Path | CheckRecord]:
     """Spec files named by ``paths`` in order, with an invalid record where a path names none.
 
     A path is a file (taken whatever its suffix), a folder (searched recursively
-    for ``*.yaml`` and ``*.yml``, skipping hidden folders and not following
-    symlinked folders, so links cannot loop) or a glob pattern. A file named
-    twice is checked once.
+    for ``*.yaml`` and ``*.yml``, skipping hidden folders) or a glob pattern
+    (``**`` spans folders). Neither folders nor globs follow symbolic links to
+    folders, so links cannot loop or repeat a tree; a file reached twice (by two
+    paths, or through a link) is checked once; a folder that cannot be read is an
+    invalid record of its own. ``file.yaml#N`` names one document of a file.
     """
     entries: list[Path | CheckRecord] = []
-    seen: set[Path] = set()
+    seen: set[str] = set()
 
     def add(found: Iterable[Path]) -> None:
         for path in found:
-            if path not in seen:
-                seen.add(path)
+            real = os.path.realpath(path)
+            if real not in seen:
+                seen.add(real)
                 entries.append(path)
 
     for raw in paths:
         path = Path(raw)
+        problems: list[CheckRecord] = []
         if path.is_dir():
-            found = sorted(_walk(path))
-            if not found:
+            found = sorted(_walk(path, problems))
+            if not found and not problems:
                 entries.append(_invalid(str(path), "no spec files (*.yaml, *.yml) in this "
                                         "folder"))
             add(found)
         elif path.exists() or path.is_symlink():
             add([path])
         elif glob.has_magic(str(raw)):
-            matches = [Path(p) for p in sorted(glob.glob(str(raw), recursive=True))]
-            found = [m for m in matches if not m.is_dir()]
-            if not found:
+            found = sorted(_glob(str(raw), problems))
+            if not found and not problems:
                 entries.append(_invalid(str(raw), "the pattern matches no file"))
             add(found)
+        elif _document_path(str(raw)) is not None:
+            entries.append(Path(raw))
         else:
             entries.append(_invalid(str(raw), "no such file or folder; check the path"))
+        entries.extend(problems)
     return entries
+
+
+def _document_path(raw: str) -> Path | None:
+    """The file of ``file.yaml#N`` when that file exists, else None."""
+    head, sep, index = raw.rpartition("#")
+    return Path(head) if sep and head and index and Path(head).is_file() else None
 
 
 def check_paths(paths: Sequence[str | Path], jobs: int = 1,
@@ -97,13 +110,57 @@ def check_paths(paths: Sequence[str | Path], jobs: int = 1,
     return records
 
 
-def _walk(folder: Path) -> Iterable[Path]:
-    for root, dirs, names in os.walk(folder, followlinks=False):
+def _walk(folder: Path, problems: list[CheckRecord]) -> Iterable[Path]:
+    for root, dirs, names in os.walk(folder, followlinks=False,
+                                     onerror=_unreadable_folder(problems)):
         dirs[:] = [d for d in dirs if not d.startswith(".")]
         for name in names:
             path = Path(root) / name
             if is_spec_file(path):
                 yield path
+
+
+def _unreadable_folder(problems: list[CheckRecord]) -> Callable[[OSError], None]:
+    def record(error: OSError) -> None:
+        problems.append(_invalid(str(error.filename), "cannot read the folder: "
+                                 f"{error.strerror or error}; its specs were not checked"))
+    return record
+
+
+def _glob(pattern: str, problems: list[CheckRecord]) -> Iterable[Path]:
+    """Files matching ``pattern`` (``*``, ``?``, ``[...]`` within a name, ``**`` across
+    folders), found without following links to folders."""
+    parts = Path(pattern).parts
+    fixed = 0
+    while fixed < len(parts) - 1 and not glob.has_magic(parts[fixed]):
+        fixed += 1
+    root = Path(*parts[:fixed]) if fixed else Path(".")
+    wanted = parts[fixed:]
+    if not root.is_dir():
+        return
+    deep = "**" in wanted
+    for current, dirs, names in os.walk(root, followlinks=False,
+                                        onerror=_unreadable_folder(problems)):
+        relative = Path(current).relative_to(root).parts
+        if not deep and len(relative) >= len(wanted) - 1:
+            dirs[:] = []
+        for name in names:
+            if _matches((*relative, name), wanted):
+                yield Path(current) / name
+
+
+def _matches(names: tuple[str, ...], patterns: tuple[str, ...]) -> bool:
+    """Whether path parts ``names`` match glob parts ``patterns`` (as glob.glob would,
+    hidden names matching only patterns that start with a dot)."""
+    if not patterns:
+        return not names
+    head = patterns[0]
+    if head == "**":
+        return _matches(names, patterns[1:]) or (
+            bool(names) and not names[0].startswith(".") and _matches(names[1:], patterns))
+    if not names or (names[0].startswith(".") and not head.startswith(".")):
+        return False
+    return fnmatch.fnmatchcase(names[0], head) and _matches(names[1:], patterns[1:])
 
 
 def check_files(files: Sequence[Path], jobs: int = 1,
@@ -137,7 +194,7 @@ def check_chunk(files: Sequence[Path]) -> list[list[CheckRecord]]:
     loaded: list[list[Document] | CheckRecord] = []
     for path in files:
         try:
-            loaded.append(load_documents(path))
+            loaded.append(load_selected(path))
         except SpecError as error:
             loaded.append(_invalid(str(path), str(error)))
         except Exception as exc:  # one file's surprise never stops the batch

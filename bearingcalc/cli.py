@@ -23,6 +23,8 @@ app = typer.Typer(add_completion=False, pretty_exceptions_enable=False, no_args_
                   help="Rolling-contact machine design: thrust bearings, bevel gears and more.")
 
 EXIT_OK, EXIT_LIMIT, EXIT_INVALID = 0, 1, 2
+#: A closed output pipe whose run's status is unknown: the shell's 128 + SIGPIPE.
+EXIT_BROKEN_PIPE = 141
 
 
 class SolveFormat(str, Enum):
@@ -68,15 +70,19 @@ def solve(
                     _print_error(outcome)
                 else:
                     evaluations.append(outcome)
-        if output_format is SolveFormat.json:
-            reports.write_json_lines(evaluations, sys.stdout)
-        elif output_format is SolveFormat.csv:
-            if evaluations:
-                reports.write_csv(evaluations, sys.stdout)
-        else:
-            descriptions = {name: {key: meaning for key, (_, meaning) in kind.results.items()}
-                            for name, kind in KINDS.items()}
-            reports.print_tables(evaluations, descriptions)
+
+        def write(stream: TextIO) -> None:
+            if output_format is SolveFormat.json:
+                reports.write_json_lines(evaluations, stream)
+            elif output_format is SolveFormat.csv:
+                if evaluations:
+                    reports.write_csv(evaluations, stream)
+            else:
+                descriptions = {name: {key: meaning for key, (_, meaning) in
+                                       kind.results.items()} for name, kind in KINDS.items()}
+                reports.print_tables(evaluations, descriptions, stream)
+
+        _emit(write, None)
         if invalid:
             raise typer.Exit(EXIT_INVALID)
         if not all(evaluation.within_limits for evaluation in evaluations):
@@ -358,7 +364,13 @@ def _save_plot(plot: Path, draw: Callable[[BinaryIO, str], None]) -> None:
 def _emit(write: Callable[[TextIO], None], output: Path | None) -> None:
     """Write a report to ``output`` atomically, or to stdout."""
     if output is None:
-        write(sys.stdout)
+        try:
+            write(sys.stdout)
+            sys.stdout.flush()
+        except BrokenPipeError:
+            # The reader left (| head): stop writing, but keep the run's exit status,
+            # which says whether the specs passed.
+            _silence_stdout()
         return
     from bearingcalc.output import atomic_write
 
@@ -369,6 +381,15 @@ def _emit(write: Callable[[TextIO], None], output: Path | None) -> None:
                         source=str(output)) from None
 
 
+def _silence_stdout() -> None:
+    """Point stdout at /dev/null, so the flush at exit does not fail a second time."""
+    import os
+
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, sys.stdout.fileno())
+    os.close(devnull)
+
+
 def _print_error(error: Exception) -> None:
     lines = error.lines() if isinstance(error, SpecError) else [f"error: {error}"]
     print("\n".join(_printable(line) for line in lines), file=sys.stderr)
@@ -377,7 +398,7 @@ def _print_error(error: Exception) -> None:
 def _printable(text: str) -> str:
     """``text`` with control characters shown as escapes, so a value from a spec cannot
     move the cursor, colour the terminal or start a line of its own."""
-    from bearingcalc.reports import printable
+    from bearingcalc.wording import printable
 
     return printable(text)
 
@@ -399,7 +420,8 @@ class _errors_as_exit:
             print("interrupted", file=sys.stderr)
             raise typer.Exit(130)
         if isinstance(exc, BrokenPipeError):
-            raise typer.Exit(EXIT_OK)
+            _silence_stdout()
+            raise typer.Exit(EXIT_BROKEN_PIPE)
         if self.debug:
             traceback.print_exception(exc)
         if isinstance(exc, SpecError):

@@ -10,6 +10,7 @@ from __future__ import annotations
 import difflib
 import functools
 import math
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -22,6 +23,7 @@ from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind
 from bearingcalc.spec.fields import SpecModel, nested_model
 from bearingcalc.spec.yaml_loader import Document, load_documents
+from bearingcalc.wording import plural
 
 
 @dataclass
@@ -133,32 +135,37 @@ def evaluate_document(document: Document) -> Evaluation:
 
 
 def evaluate_file(path: str | Path) -> list[Evaluation | SpecError]:
-    """Every document of a file, each evaluated or refused with its error."""
+    """Every document of a file (or the one ``file.yaml#N`` names), each evaluated or
+    refused with its error."""
     try:
-        documents = load_documents(path)
+        documents = load_selected(path)
     except SpecError as error:
         return [error]
     return evaluate_documents(documents)
 
 
+def load_selected(path: str | Path) -> list[Document]:
+    """The documents of a spec file, or only the N-th for ``file.yaml#N`` (as reports
+    name the documents of a multi-document file); raises SpecError."""
+    text_path, _, index = str(path).rpartition("#")
+    if not text_path or Path(str(path)).exists() or not Path(text_path).is_file():
+        return load_documents(path)
+    documents = load_documents(text_path)
+    if not re.fullmatch(r"[0-9]{1,9}", index) or not 1 <= int(index) <= len(documents):
+        raise SpecError(f"'#{index}' does not pick a document: write {text_path}#N with N "
+                        f"from 1 to {len(documents)} (the file has "
+                        f"{plural(len(documents), 'document')})", source=text_path)
+    return [documents[int(index) - 1]]
+
+
 def load_one_spec(path: str | Path) -> tuple[Kind, SpecModel, Document]:
     """The one spec of a file (``file.yaml#N`` picks a document of several); raises SpecError."""
-    text_path, _, index = str(path).rpartition("#")
-    if not text_path or not index.isdigit() or Path(str(path)).exists():
-        text_path, index = str(path), ""
-    documents = load_documents(text_path)
-    if index:
-        if not 1 <= int(index) <= len(documents):
-            raise SpecError(f"the file has {len(documents)} documents, not {index}",
-                            source=text_path)
-        document = documents[int(index) - 1]
-    elif len(documents) > 1:
+    documents = load_selected(path)
+    if len(documents) > 1:
         raise SpecError(f"the file holds {len(documents)} specs; pick one as "
-                        f"{text_path}#1 .. #{len(documents)}", source=text_path)
-    else:
-        document = documents[0]
-    kind, spec = parse_document(document)
-    return kind, spec, document
+                        f"{path}#1 .. #{len(documents)}", source=str(path))
+    kind, spec = parse_document(documents[0])
+    return kind, spec, documents[0]
 
 
 def _judge(document: Document, kind: Kind, spec: SpecModel, raw: dict[str, float],

@@ -19,13 +19,17 @@ def atomic_write(path: str | Path, write: Callable[[IO[Any]], None], *,
     If ``write`` raises (or the process is interrupted) the temporary file is
     removed and an existing ``path`` is left exactly as it was.
     """
-    target = Path(path)
+    # Write through a symbolic link to the file it names: replacing the link with a
+    # file would cut whatever the link was there for.
+    target = Path(os.path.realpath(path))
+    mode, encoding, newline = _mode(binary)
     if target.exists() and not target.is_file():
+        if target.is_dir():
+            raise IsADirectoryError(21, "is a folder", str(path))
         # /dev/null, /dev/stdout, a FIFO: nothing to protect, and nothing to rename over.
-        with open(target, *_mode(binary)) as stream:  # type: ignore[call-overload]
+        with open(target, mode, encoding=encoding, newline=newline) as stream:
             write(stream)
         return
-    mode, encoding, newline = _mode(binary)
     handle = tempfile.NamedTemporaryFile(  # noqa: SIM115 - closed below, renamed on success
         mode, encoding=encoding, newline=newline, dir=target.parent or ".",
         prefix=f".{target.name}.", suffix=".tmp", delete=False)

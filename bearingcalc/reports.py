@@ -8,7 +8,6 @@ from __future__ import annotations
 import csv
 import io
 import json
-import re
 from collections.abc import Iterable, Sequence
 from typing import IO, TYPE_CHECKING, Any
 
@@ -16,6 +15,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from bearingcalc.units import to_display
+from bearingcalc.wording import plural, printable
 
 if TYPE_CHECKING:  # the report types only; their modules load with their commands
     from bearingcalc.batch import CheckRecord
@@ -24,19 +24,9 @@ if TYPE_CHECKING:  # the report types only; their modules load with their comman
     from bearingcalc.tolerance import StudyReport
 
 
-_CONTROL = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029]")
 #: Width of tables when the output is not a terminal (a pipe, a CI log, a file): wide
 #: enough that a row stays one line, instead of rich's 80 columns.
 PIPE_WIDTH = 200
-
-
-def printable(text: str) -> str:
-    """``text`` with control characters written as escapes (``\\x1b``, ``\\n``).
-
-    Names, file names and values come from specs and must not move the cursor,
-    colour the terminal, start a fake line of their own or break XML.
-    """
-    return _CONTROL.sub(lambda m: repr(m.group())[1:-1], text)
 
 
 def console(stream: IO[str] | None = None) -> Any:
@@ -213,11 +203,6 @@ def print_check_table(records: Sequence[CheckRecord], *, show_all: bool,
     out.print(f"{plural(len(records), 'spec')}: [green]{counts['pass']} pass[/], "
                   f"[red]{counts['fail']} fail[/], "
                   f"[magenta]{counts['invalid']} invalid[/]{note}")
-
-
-def plural(count: int, noun: str) -> str:
-    """'1 spec', '2 specs'."""
-    return f"{count} {noun}" if count == 1 else f"{count} {noun}s"
 
 
 def _without_source(message: str, source: str) -> str:

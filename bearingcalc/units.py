@@ -19,6 +19,8 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
+from bearingcalc.wording import article
+
 
 class UnitError(ValueError):
     """A quantity string that cannot be read, or is of the wrong dimension."""
@@ -109,11 +111,6 @@ MAX_QUANTITY_CHARS = 80
 #: Largest magnitude of any quantity in SI units. Nothing in machine design comes near;
 #: beyond it tables in engineering units and the solvers' products would overflow.
 MAX_MAGNITUDE = 1e15
-
-
-def article(word: str) -> str:
-    """'a length', 'an angle'."""
-    return f"an {word}" if word[:1].lower() in "aeiou" else f"a {word}"
 
 
 def parse_quantity(text: Any, dimension: Dimension) -> float:

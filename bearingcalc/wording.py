@@ -1,0 +1,29 @@
+"""Small helpers for the words users read: articles, plurals, safe text."""
+
+from __future__ import annotations
+
+import re
+
+_CONTROL = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029]")
+
+
+def article(word: str) -> str:
+    """'a length', 'an angle'."""
+    return f"an {word}" if word[:1].lower() in "aeiou" else f"a {word}"
+
+
+def plural(count: int, noun: str) -> str:
+    """'1 document', '2 documents'."""
+    return f"{count} {noun}" if count == 1 else f"{count} {noun}s"
+
+
+def printable(text: str) -> str:
+    r"""``text`` with control characters written as escapes (``\x1b``, ``\n``).
+
+    Names, file names and values come from specs and must not move the cursor,
+    colour the terminal, start a fake line of their own or break XML.
+
+    >>> printable("TB\n\x1b[32mPASS")
+    'TB\\n\\x1b[32mPASS'
+    """
+    return _CONTROL.sub(lambda m: repr(m.group())[1:-1], text)
