@@ -178,4 +178,4 @@ def test_one_document_of_a_multi_document_file_is_picked_with_a_hash(cli, spec_f
     run = cli("sweep", f"{path}#2", "--vary", "half_angle=10deg:20deg:3", "-f", "csv")
     assert run.code == 0 and len(csv_rows(run.out)) == 3
     run = cli("tolerance", f"{path}#3")
-    assert run.code == 2 and "has 2 documents, not 3" in run.err
+    assert run.code == 2 and "'#3' does not pick a document" in run.err
