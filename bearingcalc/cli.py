@@ -20,11 +20,15 @@ from bearingcalc.errors import SpecError
 T = TypeVar("T")
 
 app = typer.Typer(add_completion=False, pretty_exceptions_enable=False, no_args_is_help=True,
+                  context_settings={"help_option_names": ["-h", "--help"]},
                   help="Rolling-contact machine design: thrust bearings, bevel gears and more.")
 
 EXIT_OK, EXIT_LIMIT, EXIT_INVALID = 0, 1, 2
 #: A closed output pipe whose run's status is unknown: the shell's 128 + SIGPIPE.
 EXIT_BROKEN_PIPE = 141
+MAX_JOBS_PER_CORE = 4
+#: Most Monte Carlo samples: 1e10 takes about half an hour on two cores.
+MAX_SAMPLES = 10**10
 
 
 class SolveFormat(str, Enum):
@@ -41,9 +45,32 @@ PlotOption = Annotated[Path | None, typer.Option(
     "--plot", help="Draw a chart to this .png or .svg file.", dir_okay=False)]
 
 
+def _print_version(value: bool) -> None:
+    if value:
+        from bearingcalc import __version__
+
+        print(f"bearingcalc {__version__}")
+        raise typer.Exit(EXIT_OK)
+
+
 @app.callback()
-def main() -> None:
+def main(
+    version: Annotated[bool, typer.Option(
+        "--version", "-V", callback=_print_version, is_eager=True,
+        help="Print the version and exit.")] = False,
+) -> None:
     """Rolling-contact machine design from YAML specs."""
+
+
+def _sample_count(text: str | int) -> int:
+    """``--samples`` as engineers write it: 100000, 1e5 or 100_000."""
+    try:
+        number = float(str(text).replace("_", ""))
+    except ValueError:
+        raise typer.BadParameter(f"{text!r} is not a number of samples, like 1e5") from None
+    if not (number.is_integer() and 2 <= number <= MAX_SAMPLES):
+        raise typer.BadParameter(f"{text!r}: give a whole number from 2 to {MAX_SAMPLES:.0e}")
+    return int(number)
 
 
 @app.command()
@@ -116,11 +143,9 @@ def check(
     Exit status: 0 all pass; 1 some fail and none invalid; 2 any invalid.
     """
     with _errors_as_exit(debug):
-        import os
-
         from bearingcalc import batch, reports
 
-        workers = jobs or os.cpu_count() or 1
+        workers = _workers(jobs)
         records = _with_progress(lambda tick: batch.check_paths(paths, workers, tick))
 
         def write(stream: TextIO) -> None:
@@ -190,8 +215,8 @@ def tolerance(
     method: Annotated[str, typer.Option(
         "--method", "-m", help="Comma-separated: worst-case, rss, monte-carlo.")
     ] = "worst-case,rss,monte-carlo",
-    samples: Annotated[int, typer.Option("--samples", "-n", min=2,
-                                         help="Monte Carlo samples.")] = 100_000,
+    samples: Annotated[int, typer.Option("--samples", "-n", parser=_sample_count,
+                                         help="Monte Carlo samples (1e5, 100000).")] = 100_000,
     seed: Annotated[int, typer.Option("--seed", min=0, help="Seed of the sampler.")] = 0,
     sampler: Annotated[str, typer.Option("--sampler", help="sobol or random.")] = "sobol",
     sobol: Annotated[bool, typer.Option("--sobol", help="Add Sobol sensitivity indices.")
@@ -214,10 +239,8 @@ def tolerance(
     run); 1 they can be exceeded; 2 the spec or the options are invalid.
     """
     with _errors_as_exit(debug):
-        import os
-
         from bearingcalc import reports
-        from bearingcalc.evaluation import load_one_spec
+        from bearingcalc.evaluation import evaluate_document, load_one_spec
         from bearingcalc.tolerance import StudyError, run_study
 
         methods = [m.strip() for m in method.split(",") if m.strip()]
@@ -226,7 +249,8 @@ def tolerance(
             raise SpecError("--plot draws the Monte Carlo histogram: add monte-carlo to "
                             "--method", source=str(plot))
         kind, spec, document = load_one_spec(spec_path)
-        threads = jobs or os.cpu_count() or 1
+        evaluate_document(document)  # a nominal design that solve refuses is refused here too
+        threads = _workers(jobs)
         try:
             report = _with_progress(lambda tick: run_study(
                 kind, spec, document.source, methods=methods, samples=samples, seed=seed,
@@ -289,6 +313,7 @@ def sweep(
         kind, spec, document = load_one_spec(spec_path)
         try:
             axes = [sweeps.parse_axis(text, spec) for text in vary]
+            sweeps.check_axes(document, axes)
             solved = sweeps.run_sweep(kind, spec, document.source, axes)
         except sweeps.SweepError as error:
             raise SpecError(str(error), source=document.source) from None
@@ -312,6 +337,21 @@ def sweep(
 
             _save_plot(plot, lambda f, fmt: sweep_plot(solved, keys, f, fmt=fmt))
         _emit(write, output)
+
+
+def _workers(jobs: int | None) -> int:
+    """The number of workers: ``--jobs``, or the cores; at most ``MAX_JOBS_PER_CORE`` per
+    core, since more only fight over the same cores (and hundreds of processes can
+    exhaust a shared machine)."""
+    import os
+
+    cores = os.cpu_count() or 1
+    most = MAX_JOBS_PER_CORE * cores
+    if jobs is not None and jobs > most:
+        raise SpecError(f"--jobs {jobs} is more than {most} ({MAX_JOBS_PER_CORE} per core on "
+                        f"this machine's {cores}); leave it out to use every core",
+                        source="--jobs")
+    return jobs or cores
 
 
 def _format_for(output: Path | None) -> SweepFormat:

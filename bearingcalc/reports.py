@@ -289,7 +289,7 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
                 to_display(effect, units[lead])[0]))
         out.print(shares)
 
-    if record["yield"] is not None:
+    if "yield" in record:
         cpk = "n/a" if record["cpk"] is None else f"{record['cpk']:.3f}"
         out.print(f"Monte Carlo: {record['samples']} samples ({record['sampler']}, seed "
                       f"{record['seed']}): yield {100 * record['yield']:.4f} %, "

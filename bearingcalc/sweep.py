@@ -7,6 +7,9 @@ and it carries the reason (the solver's status code).
 
 from __future__ import annotations
 
+import copy
+import dataclasses
+import itertools
 import re
 from dataclasses import dataclass
 from typing import Any
@@ -15,9 +18,10 @@ import numpy as np
 from numpy.typing import NDArray
 from pydantic import BaseModel
 
-from bearingcalc.errors import BearingcalcError
+from bearingcalc.errors import BearingcalcError, SpecError
 from bearingcalc.kinds import Kind
 from bearingcalc.spec.fields import SpecModel, field_parser, nested_model
+from bearingcalc.spec.yaml_loader import Document
 from bearingcalc.variation import evaluate_with, field_value
 
 MAX_POINTS = 4_000_000
@@ -70,7 +74,7 @@ class Sweep:
 
 
 _VARY = re.compile(r"^\s*(?P<name>[A-Za-z_][\w.]*)\s*=\s*(?P<start>[^:]+):(?P<stop>[^:]+):"
-                   r"(?P<count>\s*\d+\s*)$")
+                   r"(?P<count>\s*[0-9]{1,12}\s*)$")
 
 
 def parse_axis(text: str, spec: SpecModel) -> Axis:
@@ -82,6 +86,9 @@ def parse_axis(text: str, spec: SpecModel) -> Axis:
     name, count = match["name"], int(match["count"])
     if count < 2:
         raise SweepError(f"--vary {name}: N must be at least 2, got {count}")
+    if count > MAX_POINTS:  # before any array of that size is built
+        raise SweepError(f"--vary {name}: N = {count} is more than the {MAX_POINTS} points "
+                         "a sweep may have; use fewer")
     parser = _parser_at(type(spec), name)
     try:
         current = field_value(spec, name)
@@ -126,6 +133,41 @@ def _parser_at(model: type[BaseModel], path: str) -> tuple[str, Any, str]:
             raise SweepError(f"--vary {path}: {'.'.join(parts[:i + 1])} has no fields")
         current = nested
     raise AssertionError("unreachable")
+
+
+def check_axes(document: Document, axes: list[Axis]) -> None:
+    """Validate the spec at every corner of the swept range, as ``solve`` would.
+
+    Sweeps put arrays in place of fields and skip the spec model's checks; each
+    field's checks are ranges (signs, bounds), so the ends of every axis are where
+    a value could break one. Raises SweepError naming the axis and the value.
+    """
+    from bearingcalc.evaluation import parse_document
+
+    for corner in itertools.product(*((0, len(axis.values) - 1) for axis in axes)):
+        data = copy.deepcopy(document.data)
+        for axis, i in zip(axes, corner, strict=True):
+            _set_dotted(data, axis.name, _as_written(axis, axis.values[i]))
+        try:
+            parse_document(dataclasses.replace(document, data=data))
+        except SpecError as error:
+            at = ", ".join(f"{axis.name} = {_as_written(axis, axis.values[i])}"
+                           for axis, i in zip(axes, corner, strict=True))
+            what = f"{error.field}: {error.message}" if error.field else error.message
+            raise SweepError(f"--vary: the spec is invalid at {at}: {what}") from None
+
+
+def _as_written(axis: Axis, value: Any) -> Any:
+    if axis.integer:
+        return int(value)
+    return f"{float(value)!r} {axis.unit}" if axis.unit != "1" else float(value)
+
+
+def _set_dotted(data: dict[str, Any], dotted: str, value: Any) -> None:
+    *parents, last = dotted.split(".")
+    for part in parents:
+        data = data.setdefault(part, {})
+    data[last] = value
 
 
 def run_sweep(kind: Kind, spec: SpecModel, source: str, axes: list[Axis]) -> Sweep:

@@ -18,6 +18,7 @@ from __future__ import annotations
 import copy
 import itertools
 import math
+import threading
 import warnings
 from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor
@@ -30,6 +31,7 @@ from numpy.typing import NDArray
 from bearingcalc.errors import BearingcalcError
 from bearingcalc.kinds import Kind
 from bearingcalc.spec.fields import SpecModel, Tolerance
+from bearingcalc.units import to_display
 from bearingcalc.variation import evaluate_with, field_value, toleranced_fields
 
 METHODS = ("worst-case", "rss", "monte-carlo")
@@ -93,6 +95,8 @@ class Study:
     spec: SpecModel
     inputs: list[StudyInput] = field(init=False)
     nominal: dict[str, float] = field(init=False)
+    #: impossible designs met by the worst-case search of the box (see worst_case)
+    box_impossible: dict[str, Any] | None = field(init=False, default=None)
 
     def __post_init__(self) -> None:
         self.inputs = [StudyInput(name, tol) for name, tol in toleranced_fields(self.spec).items()]
@@ -146,7 +150,8 @@ class Study:
             corners = np.empty((0, d))
         interior = qmc.Sobol(d, scramble=True, rng=0).random(INTERIOR_POINTS)
         unit = np.vstack([corners, interior, np.full((1, d), 0.5)])
-        results, _ = self.evaluate(low + unit * width)
+        results, status = self.evaluate(low + unit * width)
+        self.box_impossible = self._impossible_part(unit, status, low, width)
         out: dict[str, dict[str, Any]] = {}
         for key in self.keys:
             values = results[key]
@@ -162,6 +167,20 @@ class Study:
                                             for i, item in enumerate(self.inputs)}
             out[key] = entry
         return out
+
+    def _impossible_part(self, unit: NDArray, status: NDArray, low: NDArray,
+                         width: NDArray) -> dict[str, Any] | None:
+        """How much of the worst-case search of the box hit impossible designs, and one
+        of them (the first corner or point found) with the reason; None when none did."""
+        bad = np.flatnonzero(status != 0)
+        if bad.size == 0:
+            return None
+        first = int(bad[0])
+        field, why = self.kind.status_reasons[int(status[first])]
+        return {"fraction": bad.size / status.size,
+                "inputs": {item.name: float(low[i] + unit[first, i] * width[i])
+                           for i, item in enumerate(self.inputs)},
+                "reason": f"{field}: {why}" if field else why}
 
     def _refine(self, key: str, sign: float, start: NDArray, low: NDArray, width: NDArray,
                 minimize: Callable[..., Any]) -> tuple[NDArray, float]:
@@ -274,12 +293,14 @@ class Study:
         workers = max(1, min(threads, blocks))
         bounds = [blocks * w // workers for w in range(workers + 1)]
 
+        stop_now = threading.Event()
+
         def work(first_block: int, end_block: int) -> tuple[dict[str, _Accumulator], int, int]:
             accumulators = {key: acc.empty_like() for key, acc in template.items()}
             passed = infeasible = 0
             start, stop = first_block * BLOCK, min(end_block * BLOCK, samples)
             stream = SampleStream(len(self.inputs), seed, sampler, start)
-            while start < stop:
+            while start < stop and not stop_now.is_set():
                 count = min(chunk, stop - start)
                 results, status = self.evaluate(self._shape(stream.next(count)), keys)
                 ok = self.kind.within_limits(results, status)
@@ -292,9 +313,17 @@ class Study:
                     progress(count)
             return accumulators, passed, infeasible
 
-        with ThreadPoolExecutor(max_workers=workers) as pool:
+        pool = ThreadPoolExecutor(max_workers=workers)
+        try:
             futures = [pool.submit(work, bounds[w], bounds[w + 1]) for w in range(workers)]
             outcomes = [future.result() for future in futures]
+        except BaseException:
+            # Ctrl-C: the workers stop at their next chunk (a fraction of a second)
+            # instead of running the study to its end.
+            stop_now.set()
+            raise
+        finally:
+            pool.shutdown(wait=False, cancel_futures=True)
         merged = template
         passed = sum(outcome[1] for outcome in outcomes)
         infeasible = sum(outcome[2] for outcome in outcomes)
@@ -579,13 +608,15 @@ class StudyReport:
     def within_limits(self) -> bool | None:
         """Whether every margin stays >= 0: at worst case if run, else in every sample."""
         results = self.record["results"]
+        if self.record.get("impossible_in_box") or self.record.get("infeasible_samples"):
+            return False  # a box holding impossible designs never passes
         if not self.margins:
             return None
         worst = [results[m].get("worst_case", {}).get("min") for m in self.margins]
         if all(w is not None for w in worst):
             return all(w >= 0 for w in worst)  # type: ignore[operator]
-        if self.record.get("yield") is not None:
-            return bool(self.record["yield"] == 1.0)
+        if "yield" in self.record:
+            return bool(self.record["yield"] == 1.0)  # Monte Carlo alone: every sample
         return None
 
 
@@ -598,6 +629,8 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
     ``results`` narrows Monte Carlo and Sobol to those result keys (and names the
     governing results); worst case and RSS always cover every result.
     """
+    if not methods:
+        raise StudyError(f"--method names no method; use one or more of {', '.join(METHODS)}")
     unknown = [m for m in methods if m not in METHODS]
     if unknown:
         raise StudyError(f"unknown method {unknown[0]!r}; use {', '.join(METHODS)}")
@@ -612,10 +645,8 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
     focus = list(results) or study.keys
     record: dict[str, Any] = {
         "spec": source, "kind": kind.name, "name": getattr(spec, "name", None),
-        "samples": None, "seed": None, "sampler": None,
         "inputs": study.input_summary(),
         "results": {key: {"nominal": value} for key, value in study.nominal.items()},
-        "yield": None, "ppm_out": None, "cpk": None, "infeasible_samples": None,
         "units": {**{key: kind.results[key][0] for key in study.keys},
                   **{item.name: item.tolerance.unit for item in study.inputs}},
         "warnings": [],
@@ -623,6 +654,15 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
     if "worst-case" in methods:
         for key, entry in study.worst_case().items():
             record["results"][key]["worst_case"] = entry
+        if study.box_impossible is not None:
+            box = study.box_impossible
+            record["impossible_in_box"] = box
+            at = ", ".join("{} = {:.6g} {}".format(name, *to_display(value, record["units"][name]))
+                           for name, value in box["inputs"].items())
+            record["warnings"].append(
+                f"{100 * box['fraction']:.3g} % of the worst-case search of the tolerance box "
+                f"are impossible designs, e.g. at {at} ({box['reason']}); worst case covers "
+                "only the possible part, and the study fails")
     if "rss" in methods:
         for key, entry in study.rss().items():
             record["results"][key]["rss"] = entry

@@ -59,6 +59,16 @@ class BevelGearsSpec(SpecModel):
                         f"{label}.pitch_radius",
                         f"disagrees with module × teeth / 2 = {from_teeth * 1e3:g} mm; "
                         "give one or make them agree")
+        a, b = self.gear_a, self.gear_b
+        if (self.module is None and None not in (a.teeth, b.teeth, a.pitch_radius, b.pitch_radius)
+                and not math.isclose(a.pitch_radius * b.teeth, b.pitch_radius * a.teeth,
+                                     rel_tol=1e-9)):
+            # Meshing gears share a module, so their pitch radii are in the ratio of teeth.
+            raise SpecFieldError(
+                "gear_b.teeth", f"the teeth ({a.teeth}/{b.teeth}) disagree with the pitch radii "
+                f"({a.pitch_radius * 1e3:g} mm/{b.pitch_radius * 1e3:g} mm): meshing gears "
+                "have pitch radii in the ratio of their teeth; leave the teeth or the radii "
+                "out, or make them agree")
         if self.shaft_angle is None and (self.gear_a.pitch_angle is None
                                          or self.gear_b.pitch_angle is None):
             raise SpecFieldError("shaft_angle", "missing: give shaft_angle (90 deg for the "
