@@ -323,8 +323,16 @@ def test_sobol_gives_no_numbers_where_designs_are_impossible_or_results_constant
 def test_a_study_where_every_sample_is_impossible_still_reports_and_plots(cli, spec_file,
                                                                           tmp_path):
     path = tmp_path / "hist.png"
+    # A nominal design that solve refuses is refused by tolerance too.
     run = cli("tolerance", spec_file(TB.replace("30 deg ± 0.25 deg", "50 deg ± 1 deg")),
               "-n", "2048", "--plot", path)
+    assert run.code == 2 and "contact_angle: pure rolling needs" in run.err, run.err
+    assert not path.exists()
+    # A possible nominal whose band is impossible beyond it (θ >= 45°) almost everywhere.
+    band = "{nominal: 44.999 deg, plus: 5 deg, minus: 0 deg, distribution: uniform}"
+    run = cli("tolerance", spec_file(TB.replace("30 deg ± 0.25 deg", band)),
+              "-n", "2048", "--plot", path)
     assert run.code == 1, run.err
-    assert "2048 impossible designs" in run.out and "FAIL" in run.out
+    assert "2048 samples" in run.out and "impossible designs" in run.out
+    assert "FAIL" in run.out
     assert path.read_bytes().startswith(b"\x89PNG")
