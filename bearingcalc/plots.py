@@ -7,8 +7,10 @@ from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any
 
 import numpy as np
+from numpy.typing import NDArray
 
 from bearingcalc.units import to_display
+from bearingcalc.wording import printable
 
 if TYPE_CHECKING:
     from bearingcalc.sweep import Sweep
@@ -64,8 +66,8 @@ def tolerance_histogram(report: StudyReport, key: str, path: str | Path | IO[byt
                      label="limit" if i == 0 else None)
     axes.set_xlabel(f"{key} [{unit}]" if unit else key)
     axes.set_ylabel("samples")
-    axes.set_title(f"{record['name'] or record['spec']}: {key}")
-    axes.legend(loc="best", fontsize="small", framealpha=0.9)
+    axes.set_title(printable(f"{record['name'] or record['spec']}: {key}"))
+    _legend_below(axes)
     figure.tight_layout()
     figure.savefig(path, format=fmt)
     plt.close(figure)
@@ -82,10 +84,17 @@ def sweep_plot(sweep: Sweep, keys: Sequence[str], path: str | Path | IO[bytes], 
         _line(sweep, keys, figure, axes)
     else:
         _contour(sweep, keys[0], figure, axes)
-    axes.set_title(f"{sweep.name} ({sweep.kind.name})")
+    axes.set_title(printable(f"{sweep.name} ({sweep.kind.name})"))
     figure.tight_layout()
     figure.savefig(path, format=fmt)
     plt.close(figure)
+
+
+def _legend_below(axes: Any, handles: list[Any] | None = None) -> None:
+    """The legend under the plot, where it cannot cover a line or a bar."""
+    kwargs = {"handles": handles} if handles is not None else {}
+    axes.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=3, fontsize="small",
+                frameon=False, **kwargs)
 
 
 def _axis_label(name: str, si_unit: str) -> tuple[float, str]:
@@ -120,8 +129,11 @@ def _line(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> None:
             colour = next(colours, "#333333")
             (line,) = target.plot(x, sweep.results[key] * scale, color=colour, label=key)
             handles.append(line)
-            for level in _limit_levels(sweep, key):
-                target.axhline(level * scale, color=colour, linestyle=":", linewidth=1.2)
+            for i, level in enumerate(_limit_levels(sweep, key)):
+                limit = target.axhline(level * scale, color=colour, linestyle=":",
+                                       linewidth=1.2, label=f"limit of {key}")
+                if i == 0:
+                    handles.append(limit)
         target.set_ylabel(", ".join(members) + (f" [{unit}]" if unit else ""))
     ok = sweep.within_limits
     if sweep.kind.margins and ok.any():
@@ -138,7 +150,9 @@ def _line(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> None:
                   "impossible designs (gaps)", transform=axes.transAxes, fontsize="small",
                   color="#555555")
     axes.set_xlabel(x_label)
-    axes.legend(handles=handles, loc="best", fontsize="small", framealpha=0.9)
+    if axis.integer:
+        axes.xaxis.get_major_locator().set_params(integer=True)
+    _legend_below(axes, handles)
     axes.grid(alpha=0.3)
 
 
@@ -151,18 +165,30 @@ def _contour(sweep: Sweep, key: str, figure: Any, axes: Any) -> None:
     x = second.values * x_scale
     y = first.values * y_scale
     z = np.ma.masked_invalid(sweep.results[key].reshape(shape) * z_scale)
+    # A whole-number axis (ball count, teeth) has nothing between its values: draw cells,
+    # not contours that would invent diagonal boundaries between them.
+    stepped = first.integer or second.integer
+    handles = []
     if z.count() == 0:
         axes.text(0.5, 0.5, "no possible design in this range", ha="center",
                   transform=axes.transAxes)
     else:
-        filled = axes.contourf(x, y, z, levels=24, cmap="viridis")
-        figure.colorbar(filled, ax=axes, label=z_label)
-        margin = sweep.kind.margins[0] if sweep.kind.margins else None
-        if margin is not None:
-            m = np.ma.masked_invalid(sweep.results[margin].reshape(shape))
-            if m.count() and m.min() < 0 < m.max():
-                lines = axes.contour(x, y, m, levels=[0.0], colors="black", linewidths=2.5)
-                axes.clabel(lines, fmt={0.0: f"{margin} = 0"}, fontsize="small")
+        # Colour by the central 96 % of the values: a few very negative margins far from
+        # the limit would otherwise squeeze the interesting band into one colour.
+        low, high = np.percentile(z.compressed(), [2.0, 98.0])
+        if not high > low:
+            low, high = float(z.min()), float(z.max()) + 1e-300
+        if stepped:
+            filled = axes.pcolormesh(x, y, z, shading="nearest", cmap="viridis",
+                                     vmin=low, vmax=high)
+        else:
+            filled = axes.contourf(x, y, np.ma.clip(z, low, high),
+                                   levels=np.linspace(low, high, 25), cmap="viridis",
+                                   extend="both")
+        figure.colorbar(filled, ax=axes, label=z_label, extend="both")
+        ok = sweep.within_limits.reshape(shape)
+        if sweep.kind.margins and ok.any():
+            handles.append(_within_limits_overlay(axes, x, y, ok, stepped))
     axes.set_facecolor("#dddddd")  # masked (impossible) points show as the background
     impossible = sweep.status != 0
     if impossible.any():
@@ -170,3 +196,24 @@ def _contour(sweep: Sweep, key: str, figure: Any, axes: Any) -> None:
                   fontsize="small", color="#333333")
     axes.set_xlabel(x_label)
     axes.set_ylabel(y_label)
+    for target, axis in ((axes.xaxis, second), (axes.yaxis, first)):
+        if axis.integer:
+            target.get_major_locator().set_params(integer=True)
+    if handles:
+        _legend_below(axes, handles)
+
+
+def _within_limits_overlay(axes: Any, x: NDArray, y: NDArray, ok: NDArray,
+                           stepped: bool) -> Any:
+    """Hatch the designs within every limit and outline them; the legend handle."""
+    from matplotlib.patches import Patch
+
+    if stepped:
+        rows, cols = np.nonzero(ok)
+        axes.scatter(x[cols], y[rows], marker="+", color="white", s=18, linewidths=0.8)
+    else:
+        axes.contourf(x, y, ok.astype(float), levels=[0.5, 1.5], colors="none",
+                      hatches=["//"])
+        axes.contour(x, y, ok.astype(float), levels=[0.5], colors="white", linewidths=2.0)
+    return Patch(facecolor="none", edgecolor="black", hatch="" if stepped else "//",
+                 label="within limits" + (" (+)" if stepped else ""))

@@ -1,7 +1,7 @@
 """Independent computations the solvers are tested against.
 
 Nothing here imports bearingcalc: each system is set up as bodies in 3-D and
-its rolling constraints are solved numerically, as physics.md "How to verify"
+its rolling constraints are solved numerically, as docs/docs/physics.md "How the tests check these relations"
 describes, so a slip in a closed form cannot hide behind the same slip here.
 """
 

@@ -2,7 +2,7 @@
 
 Disk and cone: positions written down with sympy, the rolling constraint imposed
 on the velocities of material points, and everything else differentiated
-symbolically (physics.md "How to verify"); bevel gears: a 3-D constraint solve.
+symbolically (docs/docs/physics.md "How the tests check these relations"); bevel gears: a 3-D constraint solve.
 """
 
 from __future__ import annotations
@@ -87,7 +87,7 @@ def test_disk_on_circle_matches_symbolic_differentiation_of_positions(internal):
 
 def test_disk_on_a_fixed_circle_reproduces_the_seed_summary():
     # Seed, "Rolling on a fixed surface": v_G = rω, a_G = rω̇ e_t + r²ω²/(R + r) e_n,
-    # and (physics.md §2) the contact point accelerates at rω²·R/(R + r) toward G.
+    # and (docs/physics.md §2) the contact point accelerates at rω²·R/(R + r) toward G.
     out = solve_disk_on_circle(0.5, 2.0, 3.0, disk_accel=0.25)
     assert_allclose(out["center_speed"], 1.5, rtol=1e-15)
     assert_allclose(out["center_tangential_accel"], 0.125, rtol=1e-15)

@@ -1,4 +1,4 @@
-"""The thrust-bearing solver against independent computations (physics.md §1)."""
+"""The thrust-bearing solver against independent computations (docs/physics.md §1)."""
 
 from __future__ import annotations
 
@@ -53,14 +53,14 @@ def test_every_speed_matches_a_3d_constraint_solve_over_2000_geometries():
 
 
 def test_ball_angular_velocity_lies_on_the_race_contact_line():
-    # physics.md §1: both race contacts at rest put ω_B on C1C2, i.e. along e1 − e2.
+    # docs/physics.md §1: both race contacts at rest put ω_B on C1C2, i.e. along e1 − e2.
     ref = thrust_bearing_3d(0.01, np.radians(25.0), 0.03, 100.0)
     w = ref["ball_angular_velocity"]
     assert abs(w[2]) < 1e-12 and abs(w[0] + w[1]) < 1e-12
 
 
 def test_hand_checked_values_of_physics_md():
-    # physics.md "How to verify": θ = 20°, r = 1.
+    # docs/docs/physics.md "How the tests check these relations": θ = 20°, r = 1.
     theta = np.radians(20.0)
     out = solve_thrust_bearing(1.0, theta, None, 1.0)
     assert_allclose(out["pitch_radius"], 2.24541, atol=5e-6)

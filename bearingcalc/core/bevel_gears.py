@@ -1,6 +1,6 @@
 """Epicyclic bevel gears: gear B on a shaft, gear A turning freely on an arm.
 
-Source: seed note, "Beveled gears"; physics.md §4.
+Source: seed note, "Beveled gears"; docs/physics.md §4.
 
 Gear B turns at Ω about k; the arm S turns at ω_Z about k through the common
 apex O and carries gear A, which meshes with B. Pitch radii a (A) and b (B) at
@@ -70,7 +70,7 @@ def pitch_angles(gear_a_pitch_radius: ArrayLike, gear_b_pitch_radius: ArrayLike,
     -------
     (α, β). [rad]
 
-    Source: physics.md §4.
+    Source: docs/physics.md §4.
 
     >>> alpha, beta = pitch_angles(12, 24, np.radians(90.0))
     >>> round(float(np.degrees(alpha)), 3), round(float(np.degrees(beta)), 3)
@@ -129,7 +129,7 @@ def solve_bevel_gears(gear_a_pitch_radius: ArrayLike, gear_b_pitch_radius: Array
     -------
     dict of arrays keyed as :data:`RESULTS`; NaN where the geometry is impossible.
 
-    Source: seed "Beveled gears"; physics.md §4.
+    Source: seed "Beveled gears"; docs/physics.md §4.
     """
     a = np.asarray(gear_a_pitch_radius, dtype=float)
     b = np.asarray(gear_b_pitch_radius, dtype=float)

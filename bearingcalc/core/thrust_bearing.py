@@ -1,6 +1,6 @@
 """Thrust bearing with pure rolling at the shaft contact.
 
-Source: seed note, "Thrust bearing example"; re-derived in ``shared/physics.md`` §1.
+Source: seed note, "Thrust bearing example"; re-derived in ``docs/physics.md`` §1.
 
 Geometry, in the meridian plane of one ball: ``e2`` along the shaft axis, ``e1``
 radial toward the axis, ``e3 = e1 × e2``. Ball radius r, ball centre G at pitch
@@ -75,7 +75,7 @@ def pure_rolling_pitch_radius(ball_radius: ArrayLike, contact_angle: ArrayLike) 
     -------
     Pitch radius b*. [m] NaN outside 0 < θ < π/4.
 
-    Source: physics.md §1 (seed, thrust bearing, final relation).
+    Source: docs/physics.md §1 (seed, thrust bearing, final relation).
 
     >>> round(float(pure_rolling_pitch_radius(1.0, np.radians(30.0))), 4)
     4.0981
@@ -102,7 +102,7 @@ def pure_rolling_contact_angle(ball_radius: ArrayLike, pitch_radius: ArrayLike) 
     -------
     Contact angle θ in (0, π/4). [rad] NaN where b <= r.
 
-    Source: physics.md §1.
+    Source: docs/physics.md §1.
     """
     r = np.asarray(ball_radius, dtype=float)
     b = np.asarray(pitch_radius, dtype=float)
@@ -125,7 +125,7 @@ def pure_rolling_ball_radius(contact_angle: ArrayLike, pitch_radius: ArrayLike) 
     -------
     Ball radius r. [m] NaN outside 0 < θ < π/4.
 
-    Source: physics.md §1.
+    Source: docs/physics.md §1.
     """
     theta = _angle_in_range(contact_angle)
     b = np.asarray(pitch_radius, dtype=float)
@@ -153,7 +153,7 @@ def spin_to_roll_ratio(ball_radius: ArrayLike, contact_angle: ArrayLike,
     -------
     ρ. [1] NaN where the geometry is impossible.
 
-    Source: physics.md §1.
+    Source: docs/physics.md §1.
     """
     r = np.asarray(ball_radius, dtype=float)
     theta = np.asarray(contact_angle, dtype=float)
@@ -191,7 +191,7 @@ def pitch_radius_window(ball_radius: ArrayLike, contact_angle: ArrayLike,
     -------
     (b_min, b_max). [m]
 
-    Source: physics.md §1.
+    Source: docs/physics.md §1.
     """
     r = np.asarray(ball_radius, dtype=float)
     theta = _angle_in_range(contact_angle)
@@ -252,7 +252,7 @@ def solve_thrust_bearing(ball_radius: ArrayLike | None, contact_angle: ArrayLike
     At most one of ``ball_radius``, ``contact_angle`` and ``pitch_radius`` may be
     None; it is then solved so that the shaft contact rolls purely.
 
-    Kinematics (physics.md §1): the ball turns about the line C1C2 at ω_B,
+    Kinematics (docs/physics.md §1): the ball turns about the line C1C2 at ω_B,
 
     .. math:: \omega_S = \frac{\sqrt2}{2}\,\frac{r(1 + \sin\theta + \cos\theta)}
                                           {b - r\cos\theta}\,\omega_B,

@@ -1,4 +1,4 @@
-"""Spec of ``kind: cone-on-plane`` (physics.md §3)."""
+"""Spec of ``kind: cone-on-plane`` (docs/physics.md §3)."""
 
 from __future__ import annotations
 

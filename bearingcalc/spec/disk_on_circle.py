@@ -1,4 +1,4 @@
-"""Spec of ``kind: disk-on-circle`` (physics.md §2)."""
+"""Spec of ``kind: disk-on-circle`` (docs/physics.md §2)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Spec of ``kind: thrust-bearing`` (physics.md §1)."""
+"""Spec of ``kind: thrust-bearing`` (docs/physics.md §1)."""
 
 from __future__ import annotations
 
@@ -17,7 +17,7 @@ class ThrustBearingLimits(SpecModel):
 
 
 class ThrustBearingSpec(SpecModel):
-    """A thrust bearing: balls between a fixed race and a shaft (physics.md §1).
+    """A thrust bearing: balls between a fixed race and a shaft (docs/physics.md §1).
 
     At most one of the ball size, ``contact_angle`` and ``pitch_radius`` may be
     left out; it is then solved for pure rolling.
