@@ -36,9 +36,14 @@ def console(stream: IO[str] | None = None) -> Any:
 
     from rich.console import Console
 
+    class _Console(Console):
+        def on_broken_pipe(self) -> None:
+            # rich would exit with status 1 here; the CLI keeps the run's own status.
+            raise BrokenPipeError
+
     target = stream if stream is not None else sys.stdout
     is_terminal = getattr(target, "isatty", lambda: False)()
-    return Console(file=stream, highlight=False, width=None if is_terminal else PIPE_WIDTH)
+    return _Console(file=stream, highlight=False, width=None if is_terminal else PIPE_WIDTH)
 
 
 def _text(text: str) -> str:
@@ -80,7 +85,8 @@ def write_csv(evaluations: Sequence[Evaluation], stream: IO[str]) -> None:
                      *(f"{key} [{unit}]" for key, unit in columns.items())])
     for evaluation in evaluations:
         values = [evaluation.results.get(key) for key in columns]
-        writer.writerow([evaluation.source, evaluation.kind, evaluation.name,
+        writer.writerow([printable(evaluation.source), evaluation.kind,
+                         printable(evaluation.name),
                          str(evaluation.within_limits).lower(),
                          *("" if value is None else repr(value) for value in values)])
     stream.write(buffer.getvalue())

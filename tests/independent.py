@@ -1,8 +1,8 @@
 """Independent computations the solvers are tested against.
 
 Nothing here imports bearingcalc: each system is set up as bodies in 3-D and
-its rolling constraints are solved numerically, as docs/docs/physics.md "How the tests check these relations"
-describes, so a slip in a closed form cannot hide behind the same slip here.
+its rolling constraints are solved numerically, as docs/physics.md ("How the tests
+check these relations") describes, so a slip in a closed form cannot hide behind the same slip here.
 """
 
 from __future__ import annotations

@@ -2,7 +2,8 @@
 
 Disk and cone: positions written down with sympy, the rolling constraint imposed
 on the velocities of material points, and everything else differentiated
-symbolically (docs/docs/physics.md "How the tests check these relations"); bevel gears: a 3-D constraint solve.
+symbolically (docs/physics.md, "How the tests check these relations"); bevel gears:
+a 3-D constraint solve.
 """
 
 from __future__ import annotations

@@ -60,7 +60,7 @@ def test_ball_angular_velocity_lies_on_the_race_contact_line():
 
 
 def test_hand_checked_values_of_physics_md():
-    # docs/docs/physics.md "How the tests check these relations": θ = 20°, r = 1.
+    # docs/physics.md "How the tests check these relations": θ = 20°, r = 1.
     theta = np.radians(20.0)
     out = solve_thrust_bearing(1.0, theta, None, 1.0)
     assert_allclose(out["pitch_radius"], 2.24541, atol=5e-6)

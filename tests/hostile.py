@@ -1,0 +1,170 @@
+"""A generated corpus of hostile spec files: every class of bad input, on every kind.
+
+Each case is a file name and its bytes. The good example specs are mutated one
+field at a time with values that break the unit parser, the YAML reader, the
+number rules, the ranges and the physics; structural attacks (aliases, nesting,
+tags, encodings) are added whole. Every case is invalid: `solve`, `check`,
+`tolerance` and `sweep` must each refuse it with clear lines naming the file, exit
+status 2, and no traceback, no internal error and no non-finite number.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+SPECS = Path(__file__).resolve().parent.parent / "specs"
+
+#: kind -> (example spec, its quantity fields that take hostile values, a field to sweep)
+KINDS = {
+    "thrust-bearing": ("thrust-bearing.yaml",
+                       ("ball_diameter", "contact_angle", "pitch_radius", "shaft_speed"),
+                       "shaft_speed=100rpm:200rpm:3"),
+    "bevel-gears": ("bevel-gears.yaml", ("module", "shaft_angle", "arm_speed", "gear_b_speed"),
+                    "arm_speed=100rpm:200rpm:3"),
+    "disk-on-circle": ("disk-on-circle.yaml",
+                       ("disk_radius", "surface_radius", "disk_speed", "disk_accel"),
+                       "disk_speed=100rpm:200rpm:3"),
+    "cone-on-plane": ("cone-on-plane.yaml", ("half_angle", "spin_speed"),
+                      "half_angle=10deg:20deg:3"),
+}
+
+#: Quantity strings (written quoted) that must each be refused.
+BAD_QUANTITY_TEXT = [
+    "26 mm)", "1500 rpm**0", "30 deg!", "12.7 mm;", "26 mm/", "12,7 mm", "26 mm(", "2 mm{",
+    "3 [mm]", "5 mm**2**3**4", "1" + "0" * 400 + " mm", "1" + "0" * 400 + " rpm", "mm", "",
+    " ", "nan mm", "inf deg", "-inf rpm", "1e400 mm", "1e305 mm", "-1e305 rad", "１２ mm",
+    "12 furlongz", "25 Hz", "12 N", "3 kg", "12.7 mm mm mm mm" + " mm" * 40, "7 mm\x00",
+    "7 mm\x1b[31m", "7 mm\nkind: x", "7 m" * 300, "1e-400", "12..7 mm", "--3 mm", "3 mm ± -1 mm",
+    "3 mm ± 1 mm ± 1 mm", "3 mm ± 1 kg", "3 ± mm", "0x1F mm", "1_000 mm", "∞ mm", "12 mm#x",
+]
+#: Raw YAML values (written unquoted) that must each be refused for a quantity field.
+BAD_QUANTITY_YAML = [
+    ".inf", "-.inf", ".nan", "0x1F", "014", "1:00", "2024-01-01", "true", "[1, 2]",
+    "{a: 1}", "12.7", "1e-2", "1" + "0" * 400, "!!binary aGk=", "!!python/none ''",
+    "{nominal: 3 mm}", "{nominal: 3 mm, tolerance: 1 mm, plus: 1 mm}",
+    "{nominal: 3 mm, tolerance: 1 mm, sigma_level: 0.00001}",
+    "{nominal: 3 mm, tolerance: 1 mm, distribution: weird}",
+    "{nominal: 3 mm, tolerance: 1 mm, bogus: 1}", "*undefined", "&a [*a]",
+]
+
+#: Whole files: structure, encoding and size attacks.
+STRUCTURAL = {
+    "empty.yaml": b"",
+    "only-comment.yaml": b"# nothing\n",
+    "binary.yaml": b"kind: thrust-bearing\x00\x01\x02\n",
+    "latin1.yaml": "kind: thrust-bearing\nname: caf\xe9\n".encode("latin-1"),
+    "utf16.yaml": "kind: thrust-bearing\n".encode("utf-16"),
+    "list.yaml": b"- kind: thrust-bearing\n",
+    "scalar.yaml": b"just words\n",
+    "tab.yaml": b"kind: thrust-bearing\n\tname: x\n",
+    "unclosed.yaml": b"kind: thrust-bearing\nball_diameter: [12.7 mm\n",
+    "python-tag.yaml": b"kind: !!python/object/apply:os.system [ls]\n",
+    "merge-key.yaml": b"base: &b {shaft_speed: 1 rpm}\nkind: thrust-bearing\n<<: *b\n",
+    "alias-bomb.yaml": (b"a: &a [x, x, x, x, x, x, x, x, x]\nb: &b [*a, *a, *a, *a, *a, *a, *a]\n"
+                        b"c: &c [*b, *b, *b, *b, *b, *b, *b]\nd: &d [*c, *c, *c, *c, *c, *c]\n"
+                        b"e: [*d, *d, *d, *d, *d, *d, *d, *d]\nkind: thrust-bearing\n"),
+    "deep.yaml": b"kind: thrust-bearing\nx: " + b"[" * 5000 + b"]" * 5000 + b"\n",
+    "deep-map.yaml": b"kind: thrust-bearing\nx: " + b"{a: " * 3000 + b"1" + b"}" * 3000 + b"\n",
+    "too-large.yaml": b"kind: thrust-bearing\n# " + b"x" * (1024 * 1024 + 10) + b"\n",
+    "duplicate.yaml": b"kind: thrust-bearing\nkind: thrust-bearing\n",
+    "kind-missing.yaml": b"name: x\n",
+    "kind-typo.yaml": b"kind: thrust-bering\n",
+    "kind-number.yaml": b"kind: 12\n",
+    "kind-list.yaml": b"kind: [thrust-bearing]\n",
+    "key-number.yaml": b"kind: thrust-bearing\n12: x\n",
+    "key-null.yaml": b"kind: thrust-bearing\n~: x\n",
+    "date-name.yaml": b"kind: thrust-bearing\nname: 2024-01-01\n",
+    "two-docs-bad.yaml": b"kind: thrust-bearing\n---\nkind: nonsense\n",
+    "crlf.yaml": b"kind: thrust-bearing\r\nball_diameter: 12.7 mm)\r\n",
+    "bom-bad.yaml": b"\xef\xbb\xbfkind: thrust-bearing\nball_diameter: 12,7 mm\n",
+    "long-line.yaml": b"kind: thrust-bearing\nball_diameter: \"" + b"9" * 200_000 + b" mm\"\n",
+    "long-unit.yaml": b"kind: thrust-bearing\nball_diameter: \"1 " + b"mm*" * 100_000 + b"mm\"\n",
+    "control-key.yaml": b"kind: thrust-bearing\n\"\\e[31mevil\": 1\n",
+    "undefined-alias.yaml": b"kind: thrust-bearing\nball_diameter: *nothing\n",
+}
+
+
+def _mutate(text: str, field: str, raw_value: str) -> str:
+    """``text`` with the block-style line of ``field`` given ``raw_value``."""
+    pattern = re.compile(rf"^(\s*){re.escape(field)}:.*$", re.MULTILINE)
+    if not pattern.search(text):
+        return text + f"{field}: {raw_value}\n"
+    return pattern.sub(lambda m: f"{m.group(1)}{field}: {raw_value}", text, count=1)
+
+
+def _physics_cases() -> dict[str, str]:
+    """Valid-looking files that break a range or the physics of their kind."""
+    tb = (SPECS / "thrust-bearing.yaml").read_text()
+    bevel = (SPECS / "bevel-gears.yaml").read_text()
+    disk = (SPECS / "disk-on-circle.yaml").read_text()
+    cone = (SPECS / "cone-on-plane.yaml").read_text()
+    return {
+        "thrust-angle-50.yaml": _mutate(tb, "contact_angle", "50 deg"),
+        "thrust-angle-0.yaml": _mutate(tb, "contact_angle", "0 deg"),
+        "thrust-angle-50-solved.yaml": _mutate(tb, "contact_angle", "50 deg").replace(
+            "pitch_radius: 26 mm", ""),
+        "thrust-radius-small.yaml": _mutate(tb, "pitch_radius", "5 mm"),
+        "thrust-balls-40.yaml": _mutate(tb, "ball_count", "40"),
+        "thrust-balls-huge.yaml": _mutate(tb, "ball_count", "1" + "0" * 400),
+        "thrust-balls-half.yaml": _mutate(tb, "ball_count", "4.5"),
+        "thrust-balls-zero.yaml": _mutate(tb, "ball_count", "0"),
+        "thrust-balls-text.yaml": _mutate(tb, "ball_count", "twelve"),
+        "thrust-both-sizes.yaml": tb + "ball_radius: 6.35 mm\n",
+        "thrust-limit-negative.yaml": _mutate(tb, "max_spin_to_roll", "-0.1"),
+        "thrust-limit-inf.yaml": _mutate(tb, "max_spin_to_roll", ".inf"),
+        "thrust-limit-text.yaml": _mutate(tb, "max_spin_to_roll", "low"),
+        "thrust-limit-huge.yaml": _mutate(tb, "max_spin_to_roll", "1e300"),
+        "thrust-limits-scalar.yaml": _mutate(tb, "limits", "0.1").replace(
+            "  max_spin_to_roll: 0.01", ""),
+        "thrust-unknown-key.yaml": tb + "pich_radius: 25 mm\n",
+        "thrust-missing-speed.yaml": tb.replace("shaft_speed: 1500 rpm", ""),
+        "bevel-teeth-4.yaml": bevel.replace("{teeth: 24}", "{teeth: 4}"),
+        "bevel-teeth-radii.yaml": bevel.replace("{teeth: 12}", "{teeth: 12, pitch_radius: 20 mm}")
+        .replace("{teeth: 24}", "{teeth: 24, pitch_radius: 20 mm}").replace(
+            "module: 2.5 mm", ""),
+        "bevel-angle-200.yaml": _mutate(bevel, "shaft_angle", "200 deg"),
+        "bevel-angle-0.yaml": _mutate(bevel, "shaft_angle", "0 deg"),
+        "bevel-no-module.yaml": bevel.replace("module: 2.5 mm", ""),
+        "bevel-gear-scalar.yaml": bevel.replace("{teeth: 12}", "12"),
+        "bevel-mismatch-limit.yaml": _mutate(bevel, "max_apex_mismatch", "-1"),
+        "disk-internal-big.yaml": _mutate(disk, "disk_radius", "90 mm"),
+        "disk-contact-bad.yaml": _mutate(disk, "contact", "sideways"),
+        "disk-negative.yaml": _mutate(disk, "surface_radius", "-80 mm"),
+        "cone-angle-90.yaml": _mutate(cone, "half_angle", "90 deg"),
+        "cone-angle-neg.yaml": _mutate(cone, "half_angle", "-10 deg"),
+    }
+
+
+def hostile_corpus() -> dict[str, bytes]:
+    """File name -> bytes of every hostile case (over 300)."""
+    cases: dict[str, bytes] = dict(STRUCTURAL)
+    for kind, (example, fields, _) in KINDS.items():
+        text = (SPECS / example).read_text()
+        # Each bad value once per kind, on the kind's quantity fields in turn: every
+        # field meets many classes, and the corpus stays quick to run.
+        for i, value in enumerate(BAD_QUANTITY_TEXT):
+            field = fields[i % len(fields)]
+            cases[f"{kind}-{field}-text{i}.yaml"] = _mutate(
+                text, field, json.dumps(value)).encode()
+        for i, value in enumerate(BAD_QUANTITY_YAML):
+            field = fields[(i + 1) % len(fields)]
+            cases[f"{kind}-{field}-yaml{i}.yaml"] = _mutate(text, field, value).encode()
+    for name, text in _physics_cases().items():
+        cases[f"{PHYSICS_PREFIX}{name}"] = text.encode()
+    return cases
+
+
+#: Names of the cases whose fields are each valid but whose design is impossible: a
+#: sweep may start from one (its points are gaps), every other command refuses it.
+PHYSICS_PREFIX = "physics-"
+
+
+def sweep_option(name: str) -> str:
+    """A --vary option for the kind a case was made from (any kind will do otherwise)."""
+    name = name.removeprefix(PHYSICS_PREFIX)
+    for kind, (_, _, vary) in KINDS.items():
+        if name.startswith(kind) or name.startswith(kind.split("-")[0]):
+            return vary
+    return KINDS["thrust-bearing"][2]

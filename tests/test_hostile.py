@@ -1,0 +1,112 @@
+"""Every hostile case of the generated corpus through every command (issue: hardening).
+
+solve, check, tolerance and sweep must each refuse each case with lines that name
+the file (and the line, where the document could be read), exit status 2, no
+traceback or internal error, and never touch an existing output file.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+
+import pytest
+
+from tests.conftest import ROOT
+from tests.hostile import PHYSICS_PREFIX, hostile_corpus, sweep_option
+
+CORPUS = hostile_corpus()
+GOOD = sorted((ROOT / "specs").glob("*.yaml"))
+
+
+def test_the_corpus_is_large_and_every_class_is_in_it():
+    assert len(CORPUS) >= 300
+    for fragment in ("mm)", "rpm**0", "12,7", "alias-bomb", "deep", "merge-key", "latin1"):
+        assert any(fragment in name or fragment.encode() in data
+                   for name, data in CORPUS.items()), fragment
+
+
+@pytest.fixture(scope="module")
+def corpus_dir(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("hostile")
+    for name, data in CORPUS.items():
+        (folder / name).write_bytes(data)
+    return folder
+
+
+def _clean(run, path) -> list[str]:
+    """Problems with a run that must refuse ``path``: empty list when it did right."""
+    problems = []
+    if run.code != 2:
+        problems.append(f"exit {run.code}")
+    if run.exception is not None and not isinstance(run.exception, SystemExit):
+        problems.append(f"exception {run.exception!r}")
+    if run.out:
+        problems.append(f"stdout {run.out[:80]!r}")
+    lines = run.err.splitlines()
+    if not lines:
+        problems.append("no message")
+    for line in lines:
+        if not line.startswith(f"{path}:") and not line.startswith(f"{path}#"):
+            problems.append(f"line without the file: {line[:120]!r}")
+        if "Traceback" in line or "internal error" in line:
+            problems.append(f"internal: {line[:160]!r}")
+        if any(ord(c) < 32 for c in line):
+            problems.append(f"control character: {line[:80]!r}")
+    return problems
+
+
+def test_solve_refuses_every_case_with_clear_lines(cli, corpus_dir):
+    failures = {}
+    for name in CORPUS:
+        path = corpus_dir / name
+        problems = _clean(cli("solve", path), path)
+        if problems:
+            failures[name] = problems
+    assert not failures, failures
+
+
+def test_tolerance_and_sweep_refuse_every_case_and_write_nothing(cli, corpus_dir, tmp_path):
+    out = tmp_path / "report.txt"
+    failures = {}
+    for name in CORPUS:
+        path = corpus_dir / name
+        commands = [("tolerance", path, "-n", "64")]
+        if not name.startswith(PHYSICS_PREFIX):  # a sweep may start from an impossible design
+            commands.append(("sweep", path, "--vary", sweep_option(name)))
+        for command in commands:
+            out.write_text("keep")
+            run = cli(*command, "-o", out)
+            problems = _clean(run, path)
+            if out.read_text() != "keep":
+                problems.append("the output file was touched")
+            if problems:
+                failures[f"{command[0]} {name}"] = problems
+    assert not failures, failures
+
+
+def test_check_reports_every_good_file_in_a_folder_full_of_hostile_ones(cli, corpus_dir,
+                                                                       tmp_path):
+    folder = tmp_path / "mixed"
+    shutil.copytree(corpus_dir, folder)
+    for good in GOOD:
+        shutil.copy(good, folder / f"good-{good.name}")
+    run = cli("check", folder, "--format", "json")
+    assert run.code == 2, run.err
+
+    def no_constants(word):
+        raise AssertionError(f"non-finite number {word} in the report")
+
+    records = [json.loads(line, parse_constant=no_constants) for line in run.out.splitlines()]
+    by_file = {}
+    for record in records:
+        by_file.setdefault(record["spec"].split("#")[0], []).append(record)
+    for good in GOOD:
+        (record,) = by_file[str(folder / f"good-{good.name}")]
+        assert record["status"] in ("pass", "fail"), record
+    for name in CORPUS:
+        statuses = [r["status"] for r in by_file[str(folder / name)]]
+        assert "invalid" in statuses, (name, statuses)
+    for record in records:
+        for message in record["messages"]:
+            assert "internal error" not in message and "Traceback" not in message, message
