@@ -127,7 +127,9 @@ def _line(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> None:
         scale, unit = to_display(1.0, si_unit)
         for key in members:
             colour = next(colours, "#333333")
-            (line,) = target.plot(x, sweep.results[key] * scale, color=colour, label=key)
+            # A whole-number input has no values between its points: mark the points.
+            (line,) = target.plot(x, sweep.results[key] * scale, color=colour, label=key,
+                                  marker="o" if axis.integer else None, markersize=4)
             handles.append(line)
             for i, level in enumerate(_limit_levels(sweep, key)):
                 limit = target.axhline(level * scale, color=colour, linestyle=":",

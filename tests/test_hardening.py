@@ -280,6 +280,21 @@ def test_ctrl_c_stops_within_a_second_with_status_130(args):
     assert elapsed < 3.0, elapsed
 
 
+def test_ctrl_c_stops_a_big_check_within_a_second_with_status_130(tmp_path):
+    text = GOOD.read_text()
+    for i in range(6000):
+        (tmp_path / f"spec{i}.yaml").write_text(text)
+    process = subprocess.Popen([sys.executable, "-m", "bearingcalc", "check", str(tmp_path)],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    time.sleep(1.0)
+    if process.poll() is not None:
+        pytest.skip("the machine checked 6000 specs in under a second")
+    sent = time.perf_counter()
+    process.send_signal(signal.SIGINT)
+    code = process.wait(timeout=30)
+    assert code == 130 and time.perf_counter() - sent < 3.0
+
+
 # --- 6. YAML 1.2 numbers -------------------------------------------------------------------
 
 def test_numbers_follow_the_yaml_1_2_core_schema():
