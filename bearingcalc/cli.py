@@ -105,9 +105,7 @@ def solve(
                 if evaluations:
                     reports.write_csv(evaluations, stream)
             else:
-                descriptions = {name: {key: meaning for key, (_, meaning) in
-                                       kind.results.items()} for name, kind in KINDS.items()}
-                reports.print_tables(evaluations, descriptions, stream)
+                reports.print_tables(evaluations, KINDS, stream)
 
         _emit(write, None)
         if invalid:

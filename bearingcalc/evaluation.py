@@ -77,7 +77,7 @@ def evaluate_documents(documents: Sequence[Document]) -> list[Evaluation | SpecE
     solved in one vectorised call, so a batch costs little more than its parsing.
     """
     outcomes: list[Evaluation | SpecError | None] = [None] * len(documents)
-    groups: dict[tuple[str, tuple[str, ...]], list[tuple[int, SpecModel, dict[str, Any]]]] = {}
+    groups: dict[tuple[str, tuple[Any, ...]], list[tuple[int, SpecModel, dict[str, Any]]]] = {}
     for index, document in enumerate(documents):
         try:
             kind, spec = parse_document(document)
@@ -88,8 +88,11 @@ def evaluate_documents(documents: Sequence[Document]) -> list[Evaluation | SpecE
         except Exception as exc:  # one spec's surprise never costs the others their report
             outcomes[index] = _internal_error(document, exc)
             continue
-        absent = tuple(key for key, value in inputs.items() if value is None)
-        groups.setdefault((kind.name, absent), []).append((index, spec, inputs))
+        # Specs solved together must give the same inputs and the same words (a bearing
+        # type): which results exist depends on both.
+        shape = tuple((key, value) if isinstance(value, str) else (key, value is None)
+                      for key, value in inputs.items())
+        groups.setdefault((kind.name, shape), []).append((index, spec, inputs))
     for (kind_name, _), members in groups.items():
         kind = KINDS[kind_name]
         try:
@@ -108,15 +111,18 @@ def _solve_group(documents: Sequence[Document], kind: Kind,
                  members: list[tuple[int, SpecModel, dict[str, Any]]],
                  outcomes: list[Evaluation | SpecError | None]) -> None:
     """Solve specs of one kind with the same inputs given in one vectorised call."""
-    stacked = {key: None if value is None else np.array([m[2][key] for m in members])
+    stacked = {key: value if value is None or isinstance(value, str)
+               else np.array([m[2][key] for m in members])
                for key, value in members[0][2].items()}
-    raw, status = kind.evaluate(stacked)
+    raw, status, flags = kind.evaluate_with_flags(stacked)
     columns = {key: values.tolist() for key, values in raw.items()}
+    flagged = {key: np.asarray(values, dtype=bool).tolist() for key, values in flags.items()}
     codes = status.tolist()
     for row, (index, spec, _) in enumerate(members):
         values = {key: column[row] for key, column in columns.items()}
+        raised = [kind.warnings[key] for key, column in flagged.items() if column[row]]
         try:
-            outcomes[index] = _judge(documents[index], kind, spec, values, codes[row])
+            outcomes[index] = _judge(documents[index], kind, spec, values, codes[row], raised)
         except SpecError as error:
             outcomes[index] = error
 
@@ -169,7 +175,7 @@ def load_one_spec(path: str | Path) -> tuple[Kind, SpecModel, Document]:
 
 
 def _judge(document: Document, kind: Kind, spec: SpecModel, raw: dict[str, float],
-           code: int) -> Evaluation:
+           code: int, raised: Sequence[str] = ()) -> Evaluation:
     """One spec's results from its solved values and status code."""
     if code:
         name, reason = kind.status_reasons[code]
@@ -178,7 +184,7 @@ def _judge(document: Document, kind: Kind, spec: SpecModel, raw: dict[str, float
         got = f", got {written}" if isinstance(written, (str, int, float)) else ""
         raise document.error(f"{reason}{got}", field=name)
     results: dict[str, float | None] = {}
-    warnings: list[str] = []
+    warnings: list[str] = [*getattr(spec, "warnings", list)(), *raised]
     for key, value in raw.items():
         if math.isnan(value):
             raise document.error(f"{key} cannot be computed for this design; please report it")

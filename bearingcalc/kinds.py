@@ -15,7 +15,14 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from bearingcalc.core import bevel_gears, cone_on_plane, disk_on_circle, thrust_bearing
+from bearingcalc.core import (
+    ball_bearing,
+    bevel_gears,
+    cone_on_plane,
+    disk_on_circle,
+    thrust_bearing,
+)
+from bearingcalc.spec.ball_bearing import BallBearingSpec
 from bearingcalc.spec.bevel_gears import BevelGearsSpec
 from bearingcalc.spec.cone_on_plane import ConeOnPlaneSpec
 from bearingcalc.spec.disk_on_circle import DiskOnCircleSpec
@@ -52,31 +59,57 @@ class Kind:
         but whose numbers are not finite (an overflow) gets ``OUT_OF_RANGE``, so no
         command ever prints or judges a non-finite number as a design's result.
         """
+        results, status, _ = self.evaluate_with_flags(inputs, wanted)
+        return results, status
+
+    def evaluate_with_flags(self, inputs: Mapping[str, Any],
+                            wanted: Collection[str] | None = None
+                            ) -> tuple[dict[str, NDArray], NDArray, dict[str, NDArray]]:
+        """:meth:`evaluate`, plus the solver's warning flags (key of ``warnings`` ->
+        where it holds)."""
         with np.errstate(all="ignore"):
-            results, status = self.solver.evaluate(inputs, wanted)
+            raw, status = self.solver.evaluate(inputs, wanted)
+            flags = {key: raw[key] for key in self.warnings if key in raw}
+            results = {key: value for key, value in raw.items() if key not in flags}
             for key, values in results.items():
                 finite = np.isfinite(values)
                 if key in self.unbounded:
                     finite |= values == np.inf
                 if not finite.all():
                     status = np.where(finite | (status != 0), status, np.int8(OUT_OF_RANGE))
-        return results, status
+        return results, status, flags
 
     def limit_values(self, inputs: Mapping[str, Any]) -> dict[str, float]:
         """Result key -> its symmetric limit, read from the solver ``inputs``."""
         return {key: float(inputs[limit]) for key, limit in self.limits.items()}
 
     def within_limits(self, results: Mapping[str, NDArray], status: NDArray) -> NDArray:
-        """Where a design is possible (status 0) and every margin is >= 0."""
+        """Where a design is possible (status 0) and every margin it has is >= 0."""
         ok = status == 0
         for margin in self.margins:
-            ok = ok & (results[margin] >= 0)
+            if margin in results:
+                ok = ok & (results[margin] >= 0)
         return ok
 
     @property
     def results(self) -> dict[str, tuple[str, str]]:
         """Result key -> (SI unit, meaning), in report order."""
         return self.solver.RESULTS  # type: ignore[no-any-return]
+
+    @property
+    def groups(self) -> dict[str, tuple[str, ...]]:
+        """Table heading -> its results, for kinds with many results (else empty)."""
+        return getattr(self.solver, "GROUPS", {})
+
+    @property
+    def display(self) -> dict[str, tuple[str, float]]:
+        """Result key -> (table unit, factor from SI) where the SI unit alone would not do."""
+        return getattr(self.solver, "DISPLAY", {})
+
+    @property
+    def warnings(self) -> dict[str, str]:
+        """Warning flag key -> message, for conditions the solver finds per design."""
+        return getattr(self.solver, "WARNINGS", {})
 
     @property
     def status_reasons(self) -> dict[int, tuple[str, str]]:
@@ -101,5 +134,8 @@ KINDS: dict[str, Kind] = {
              BevelGearsSpec, bevel_gears, margins=("slip_margin",),
              governing=("apex_mismatch", "slip_margin"),
              limits={"apex_mismatch": "max_apex_mismatch"}),
+        Kind("ball-bearing", "a rolling ball bearing: ISO 281 rating life, ISO 76 static safety",
+             BallBearingSpec, ball_bearing, margins=("life_margin", "static_safety_margin"),
+             governing=("life_margin", "modified_rating_life", "static_safety_factor")),
     )
 }

@@ -8,7 +8,7 @@ from __future__ import annotations
 import csv
 import io
 import json
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from typing import IO, TYPE_CHECKING, Any
 
 import numpy as np
@@ -92,32 +92,36 @@ def write_csv(evaluations: Sequence[Evaluation], stream: IO[str]) -> None:
     stream.write(buffer.getvalue())
 
 
-def print_tables(evaluations: Iterable[Evaluation], descriptions: dict[str, dict[str, str]],
+def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
                  stream: IO[str] | None = None) -> None:
     """A table per evaluation in engineering units, with a PASS/FAIL verdict.
 
-    ``descriptions`` maps kind -> result key -> meaning. The verdict is written
-    in words, so the table reads the same without colour.
+    ``kinds`` maps a kind's name to its registry entry, which gives each result's
+    meaning, the headings that group a long table and any table units of its own.
+    The verdict is written in words, so the table reads the same without colour.
     """
     from rich.table import Table
 
     out = console(stream)
     for evaluation in evaluations:
+        kind = kinds[evaluation.kind]
         table = Table(title=_text(f"{evaluation.name}  ({evaluation.kind}, {evaluation.source})"),
                       title_justify="left")
         table.add_column("result")
         table.add_column("value", justify="right")
         table.add_column("unit")
         table.add_column("meaning", style="dim")
-        meanings = descriptions.get(evaluation.kind, {})
-        for key, value in evaluation.results.items():
-            if value is None:
-                shown, unit = "unbounded", to_display(0.0, evaluation.units[key])[1]
-            else:
-                number, unit = to_display(value, evaluation.units[key])
-                shown = format_number(number)
-            style = "bold" if key in evaluation.margins else None
-            table.add_row(key, shown, unit, meanings.get(key, ""), style=style)
+        for heading, keys in _grouped(evaluation.results, kind.groups):
+            if heading:
+                table.add_row(f"[bold]{heading}[/]", end_section=False)
+            for key in keys:
+                value = evaluation.results[key]
+                unit, factor = kind.display.get(key) or to_display(1.0, evaluation.units[key])[::-1]
+                shown = "unbounded" if value is None else format_number(value * factor)
+                style = "bold" if key in evaluation.margins else None
+                table.add_row(key, shown, unit, kind.results[key][1], style=style)
+            if heading:
+                table.add_section()
         out.print(table)
         if not evaluation.margins:
             out.print("[bold green]PASS[/]: no limits apply to this kind")
@@ -128,6 +132,19 @@ def print_tables(evaluations: Iterable[Evaluation], descriptions: dict[str, dict
         for warning in evaluation.warnings:
             out.print(f"[yellow]warning[/]: {_text(warning)}")
         out.print()
+
+
+def _grouped(results: Mapping[str, Any], groups: Mapping[str, Sequence[str]]
+             ) -> list[tuple[str, list[str]]]:
+    """(heading, keys) in table order: each group's results that are present, then the
+    rest under no heading; one unnamed group when the kind has no headings."""
+    if not groups:
+        return [("", list(results))]
+    placed = [(heading, [key for key in keys if key in results])
+              for heading, keys in groups.items()]
+    grouped = {key for _, keys in placed for key in keys}
+    rest = [key for key in results if key not in grouped]
+    return [(heading, keys) for heading, keys in placed if keys] + ([("", rest)] if rest else [])
 
 
 def format_number(value: float) -> str:
@@ -334,7 +351,8 @@ def _terminal_histogram(console: Any, key: str, report: StudyReport, si_unit: st
     if totals.size == 0:
         return
     unit = to_display(0.0, si_unit)[1]
-    console.print(f"\n{key}{f' [{unit}]' if unit else ''}, Monte Carlo histogram:")
+    console.print()
+    console.print(_text(f"{key}{f' [{unit}]' if unit else ''}, Monte Carlo histogram:"))
     peak = int(totals.max()) or 1
     for low, high, total in zip(lows, highs, totals.tolist(), strict=True):
         bar = "█" * round(width * total / peak)

@@ -122,10 +122,15 @@ class Study:
         designs in the rows of ``columns`` (n, d)."""
         keys = self.keys if keys is None else keys
         values = {item.name: columns[:, i] for i, item in enumerate(self.inputs)}
-        wanted = {*keys, *self.kind.margins}
+        wanted = {*keys, *self.margins}
         results, status = evaluate_with(self.kind, self.spec, values, wanted)
         bad = status != 0
         return {key: np.where(bad, np.nan, results[key]) for key in wanted}, status
+
+    @property
+    def margins(self) -> list[str]:
+        """The kind's margins that this spec has (a margin needs its limit)."""
+        return [key for key in self.kind.margins if key in self.nominal]
 
     # --- worst case -------------------------------------------------------------------
 
@@ -669,7 +674,7 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
     histograms: dict[str, tuple[NDArray, NDArray]] = {}
     if "monte-carlo" in methods:
         mc = study.monte_carlo(samples, seed, sampler, threads=threads,
-                               keys=list(dict.fromkeys([*focus, *kind.margins])),
+                               keys=list(dict.fromkeys([*focus, *study.margins])),
                                progress=progress)
         for key, stats in mc.stats.items():
             record["results"][key]["monte_carlo"] = stats
@@ -687,7 +692,7 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
             else:
                 record["results"][key]["sobol"] = entry
     return StudyReport(_finite(record), histograms, governing, study.limit_values,
-                       kind.margins)
+                       tuple(study.margins))
 
 
 def _finite(value: Any) -> Any:

@@ -35,6 +35,7 @@ class Dimension:
     root: str            # pint's root units, "meter"
     example: str         # "12.7 mm"
     display_unit: str    # engineering unit of tables, "mm"
+    si_per_root: float = 1.0  # SI units per pint root unit (pint's mass root is the gram)
 
 
 LENGTH = Dimension("length", "m", "meter", "12.7 mm", "mm")
@@ -42,7 +43,27 @@ ANGLE = Dimension("angle", "rad", "radian", "20 deg", "deg")
 ANGULAR_SPEED = Dimension("angular speed", "rad/s", "radian / second", "1500 rpm", "rpm")
 ANGULAR_ACCEL = Dimension("angular acceleration", "rad/s²", "radian / second ** 2",
                           "10 rad/s^2", "rad/s²")
-DIMENSIONS = {d.name: d for d in (LENGTH, ANGLE, ANGULAR_SPEED, ANGULAR_ACCEL)}
+FORCE = Dimension("force", "N", "gram * meter / second ** 2", "10 kN", "kN", 1e-3)
+STRESS = Dimension("stress", "Pa", "gram / meter / second ** 2", "4200 MPa", "MPa", 1e-3)
+TIME = Dimension("time", "s", "second", "20000 h", "h")
+KINEMATIC_VISCOSITY = Dimension("kinematic viscosity", "m²/s", "meter ** 2 / second",
+                                "20 mm^2/s", "mm²/s")
+#: Temperatures carry an offset (0 degC = 273.15 K), which pint's root factor leaves out:
+#: they are read from ``TEMPERATURE_UNITS`` only.
+TEMPERATURE = Dimension("temperature", "K", "kelvin", "80 degC", "degC")
+DENSITY = Dimension("density", "kg/m³", "gram / meter ** 3", "7850 kg/m^3", "kg/m³", 1e-3)
+POWER = Dimension("power", "W", "gram * meter ** 2 / second ** 3", "9.4 kW", "kW", 1e-3)
+TORQUE = Dimension("torque", "N·m", "gram * meter ** 2 / second ** 2", "150 N*m", "N·m", 1e-3)
+DIMENSIONS = {d.name: d for d in (LENGTH, ANGLE, ANGULAR_SPEED, ANGULAR_ACCEL, FORCE, STRESS,
+                                  TIME, KINEMATIC_VISCOSITY, TEMPERATURE, DENSITY, POWER,
+                                  TORQUE)}
+
+#: unit -> (scale, offset): kelvin = scale · value + offset.
+TEMPERATURE_UNITS: dict[str, tuple[float, float]] = {
+    "K": (1.0, 0.0), "kelvin": (1.0, 0.0),
+    "degC": (1.0, 273.15), "°C": (1.0, 273.15), "celsius": (1.0, 273.15),
+    "degF": (5.0 / 9.0, 273.15 - 32.0 * 5.0 / 9.0), "°F": (5.0 / 9.0, 273.15 - 32.0 * 5.0 / 9.0),
+}
 
 _TAU = 2.0 * math.pi
 _DEG = math.pi / 180.0
@@ -79,6 +100,16 @@ COMMON_UNITS: dict[str, tuple[str, float]] = {
     "rad/s²": ("radian / second ** 2", 1.0),
     "rpm/s": ("radian / second ** 2", _TAU / 60.0),
     "deg/s^2": ("radian / second ** 2", _DEG),
+    "N": ("gram * meter / second ** 2", 1e3),
+    "kN": ("gram * meter / second ** 2", 1e6),
+    "s": ("second", 1.0),
+    "min": ("second", 60.0),
+    "h": ("second", 3600.0),
+    "mm^2/s": ("meter ** 2 / second", 1e-6),
+    "mm²/s": ("meter ** 2 / second", 1e-6),
+    "cSt": ("meter ** 2 / second", 1e-6),
+    "MPa": ("gram / meter / second ** 2", 1e9),
+    "GPa": ("gram / meter / second ** 2", 1e12),
 }
 
 _DIVISORS: dict[str, float] = {"cm": 1e2, "mm": 1e3, "um": 1e6, "µm": 1e6, "μm": 1e6,
@@ -94,6 +125,13 @@ DISPLAY_UNITS: dict[str, tuple[str, float]] = {
     "m/s²": ("m/s²", 1.0),
     "Hz": ("Hz", 1.0),
     "1": ("", 1.0),
+    "N": ("kN", 1e-3),
+    "Pa": ("MPa", 1e-6),
+    "s": ("h", 1.0 / 3600.0),
+    "m²/s": ("mm²/s", 1e6),
+    "W": ("kW", 1e-3),
+    "N·m": ("N·m", 1.0),
+    "kg/m³": ("kg/m³", 1.0),
 }
 
 #: A number in plain ASCII digits (full-width digits and the like are refused, as the
@@ -155,7 +193,10 @@ def parse_quantity(text: Any, dimension: Dimension) -> float:
     if not _UNIT.match(unit):
         raise UnitError(f"cannot read '{unit}' in '{text}' as a unit; write a number and a "
                         f"unit with nothing after it, like '{dimension.example}'")
+    if dimension is TEMPERATURE:
+        return _temperature(number, unit, text)
     root, factor = COMMON_UNITS.get(unit) or _pint_unit(unit)
+    factor *= dimension.si_per_root
     if root != dimension.root:
         raise UnitError(f"'{unit}' is not a unit of {dimension.name} ({_describe_root(root)}); "
                         f"write it like '{dimension.example}'")
@@ -165,6 +206,17 @@ def parse_quantity(text: Any, dimension: Dimension) -> float:
         raise UnitError(f"'{text}' is out of range for {what} (at most {MAX_MAGNITUDE:g} "
                         f"{dimension.si_unit} in size)")
     return value
+
+
+def _temperature(number: float, unit: str, text: str) -> float:
+    if unit not in TEMPERATURE_UNITS:
+        raise UnitError(f"'{unit}' is not a unit of temperature; write it like '80 degC' "
+                        "(degC, K or degF)")
+    scale, offset = TEMPERATURE_UNITS[unit]
+    kelvin = scale * number + offset
+    if not (math.isfinite(kelvin) and 0 < kelvin <= MAX_MAGNITUDE):
+        raise UnitError(f"'{text}' is not a temperature above absolute zero")
+    return kelvin
 
 
 def _shorten(text: str, keep: int = 24) -> str:

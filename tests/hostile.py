@@ -28,6 +28,9 @@ KINDS = {
                        "disk_speed=100rpm:200rpm:3"),
     "cone-on-plane": ("cone-on-plane.yaml", ("half_angle", "spin_speed"),
                       "half_angle=10deg:20deg:3"),
+    "ball-bearing": ("ball-bearing.yaml",
+                     ("dynamic_load_rating", "radial_load", "speed", "pitch_diameter"),
+                     "radial_load=1kN:5kN:3"),
 }
 
 #: Quantity strings (written quoted) that must each be refused.
@@ -35,7 +38,7 @@ BAD_QUANTITY_TEXT = [
     "26 mm)", "1500 rpm**0", "30 deg!", "12.7 mm;", "26 mm/", "12,7 mm", "26 mm(", "2 mm{",
     "3 [mm]", "5 mm**2**3**4", "1" + "0" * 400 + " mm", "1" + "0" * 400 + " rpm", "mm", "",
     " ", "nan mm", "inf deg", "-inf rpm", "1e400 mm", "1e305 mm", "-1e305 rad", "１２ mm",
-    "12 furlongz", "25 Hz", "12 N", "3 kg", "12.7 mm mm mm mm" + " mm" * 40, "7 mm\x00",
+    "12 furlongz", "25 Hz", "12 N*m", "3 kg", "12.7 mm mm mm mm" + " mm" * 40, "7 mm\x00",
     "7 mm\x1b[31m", "7 mm\nkind: x", "7 m" * 300, "1e-400", "12..7 mm", "--3 mm", "3 mm ± -1 mm",
     "3 mm ± 1 mm ± 1 mm", "3 mm ± 1 kg", "3 ± mm", "0x1F mm", "1_000 mm", "∞ mm", "12 mm#x",
 ]
@@ -100,6 +103,7 @@ def _physics_cases() -> dict[str, str]:
     bevel = (SPECS / "bevel-gears.yaml").read_text()
     disk = (SPECS / "disk-on-circle.yaml").read_text()
     cone = (SPECS / "cone-on-plane.yaml").read_text()
+    ball = (SPECS / "ball-bearing.yaml").read_text()
     return {
         "thrust-angle-50.yaml": _mutate(tb, "contact_angle", "50 deg"),
         "thrust-angle-0.yaml": _mutate(tb, "contact_angle", "0 deg"),
@@ -134,6 +138,15 @@ def _physics_cases() -> dict[str, str]:
         "disk-negative.yaml": _mutate(disk, "surface_radius", "-80 mm"),
         "cone-angle-90.yaml": _mutate(cone, "half_angle", "90 deg"),
         "cone-angle-neg.yaml": _mutate(cone, "half_angle", "-10 deg"),
+        "ball-thrust-radial.yaml": _mutate(ball, "type", "thrust"),
+        "ball-no-loads.yaml": _mutate(ball, "radial_load", "0 kN"),
+        "ball-reliability-80.yaml": _mutate(ball, "reliability", "80 %"),
+        "ball-reliability-99.yaml": _mutate(ball, "reliability", "99"),
+        "ball-kappa-low.yaml": _mutate(ball, "viscosity", "0.2 mm^2/s"),
+        "ball-contamination.yaml": _mutate(ball, "contamination_factor", "1.5"),
+        "ball-no-contamination.yaml": ball.replace("contamination_factor: 0.5", ""),
+        "ball-no-rating.yaml": ball.replace("dynamic_load_rating: 55.3 kN", ""),
+        "ball-temperature.yaml": _mutate(ball, "viscosity", "20 degC"),
     }
 
 

@@ -10,9 +10,17 @@ from bearingcalc.units import (
     ANGLE,
     ANGULAR_SPEED,
     COMMON_UNITS,
+    DENSITY,
     DIMENSIONS,
     DISPLAY_UNITS,
+    FORCE,
+    KINEMATIC_VISCOSITY,
     LENGTH,
+    POWER,
+    STRESS,
+    TEMPERATURE,
+    TIME,
+    TORQUE,
     UnitError,
     make_registry,
     parse_quantity,
@@ -24,18 +32,22 @@ UREG = make_registry()
 @pytest.mark.parametrize("unit", sorted(COMMON_UNITS))
 def test_every_fast_path_unit_equals_pints_own_conversion(unit):
     root, _ = COMMON_UNITS[unit]
-    factor, pint_root = UREG.get_root_units(UREG.parse_units(unit.replace("²", "**2")))
+    factor, pint_root = UREG.get_root_units(UREG.parse_units(
+        unit.replace("²", "**2").replace("^", "**")))
     assert str(pint_root) == root
     dimension = next(d for d in DIMENSIONS.values() if d.root == root)
-    assert math.isclose(parse_quantity(f"7.25 {unit}", dimension), 7.25 * factor, rel_tol=1e-15)
+    assert math.isclose(parse_quantity(f"7.25 {unit}", dimension),
+                        7.25 * factor * dimension.si_per_root, rel_tol=1e-15)
 
 
 def test_display_factors_are_pints():
     for si_unit, (shown, factor) in DISPLAY_UNITS.items():
         if si_unit in ("1",):
             continue
-        expected = UREG.Quantity(1.0, si_unit.replace("²", "**2")).to(
-            shown.replace("²", "**2")).magnitude
+        def pint_name(unit):
+            return unit.replace("²", "**2").replace("³", "**3").replace("·", "*")
+
+        expected = UREG.Quantity(1.0, pint_name(si_unit)).to(pint_name(shown)).magnitude
         assert math.isclose(factor, expected, rel_tol=1e-15), si_unit
 
 
@@ -49,9 +61,21 @@ def test_display_factors_are_pints():
     ("1500 rpm", ANGULAR_SPEED, 1500 * 2 * math.pi / 60),
     ("157 rad/s", ANGULAR_SPEED, 157.0),
     ("-90 revolution / minute", ANGULAR_SPEED, -3 * math.pi),
+    ("10 kN", FORCE, 10000.0),
+    ("2248.089 lbf", FORCE, 2248.089 * 4.4482216152605),  # pint's registry, SI via grams
+    ("20000 h", TIME, 7.2e7),
+    ("20 mm^2/s", KINEMATIC_VISCOSITY, 2e-5),
+    ("68 cSt", KINEMATIC_VISCOSITY, 6.8e-5),
+    ("4200 MPa", STRESS, 4.2e9),
+    ("80 degC", TEMPERATURE, 353.15),
+    ("176 degF", TEMPERATURE, 353.15),
+    ("353.15 K", TEMPERATURE, 353.15),
+    ("7850 kg/m^3", DENSITY, 7850.0),
+    ("9.4 kW", POWER, 9400.0),
+    ("150 N*m", TORQUE, 150.0),
 ])
 def test_quantities_convert_to_si(text, dimension, expected):
-    assert math.isclose(parse_quantity(text, dimension), expected, rel_tol=1e-15)
+    assert math.isclose(parse_quantity(text, dimension), expected, rel_tol=1e-12)
 
 
 def test_decimal_sub_units_give_the_value_as_typed():

@@ -21,8 +21,16 @@ from bearingcalc.units import (
     ANGLE,
     ANGULAR_ACCEL,
     ANGULAR_SPEED,
+    DENSITY,
+    FORCE,
+    KINEMATIC_VISCOSITY,
     LENGTH,
     MAX_MAGNITUDE,
+    POWER,
+    STRESS,
+    TEMPERATURE,
+    TIME,
+    TORQUE,
     Dimension,
     parse_quantity,
 )
@@ -178,6 +186,9 @@ class _Quantity:
 
     def _deviation(self, text: Any, what: str) -> float:
         deviation = parse_quantity(text, self.dimension)
+        if self.dimension is TEMPERATURE and isinstance(text, str):
+            # A temperature difference: 5 degC is 5 K, not 278.15 K.
+            deviation -= parse_quantity(f"0 {text.split(maxsplit=1)[-1]}", self.dimension)
         if deviation < 0:
             raise ValueError(f"{what} must not be negative, got '{text}'")
         return deviation
@@ -272,6 +283,15 @@ PositiveLength = quantity(LENGTH, "positive")
 Angle = quantity(ANGLE)
 AngularSpeed = quantity(ANGULAR_SPEED)
 AngularAccel = quantity(ANGULAR_ACCEL)
+Force = quantity(FORCE, "non-negative")
+PositiveForce = quantity(FORCE, "positive")
+PositiveStress = quantity(STRESS, "positive")
+PositiveTime = quantity(TIME, "positive")
+PositiveViscosity = quantity(KINEMATIC_VISCOSITY, "positive")
+Temperature = quantity(TEMPERATURE, "positive")
+PositiveDensity = quantity(DENSITY, "positive")
+PositivePower = quantity(POWER, "positive")
+Torque = quantity(TORQUE, "positive")
 BallCount = _count(1, "balls")
 ToothCount = _count(5, "teeth")
 Ratio = Annotated[float, BeforeValidator(_plain_number),

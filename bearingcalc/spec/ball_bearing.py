@@ -1,0 +1,269 @@
+"""Spec of ``kind: ball-bearing``: ISO 281 rating life and ISO 76 static safety
+(``docs/physics.md`` §5)."""
+
+from __future__ import annotations
+
+import math
+import re
+from typing import Annotated, Any, Literal
+
+from pydantic import BeforeValidator, Field, WithJsonSchema, model_validator
+
+from bearingcalc.errors import SpecFieldError
+from bearingcalc.spec.fields import (
+    Angle,
+    AngularSpeed,
+    BallCount,
+    Force,
+    PositiveForce,
+    PositiveLength,
+    PositiveTime,
+    PositiveViscosity,
+    Ratio,
+    SpecModel,
+    Temperature,
+)
+
+RELIABILITY_RANGE = (0.90, 0.9995)
+DEFAULT_CONTACT_ANGLE = {"deep-groove": 0.0, "thrust": math.pi / 2}
+
+
+def _reliability(value: Any) -> float:
+    """'99 %' or 0.99 -> 0.99; the range is ISO 281's, 90 % to 99.95 %."""
+    if isinstance(value, str):
+        match = re.fullmatch(r"\s*([0-9]+(?:\.[0-9]*)?|\.[0-9]+)\s*%\s*", value, re.ASCII)
+        if match is None:
+            raise ValueError(f"write a reliability as '99 %' or 0.99, got {value!r}")
+        fraction = float(match[1]) / 100.0
+    elif isinstance(value, (int, float)) and not isinstance(value, bool):
+        if value > 1:
+            raise ValueError(f"a bare number is a fraction, at most 1; for percent write "
+                             f"'{value:g} %'")
+        fraction = float(value)
+    else:
+        raise ValueError(f"write a reliability as '99 %' or 0.99, got {value!r}")
+    low, high = RELIABILITY_RANGE
+    if not low <= fraction <= high:
+        raise ValueError(f"must be from 90 % to 99.95 % (ISO 281's range for a1), got "
+                         f"{100 * fraction:g} %")
+    return fraction
+
+
+Reliability = Annotated[float, BeforeValidator(_reliability), WithJsonSchema({
+    "anyOf": [{"type": "string", "pattern": r"^\s*([0-9]+(\.[0-9]*)?|\.[0-9]+)\s*%\s*$"},
+              {"type": "number", "minimum": RELIABILITY_RANGE[0],
+               "maximum": RELIABILITY_RANGE[1]}],
+    "description": "reliability, '99 %' or 0.99, from 90 % to 99.95 %"})]
+
+
+def _unit_fraction(value: Any) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not 0 <= value <= 1:
+        raise ValueError(f"must be a number from 0 to 1, got {value!r}")
+    return float(value)
+
+
+UnitFraction = Annotated[float, BeforeValidator(_unit_fraction),
+                         WithJsonSchema({"type": "number", "minimum": 0, "maximum": 1})]
+
+
+class Lubrication(SpecModel):
+    """The operating viscosity, given or found from ν40, ν100 and the temperature."""
+
+    viscosity: PositiveViscosity | None = Field(None, description="operating kinematic "
+                                                "viscosity ν")
+    viscosity_40: PositiveViscosity | None = Field(None, description="ν at 40 °C")
+    viscosity_100: PositiveViscosity | None = Field(None, description="ν at 100 °C")
+    temperature: Temperature | None = Field(None, description="operating temperature")
+
+    @model_validator(mode="after")
+    def _one_form(self) -> Lubrication:
+        table = (self.viscosity_40, self.viscosity_100, self.temperature)
+        if self.viscosity is not None and any(v is not None for v in table):
+            raise SpecFieldError("lubrication.viscosity", "give viscosity, or viscosity_40, "
+                                 "viscosity_100 and temperature, not both")
+        if self.viscosity is None and any(v is None for v in table):
+            raise SpecFieldError("lubrication", "give viscosity (like 20 mm^2/s), or all of "
+                                 "viscosity_40, viscosity_100 and temperature")
+        return self
+
+
+class LoadFactors(SpecModel):
+    """Catalogue X, Y, e (and X0, Y0) in place of ISO 281's and ISO 76's tables."""
+
+    x: Ratio = Field(description="radial factor X")
+    y: Ratio = Field(description="axial factor Y")
+    e: Ratio = Field(description="limit of Fa/Fr below which P = Fr")
+    x0: Ratio | None = Field(None, description="static radial factor X0")
+    y0: Ratio | None = Field(None, description="static axial factor Y0")
+
+
+class BallBearingLimits(SpecModel):
+    min_rating_life: PositiveTime | None = Field(None, description="judged on the modified "
+                                                 "rating life; not judged when absent")
+    min_static_safety: Ratio = Field(1.0, description="smallest static safety factor s0")
+
+
+class BallBearingSpec(SpecModel):
+    """A rolling ball bearing sized by ISO 281 (life) and ISO 76 (static safety)."""
+
+    kind: Literal["ball-bearing"]
+    name: str | None = None
+    type: Literal["deep-groove", "angular-contact", "thrust"] = "deep-groove"
+    dynamic_load_rating: PositiveForce | None = Field(None, description="C, catalogue")
+    static_load_rating: PositiveForce | None = Field(None, description="C0, catalogue")
+    fatigue_load_limit: PositiveForce | None = Field(None, description="Cu, catalogue")
+    static_factor: Ratio | None = Field(None, description="f0 from the catalogue")
+    ball_count: BallCount | None = None
+    ball_diameter: PositiveLength | None = Field(None, description="Dw")
+    pitch_diameter: PositiveLength | None = Field(None, description="Dpw")
+    bore_diameter: PositiveLength | None = Field(None, description="d (for dm only)")
+    outside_diameter: PositiveLength | None = Field(None, description="D (for dm only)")
+    contact_angle: Angle | None = Field(None, description="α; 0 deg for deep-groove, "
+                                        "90 deg for thrust by default")
+    radial_load: Force = Field(0.0, description="Fr")
+    axial_load: Force = Field(0.0, description="Fa")
+    speed: AngularSpeed = Field(description="the rotating ring relative to the other")
+    reliability: Reliability = 0.9
+    lubrication: Lubrication | None = None
+    contamination_factor: UnitFraction | None = Field(None, description="eC, 0 to 1")
+    load_factors: LoadFactors | None = None
+    limits: BallBearingLimits = BallBearingLimits()
+
+    @model_validator(mode="after")
+    def _complete(self) -> BallBearingSpec:
+        thrust = self.type == "thrust"
+        if not self.speed > 0:
+            raise SpecFieldError("speed", "must be positive: the life in hours needs a "
+                                 "turning bearing, like 3000 rpm")
+        if self.radial_load == 0 and self.axial_load == 0:
+            raise SpecFieldError("radial_load", "both loads are zero, so the life is "
+                                 "undefined: give radial_load or axial_load, like 10 kN")
+        if thrust and self.radial_load > 0:
+            raise SpecFieldError("radial_load", "a thrust ball bearing (α = 90°) carries no "
+                                 "radial load; use angular-contact, or set it to 0 kN")
+        if thrust and self.contact_angle is not None and not math.isclose(
+                self.contact_angle, math.pi / 2, rel_tol=1e-12):
+            raise SpecFieldError("contact_angle", "a thrust ball bearing has α = 90 deg; "
+                                 "leave contact_angle out")
+        if self.type == "angular-contact" and self.contact_angle is None:
+            raise SpecFieldError("contact_angle", "an angular-contact bearing needs its "
+                                 "contact angle, like 40 deg")
+        alpha = self.angle
+        if not thrust and not 0 <= alpha < math.pi / 2:
+            raise SpecFieldError("contact_angle", "must be from 0 deg to below 90 deg for a "
+                                 "radial bearing")
+        if self.type == "angular-contact" and not (
+                math.radians(20) - 1e-12 <= alpha <= math.radians(45) + 1e-12):
+            factors = self.load_factors
+            if factors is None or factors.x0 is None or factors.y0 is None:
+                raise SpecFieldError("load_factors", "ISO 281 tables X, Y, e (and ISO 76 "
+                                     "X0, Y0) only for 20 deg <= α <= 45 deg: give "
+                                     "load_factors: {x, y, e, x0, y0} from the catalogue")
+        if self.ball_diameter is not None and self.pitch_diameter is not None and not (
+                self.ball_diameter < self.pitch_diameter):
+            raise SpecFieldError("ball_diameter", "must be smaller than pitch_diameter")
+        if (self.bore_diameter is None) != (self.outside_diameter is None):
+            raise SpecFieldError("outside_diameter" if self.outside_diameter is None
+                                 else "bore_diameter",
+                                 "give both bore_diameter and outside_diameter, or neither")
+        if self.bore_diameter is not None and not (
+                self.bore_diameter < self.outside_diameter):  # type: ignore[operator]
+            raise SpecFieldError("outside_diameter", "must be larger than bore_diameter")
+        if self.dynamic_load_rating is None and not self.has_geometry:
+            raise SpecFieldError("dynamic_load_rating", "missing: give dynamic_load_rating "
+                                 "(C from the catalogue, like 55.3 kN), or the geometry "
+                                 "ball_count, ball_diameter and pitch_diameter")
+        if (self.type == "deep-groove" and self.axial_load > 0 and self.load_factors is None
+                and ((self.static_load_rating is None and not self.has_geometry)
+                     or (self.static_factor is None and not self.has_geometry))):
+            field = "static_load_rating" if self.static_load_rating is None else "static_factor"
+            raise SpecFieldError(field, "a deep-groove bearing under axial load needs f0 and "
+                                 "C0 to find e and Y: give static_factor and "
+                                 "static_load_rating from the catalogue, or the geometry "
+                                 "(ball_count, ball_diameter, pitch_diameter)")
+        if self.lubrication is not None:
+            if self.contamination_factor is None:
+                raise SpecFieldError("contamination_factor", "lubrication needs the "
+                                     "contamination factor eC (0 to 1, like 0.5; see the "
+                                     "README's cleanliness classes)")
+            if self.mean_diameter is None:
+                raise SpecFieldError("pitch_diameter", "lubrication needs the pitch diameter "
+                                     "for ν1: give pitch_diameter, or bore_diameter and "
+                                     "outside_diameter")
+            if (self.fatigue_load_limit is None and self.static_load_rating is None
+                    and (thrust or not self.has_geometry)):
+                raise SpecFieldError("fatigue_load_limit", "aISO needs Cu: give "
+                                     "fatigue_load_limit, or static_load_rating to find it")
+        elif self.contamination_factor is not None:
+            raise SpecFieldError("contamination_factor", "applies with lubrication only: "
+                                 "give lubrication: {viscosity: ...} too, or leave it out")
+        return self
+
+    @property
+    def angle(self) -> float:
+        """α used. [rad]"""
+        if self.contact_angle is not None:
+            return self.contact_angle
+        return DEFAULT_CONTACT_ANGLE.get(self.type, 0.0)
+
+    @property
+    def has_geometry(self) -> bool:
+        return None not in (self.ball_count, self.ball_diameter, self.pitch_diameter)
+
+    @property
+    def mean_diameter(self) -> float | None:
+        """dm for ν1 and Cu: Dpw, else (d + D)/2. [m]"""
+        if self.pitch_diameter is not None:
+            return self.pitch_diameter
+        if self.bore_diameter is not None and self.outside_diameter is not None:
+            return 0.5 * (self.bore_diameter + self.outside_diameter)
+        return None
+
+    def warnings(self) -> list[str]:
+        """What the reader should know about how the results were found."""
+        notes = []
+        catalogue = [name for name in ("dynamic_load_rating", "static_load_rating")
+                     if getattr(self, name) is not None]
+        if catalogue and self.has_geometry:
+            notes.append(f"catalogue {' and '.join(catalogue)} used for the results; the "
+                         "ISO values from the geometry are reported as *_iso")
+        if self.lubrication is None:
+            notes.append("no lubrication given: aISO = 1, so the modified life ignores "
+                         "lubrication and contamination")
+        if self.type == "thrust" and self.static_load_rating is None:
+            notes.append("no static_load_rating: ISO 76's thrust f0 is not implemented, so "
+                         "the static results are left out")
+        return notes
+
+    def solver_inputs(self) -> dict[str, Any]:
+        """SI inputs of :func:`bearingcalc.core.ball_bearing.evaluate`."""
+        lubrication = self.lubrication
+        factors = self.load_factors
+        return {
+            "bearing_type": self.type,
+            "dynamic_load_rating": self.dynamic_load_rating,
+            "static_load_rating": self.static_load_rating,
+            "fatigue_load_limit": self.fatigue_load_limit,
+            "static_factor": self.static_factor,
+            "ball_count": self.ball_count,
+            "ball_diameter": self.ball_diameter,
+            "pitch_diameter": self.pitch_diameter,
+            "mean_diameter": self.mean_diameter,
+            "contact_angle": self.angle,
+            "radial_load": self.radial_load,
+            "axial_load": self.axial_load,
+            "speed": self.speed,
+            "reliability": self.reliability,
+            "viscosity": lubrication.viscosity if lubrication else None,
+            "viscosity_40": lubrication.viscosity_40 if lubrication else None,
+            "viscosity_100": lubrication.viscosity_100 if lubrication else None,
+            "temperature": lubrication.temperature if lubrication else None,
+            "contamination_factor": self.contamination_factor,
+            "load_x": factors.x if factors else None,
+            "load_y": factors.y if factors else None,
+            "load_e": factors.e if factors else None,
+            "load_x0": factors.x0 if factors else None,
+            "load_y0": factors.y0 if factors else None,
+            "min_rating_life": self.limits.min_rating_life,
+            "min_static_safety": self.limits.min_static_safety,
+        }
