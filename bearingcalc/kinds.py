@@ -120,7 +120,7 @@ KINDS: dict[str, Kind] = {
     kind.name: kind
     for kind in (
         Kind("thrust-bearing", "balls between a fixed race and a turning shaft",
-             ThrustBearingSpec, thrust_bearing, margins=("slip_margin",),
+             ThrustBearingSpec, thrust_bearing, margins=("slip_margin", "contact_pressure_margin"),
              governing=("slip_margin", "spin_to_roll"),
              limits={"spin_to_roll": "max_spin_to_roll"},
              unbounded=("pitch_radius_max",)),
@@ -135,7 +135,8 @@ KINDS: dict[str, Kind] = {
              governing=("apex_mismatch", "slip_margin"),
              limits={"apex_mismatch": "max_apex_mismatch"}),
         Kind("ball-bearing", "a rolling ball bearing: ISO 281 rating life, ISO 76 static safety",
-             BallBearingSpec, ball_bearing, margins=("life_margin", "static_safety_margin"),
+             BallBearingSpec, ball_bearing,
+             margins=("life_margin", "static_safety_margin", "contact_pressure_margin"),
              governing=("life_margin", "modified_rating_life", "static_safety_factor")),
     )
 }

@@ -54,6 +54,8 @@ TEMPERATURE = Dimension("temperature", "K", "kelvin", "80 degC", "degC")
 DENSITY = Dimension("density", "kg/m³", "gram / meter ** 3", "7850 kg/m^3", "kg/m³", 1e-3)
 POWER = Dimension("power", "W", "gram * meter ** 2 / second ** 3", "9.4 kW", "kW", 1e-3)
 TORQUE = Dimension("torque", "N·m", "gram * meter ** 2 / second ** 2", "150 N*m", "N·m", 1e-3)
+#: A plain number (a ratio such as a groove conformity), written without a unit.
+DIMENSIONLESS = Dimension("plain number", "1", "dimensionless", "0.52", "")
 DIMENSIONS = {d.name: d for d in (LENGTH, ANGLE, ANGULAR_SPEED, ANGULAR_ACCEL, FORCE, STRESS,
                                   TIME, KINEMATIC_VISCOSITY, TEMPERATURE, DENSITY, POWER,
                                   TORQUE)}
@@ -164,6 +166,8 @@ def parse_quantity(text: Any, dimension: Dimension) -> float:
         write the quantity.
     """
     what = article(dimension.name)
+    if dimension is DIMENSIONLESS:
+        return _plain_number(text)
     if isinstance(text, bool) or not isinstance(text, (str, int, float)):
         raise UnitError(f"expected {what} with a unit, like '{dimension.example}'")
     if isinstance(text, (int, float)):
@@ -205,6 +209,20 @@ def parse_quantity(text: Any, dimension: Dimension) -> float:
     if not (math.isfinite(value) and abs(value) <= MAX_MAGNITUDE):
         raise UnitError(f"'{text}' is out of range for {what} (at most {MAX_MAGNITUDE:g} "
                         f"{dimension.si_unit} in size)")
+    return value
+
+
+def _plain_number(text: Any) -> float:
+    """A plain number, as a YAML number or a string of one (with no unit)."""
+    if isinstance(text, str) and len(text) <= MAX_QUANTITY_CHARS and re.fullmatch(
+            r"\s*[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?\s*", text, re.ASCII):
+        value = float(text)
+    elif isinstance(text, (int, float)) and not isinstance(text, bool):
+        value = float(text) if abs(text) < 1e300 else math.inf
+    else:
+        raise UnitError(f"expected a plain number without a unit, like 0.52, got {text!r}")
+    if not (math.isfinite(value) and abs(value) <= MAX_MAGNITUDE):
+        raise UnitError(f"{text!r} is not a finite number within ±{MAX_MAGNITUDE:g}")
     return value
 
 

@@ -15,6 +15,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core.common import first_failure
+from bearingcalc.core.hertz import hertz_point_contact
 
 #: ISO 281:2007 bm, the rating factor for contemporary, normally used material. [1]
 MATERIAL_FACTOR = 1.3
@@ -95,6 +96,17 @@ RESULTS: dict[str, tuple[str, str]] = {
     "static_safety_factor": ("1", "s0 = C0/P0"),
     "life_margin": ("1", "modified_rating_life / min_rating_life − 1"),
     "static_safety_margin": ("1", "s0 − min_static_safety"),
+    "max_ball_load": ("N", "Q of the most heavily loaded ball"),
+    "inner_contact_pressure": ("Pa", "Hertz peak pressure at the inner race"),
+    "outer_contact_pressure": ("Pa", "Hertz peak pressure at the outer race"),
+    "inner_contact_semi_major": ("m", "semi-major axis a of the inner contact ellipse"),
+    "inner_contact_semi_minor": ("m", "semi-minor axis b of the inner contact ellipse"),
+    "outer_contact_semi_major": ("m", "semi-major axis a of the outer contact ellipse"),
+    "outer_contact_semi_minor": ("m", "semi-minor axis b of the outer contact ellipse"),
+    "inner_contact_approach": ("m", "approach δ of ball and inner race"),
+    "outer_contact_approach": ("m", "approach δ of ball and outer race"),
+    "max_contact_pressure": ("Pa", "the larger peak pressure"),
+    "contact_pressure_margin": ("1", "1 − max_contact_pressure / limit"),
 }
 
 #: Headings of the table, each with its results.
@@ -109,6 +121,11 @@ GROUPS: dict[str, tuple[str, ...]] = {
              "life_modification_factor", "modified_rating_life",
              "modified_rating_life_revolutions", "life_margin"),
     "static": ("static_equivalent_load", "static_safety_factor", "static_safety_margin"),
+    "contact": ("max_ball_load", "inner_contact_pressure", "outer_contact_pressure",
+                "inner_contact_semi_major", "inner_contact_semi_minor",
+                "outer_contact_semi_major", "outer_contact_semi_minor",
+                "inner_contact_approach", "outer_contact_approach", "max_contact_pressure",
+                "contact_pressure_margin"),
 }
 
 #: How tables show results whose SI unit alone does not say it (revolutions in millions).
@@ -143,6 +160,8 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
     8: ("radial_load", "the equivalent load is zero: give a radial or an axial load"),
     9: ("lubrication", "the viscosity at the operating temperature cannot be found from "
                        "viscosity_40 and viscosity_100 (ν40 must exceed ν100)"),
+    10: ("inner_groove_conformity", "must exceed 0.5: the ball would not fit its groove"),
+    11: ("outer_groove_conformity", "must exceed 0.5: the ball would not fit its groove"),
 }
 
 
@@ -437,24 +456,33 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
         out["life_margin"] = lnm / revolutions_per_second / np.asarray(min_life) - 1.0
 
     # --- static
+    if thrust:
+        p0 = fa
+    elif kind == "angular-contact":
+        y0 = (np.asarray(inputs["load_y0"], dtype=float)
+              if inputs.get("load_y0") is not None
+              else table_lookup(np.degrees(alpha), ANGULAR_ALPHA_DEG, ANGULAR_Y0))
+        x0 = (np.asarray(inputs["load_x0"], dtype=float)
+              if inputs.get("load_x0") is not None else ANGULAR_X0)
+        p0 = np.maximum(fr, x0 * fr + y0 * fa)
+    else:
+        p0 = np.maximum(fr, DEEP_GROOVE_X0 * fr + DEEP_GROOVE_Y0 * fa)
     if c0 is not None:
-        if thrust:
-            p0 = fa
-        elif kind == "angular-contact":
-            y0 = (np.asarray(inputs["load_y0"], dtype=float)
-                  if inputs.get("load_y0") is not None
-                  else table_lookup(np.degrees(alpha), ANGULAR_ALPHA_DEG, ANGULAR_Y0))
-            x0 = (np.asarray(inputs["load_x0"], dtype=float)
-                  if inputs.get("load_x0") is not None else ANGULAR_X0)
-            p0 = np.maximum(fr, x0 * fr + y0 * fa)
-        else:
-            p0 = np.maximum(fr, DEEP_GROOVE_X0 * fr + DEEP_GROOVE_Y0 * fa)
         s0 = c0 / p0
         out.update({"static_load_rating": c0, "static_equivalent_load": p0,
                     "static_safety_factor": s0,
                     "static_safety_margin": s0 - np.asarray(inputs["min_static_safety"])})
         if f0 is not None:
             out["static_rating_factor"] = f0
+
+    # --- contact stress of the most heavily loaded ball
+    if has_geometry and inputs.get("inner_groove_conformity") is not None:
+        fi = np.asarray(inputs["inner_groove_conformity"], dtype=float)
+        fo = np.asarray(inputs["outer_groove_conformity"], dtype=float)
+        bad_checks += [(10, ~(fi > 0.5)), (11, ~(fo > 0.5))]
+        out.update(ball_contacts(z, dw, dpw, alpha, thrust, p0, fi, fo,
+                                 inputs["elastic_modulus"], inputs["poisson_ratio"],
+                                 inputs["max_contact_pressure"]))
 
     shape = np.broadcast_shapes(*(np.shape(v) for v in (*out.values(), *flags.values())))
     status = first_failure(bad_checks, shape)
@@ -463,6 +491,62 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
     for key, flag in flags.items():
         ordered[key] = np.broadcast_to(np.asarray(flag, dtype=float), shape)
     return ordered, status
+
+
+def ball_contacts(ball_count: ArrayLike, ball_diameter: ArrayLike, pitch_diameter: ArrayLike,
+                  contact_angle: ArrayLike, thrust: bool, static_equivalent_load: ArrayLike,
+                  inner_conformity: ArrayLike, outer_conformity: ArrayLike,
+                  elastic_modulus: ArrayLike, poisson_ratio: ArrayLike,
+                  max_contact_pressure: ArrayLike) -> dict[str, NDArray]:
+    r"""Hertz contacts of the most heavily loaded ball with both races.
+
+    The ball carries Q = 5·P0/(Z·cosα) in a radial bearing (Stribeck's load sharing, the
+    basis of ISO 76's C0) and Q = Fa/(Z·sinα) in a thrust bearing. With γ = Dw·cosα/Dpw
+    the principal curvatures are 2/Dw (ball, both planes); 2γ/(Dw(1 − γ)) and
+    −1/(fi·Dw) at the inner race; −2γ/(Dw(1 + γ)) and −1/(fo·Dw) at the outer race
+    (rolling plane, then across the groove).
+
+    Parameters
+    ----------
+    ball_count : Z. [1]
+    ball_diameter, pitch_diameter : Dw, Dpw. [m]
+    contact_angle : α. [rad]
+    thrust : a thrust bearing (α = 90°).
+    static_equivalent_load : P0 (Fa for thrust). [N]
+    inner_conformity, outer_conformity : fi, fo > 0.5. [1]
+    elastic_modulus, poisson_ratio : of ball and races alike. [Pa], [1]
+    max_contact_pressure : the limit. [Pa]
+
+    Source: ISO 76:2006 6.1 and its basis; Harris & Kotzalas, *Essential Concepts of
+    Bearing Technology*, 5th ed., ch. 2 (curvatures) and ch. 6 (Hertz).
+    """
+    z = np.asarray(ball_count, dtype=float)
+    dw = np.asarray(ball_diameter, dtype=float)
+    alpha = np.asarray(contact_angle, dtype=float)
+    cos_alpha = np.where(thrust, 0.0, np.cos(alpha))
+    gamma = dw * cos_alpha / np.asarray(pitch_diameter, dtype=float)
+    load = (np.asarray(static_equivalent_load, dtype=float) / z
+            / (np.sin(alpha) if thrust else cos_alpha / 5.0))
+    ball = 2.0 / dw
+    e, nu = elastic_modulus, poisson_ratio
+    inner = hertz_point_contact(load, ball, ball, 2.0 * gamma / (dw * (1.0 - gamma)),
+                                -1.0 / (np.asarray(inner_conformity) * dw), e, nu, e, nu)
+    outer = hertz_point_contact(load, ball, ball, -2.0 * gamma / (dw * (1.0 + gamma)),
+                                -1.0 / (np.asarray(outer_conformity) * dw), e, nu, e, nu)
+    peak = np.maximum(inner["max_pressure"], outer["max_pressure"])
+    return {
+        "max_ball_load": load,
+        "inner_contact_pressure": inner["max_pressure"],
+        "outer_contact_pressure": outer["max_pressure"],
+        "inner_contact_semi_major": inner["semi_major"],
+        "inner_contact_semi_minor": inner["semi_minor"],
+        "outer_contact_semi_major": outer["semi_major"],
+        "outer_contact_semi_minor": outer["semi_minor"],
+        "inner_contact_approach": inner["approach"],
+        "outer_contact_approach": outer["approach"],
+        "max_contact_pressure": peak,
+        "contact_pressure_margin": 1.0 - peak / np.asarray(max_contact_pressure),
+    }
 
 
 def _given_or(given: ArrayLike | None, computed: NDArray | None) -> NDArray | None:

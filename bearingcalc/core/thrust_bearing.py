@@ -21,6 +21,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core.common import broadcast_all, first_failure
+from bearingcalc.core.hertz import hertz_point_contact
 
 HALF_SQRT2 = np.sqrt(0.5)
 #: Relative slack of the ball-fit test, a few ulps of π.
@@ -47,6 +48,15 @@ RESULTS: dict[str, tuple[str, str]] = {
     "pitch_radius_max": ("m", "largest b with |spin/roll| within the limit"),
     "ball_pass_frequency_race": ("Hz", "balls passing a point of the race"),
     "ball_pass_frequency_shaft": ("Hz", "balls passing a point of the shaft"),
+    "shaft_contact_load": ("N", "Q3, the shaft's normal force on a ball at C3"),
+    "race_radial_contact_load": ("N", "Q1, the race wall's normal force at C1"),
+    "race_axial_contact_load": ("N", "Q2, the race floor's normal force at C2"),
+    "ball_centrifugal_force": ("N", "m·b·ω_cage² of one ball"),
+    "shaft_contact_pressure": ("Pa", "Hertz peak pressure at C3 (ball on the cone)"),
+    "race_radial_contact_pressure": ("Pa", "Hertz peak pressure at C1 (ball on the bore)"),
+    "race_axial_contact_pressure": ("Pa", "Hertz peak pressure at C2 (ball on the floor)"),
+    "max_contact_pressure": ("Pa", "the largest of the three"),
+    "contact_pressure_margin": ("1", "1 − max_contact_pressure / limit"),
 }
 
 #: Status codes of :func:`thrust_bearing_status`: code -> (field at fault, reason).
@@ -391,7 +401,70 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
         return {"spin_to_roll": rho, "slip_margin": margin}, status
     results = _solve(r, theta, b, inputs["shaft_speed"], inputs.get("ball_count"),
                      inputs.get("max_spin_to_roll", 0.01), solved)
+    if inputs.get("axial_load") is not None:
+        results.update(ball_contact_loads(
+            r, theta, b, results["cage_speed"], inputs["ball_count"], inputs["axial_load"],
+            inputs["elastic_modulus"], inputs["poisson_ratio"], inputs["density"],
+            inputs["max_contact_pressure"]))
+        results = broadcast_all(results)
     return results, status
+
+
+def ball_contact_loads(ball_radius: ArrayLike, contact_angle: ArrayLike,
+                       pitch_radius: ArrayLike, cage_speed: ArrayLike, ball_count: ArrayLike,
+                       axial_load: ArrayLike, elastic_modulus: ArrayLike,
+                       poisson_ratio: ArrayLike, density: ArrayLike,
+                       max_contact_pressure: ArrayLike) -> dict[str, NDArray]:
+    r"""Contact forces on one ball and the Hertz pressure at each of its three contacts.
+
+    Static balance of a ball in its meridian plane (gravity, friction and gyroscopic
+    moments neglected): the shaft pushes along −n with Q3, the race wall along +e1 with
+    Q1 and the race floor along +e2 with Q2, and the centrifugal force m·b·ω_cage² acts
+    along −e1. All pass through the ball's centre, so
+
+    .. math:: Q_3 = rac{F_a}{Z\sin	heta}, \quad Q_2 = Q_3\sin	heta, \quad
+              Q_1 = Q_3\cos	heta + m\,b\,\omega_{cage}^2
+
+    Curvatures: the ball 1/r in every plane; the race bore, a concave cylinder of
+    radius b + r, −1/(b + r) about the axis and 0 along it; the floor, flat; the shaft's
+    cone cosθ/d about the axis (d = b − r·cosθ) and 0 along its generator.
+
+    Parameters
+    ----------
+    ball_radius, contact_angle, pitch_radius : r [m], θ [rad], b [m].
+    cage_speed : ω_cage. [rad/s]
+    ball_count : Z. [1]
+    axial_load : Fa on the shaft. [N]
+    elastic_modulus, poisson_ratio, density : of balls, race and shaft alike.
+        [Pa], [1], [kg/m³]
+    max_contact_pressure : the limit. [Pa]
+
+    Source: docs/physics.md §1 (geometry) and §6 (Hertz).
+    """
+    r, theta, b = (np.asarray(x, dtype=float) for x in (ball_radius, contact_angle,
+                                                         pitch_radius))
+    sin, cos = np.sin(theta), np.cos(theta)
+    mass = np.asarray(density, dtype=float) * (4.0 / 3.0) * np.pi * r ** 3
+    centrifugal = mass * b * np.asarray(cage_speed, dtype=float) ** 2
+    q3 = np.asarray(axial_load, dtype=float) / (np.asarray(ball_count, dtype=float) * sin)
+    q2 = q3 * sin
+    q1 = q3 * cos + centrifugal
+    ball = 1.0 / r
+    e, nu = elastic_modulus, poisson_ratio
+    shaft = hertz_point_contact(q3, ball, ball, cos / (b - r * cos), 0.0, e, nu, e, nu)
+    wall = hertz_point_contact(q1, ball, ball, -1.0 / (b + r), 0.0, e, nu, e, nu)
+    floor = hertz_point_contact(q2, ball, ball, 0.0, 0.0, e, nu, e, nu)
+    peak = np.maximum(np.maximum(shaft["max_pressure"], wall["max_pressure"]),
+                      floor["max_pressure"])
+    return {
+        "shaft_contact_load": q3, "race_radial_contact_load": q1,
+        "race_axial_contact_load": q2, "ball_centrifugal_force": centrifugal,
+        "shaft_contact_pressure": shaft["max_pressure"],
+        "race_radial_contact_pressure": wall["max_pressure"],
+        "race_axial_contact_pressure": floor["max_pressure"],
+        "max_contact_pressure": peak,
+        "contact_pressure_margin": 1.0 - peak / np.asarray(max_contact_pressure),
+    }
 
 
 def _angle_in_range(contact_angle: ArrayLike) -> NDArray:

@@ -14,9 +14,12 @@ from bearingcalc.spec.fields import (
     Angle,
     AngularSpeed,
     BallCount,
+    Conformity,
+    ElasticMaterial,
     Force,
     PositiveForce,
     PositiveLength,
+    PositiveStress,
     PositiveTime,
     PositiveViscosity,
     Ratio,
@@ -25,6 +28,8 @@ from bearingcalc.spec.fields import (
 )
 
 RELIABILITY_RANGE = (0.90, 0.9995)
+#: ISO 76:2006 6.1: the contact pressure at C0 of a ball bearing. [Pa]
+ISO_76_PRESSURE = 4.2e9
 DEFAULT_CONTACT_ANGLE = {"deep-groove": 0.0, "thrust": math.pi / 2}
 
 
@@ -101,6 +106,9 @@ class BallBearingLimits(SpecModel):
     min_rating_life: PositiveTime | None = Field(None, description="judged on the modified "
                                                  "rating life; not judged when absent")
     min_static_safety: Ratio = Field(1.0, description="smallest static safety factor s0")
+    max_contact_pressure: PositiveStress = Field(
+        ISO_76_PRESSURE, description="largest Hertz pressure (ISO 76: 4200 MPa for ball "
+        "bearings)")
 
 
 class BallBearingSpec(SpecModel):
@@ -127,6 +135,11 @@ class BallBearingSpec(SpecModel):
     lubrication: Lubrication | None = None
     contamination_factor: UnitFraction | None = Field(None, description="eC, 0 to 1")
     load_factors: LoadFactors | None = None
+    inner_groove_conformity: Conformity | None = Field(
+        None, description="fi = inner groove radius / Dw (> 0.5)")
+    outer_groove_conformity: Conformity | None = Field(
+        None, description="fo = outer groove radius / Dw (> 0.5)")
+    material: ElasticMaterial = ElasticMaterial()
     limits: BallBearingLimits = BallBearingLimits()
 
     @model_validator(mode="after")
@@ -194,7 +207,15 @@ class BallBearingSpec(SpecModel):
                     and (thrust or not self.has_geometry)):
                 raise SpecFieldError("fatigue_load_limit", "aISO needs Cu: give "
                                      "fatigue_load_limit, or static_load_rating to find it")
-        elif self.contamination_factor is not None:
+        if (self.inner_groove_conformity is None) != (self.outer_groove_conformity is None):
+            missing = ("inner_groove_conformity" if self.inner_groove_conformity is None
+                       else "outer_groove_conformity")
+            raise SpecFieldError(missing, "the contact stresses need both groove "
+                                 "conformities (like 0.52 and 0.53)")
+        if self.inner_groove_conformity is not None and not self.has_geometry:
+            raise SpecFieldError("inner_groove_conformity", "the contact stresses need the "
+                                 "geometry too: ball_count, ball_diameter and pitch_diameter")
+        if self.lubrication is None and self.contamination_factor is not None:
             raise SpecFieldError("contamination_factor", "applies with lubrication only: "
                                  "give lubrication: {viscosity: ...} too, or leave it out")
         return self
@@ -266,4 +287,9 @@ class BallBearingSpec(SpecModel):
             "load_y0": factors.y0 if factors else None,
             "min_rating_life": self.limits.min_rating_life,
             "min_static_safety": self.limits.min_static_safety,
+            "inner_groove_conformity": self.inner_groove_conformity,
+            "outer_groove_conformity": self.outer_groove_conformity,
+            "elastic_modulus": self.material.elastic_modulus,
+            "poisson_ratio": self.material.poisson_ratio,
+            "max_contact_pressure": self.limits.max_contact_pressure,
         }

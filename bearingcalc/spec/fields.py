@@ -14,7 +14,14 @@ import typing
 from dataclasses import dataclass
 from typing import Annotated, Any
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, PlainValidator, WithJsonSchema
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    PlainValidator,
+    WithJsonSchema,
+)
 from pydantic.fields import FieldInfo
 
 from bearingcalc.units import (
@@ -22,6 +29,7 @@ from bearingcalc.units import (
     ANGULAR_ACCEL,
     ANGULAR_SPEED,
     DENSITY,
+    DIMENSIONLESS,
     FORCE,
     KINEMATIC_VISCOSITY,
     LENGTH,
@@ -116,9 +124,11 @@ _MAPPING_KEYS = {"nominal", "tolerance", "plus", "minus", "distribution", "sigma
 class _Quantity:
     """Validator turning a quantity (with an optional tolerance) into SI, with a sign check."""
 
-    def __init__(self, dimension: Dimension, sign: str | None) -> None:
+    def __init__(self, dimension: Dimension, sign: str | None,
+                 bounds: tuple[float, float] | None = None) -> None:
         self.dimension = dimension
         self.sign = sign
+        self.bounds = bounds  # open interval every value of the band must lie in
 
     def __call__(self, value: Any) -> float:
         if isinstance(value, dict):
@@ -130,11 +140,15 @@ class _Quantity:
             self._check_sign(nominal, f"'{value}'")
             return nominal
         self._check_sign(tolerance.nominal, "the nominal value")
-        self._check_sign(tolerance.low, f"the band's low end ({tolerance.low:g} "
-                         f"{self.dimension.si_unit})")
+        unit = "" if self.dimension.si_unit == "1" else f" {self.dimension.si_unit}"
+        self._check_sign(tolerance.low, f"the band's low end ({tolerance.low:g}{unit})")
+        self._check_sign(tolerance.high, f"the band's high end ({tolerance.high:g}{unit})")
         return Measured(tolerance.nominal, tolerance)
 
     def _check_sign(self, si: float, what: str) -> None:
+        if self.bounds is not None and not self.bounds[0] < si < self.bounds[1]:
+            raise ValueError(f"must be between {self.bounds[0]:g} and {self.bounds[1]:g} "
+                             f"(exclusive), got {what}")
         if self.sign == "positive" and not si > 0:
             raise ValueError(f"must be greater than zero, got {what}")
         if self.sign == "non-negative" and not si >= 0:
@@ -198,7 +212,8 @@ def _has_unit(text: str) -> bool:
     return bool(re.search(r"[^\s\d.eE+-]", text))
 
 
-def quantity(dimension: Dimension, sign: str | None = None) -> Any:
+def quantity(dimension: Dimension, sign: str | None = None,
+             bounds: tuple[float, float] | None = None) -> Any:
     """Annotated float type of a quantity field of ``dimension``.
 
     ``sign`` is None (any finite value), "positive" or "non-negative". The value
@@ -229,7 +244,14 @@ def quantity(dimension: Dimension, sign: str | None = None) -> Any:
     }
     schema = {"anyOf": [text_form, mapping_form], "x-dimension": dimension.name,
               "x-si-unit": dimension.si_unit, "examples": [dimension.example]}
-    return Annotated[float, PlainValidator(_Quantity(dimension, sign),
+    if dimension is DIMENSIONLESS:
+        number = {"type": "number"}
+        if bounds is not None:
+            number.update({"exclusiveMinimum": bounds[0], "exclusiveMaximum": bounds[1]})
+        schema["anyOf"].insert(0, number)
+        for key in ("nominal", "tolerance", "plus", "minus"):
+            mapping_form["properties"][key] = {"anyOf": [{"type": "number"}, text_schema]}
+    return Annotated[float, PlainValidator(_Quantity(dimension, sign, bounds),
                                            json_schema_input_type=str),
                      WithJsonSchema(schema)]
 
@@ -345,3 +367,36 @@ def _finite_number(text: str) -> float:
     if not math.isfinite(value):
         raise ValueError(f"'{text}' is not a finite number")
     return value
+
+
+def _poisson(value: Any) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not -1 < value < 0.5:
+        raise ValueError(f"must be a number between -1 and 0.5 (exclusive), like 0.3, got "
+                         f"{value!r}")
+    return float(value)
+
+
+PoissonRatio = Annotated[float, BeforeValidator(_poisson), WithJsonSchema(
+    {"type": "number", "exclusiveMinimum": -1, "exclusiveMaximum": 0.5})]
+
+#: Bearing steel (AISI 52100 / 100Cr6), ball and rings alike: E = 207.5 GPa (the value
+#: of bearing makers' contact calculations), ν = 0.3, ρ = 7850 kg/m³.
+STEEL_MODULUS, STEEL_POISSON, STEEL_DENSITY = 207.5e9, 0.3, 7850.0
+
+
+class ElasticMaterial(SpecModel):
+    """The elastic constants of ball and races (the same material for both)."""
+
+    elastic_modulus: PositiveStress = Field(STEEL_MODULUS, description="Young's modulus E")
+    poisson_ratio: PoissonRatio = Field(STEEL_POISSON, description="Poisson's ratio ν")
+
+
+class BallMaterial(ElasticMaterial):
+    """Elastic constants and the density of the balls (for their centrifugal force)."""
+
+    density: PositiveDensity = Field(STEEL_DENSITY, description="density of the balls")
+
+
+#: Groove radius over ball diameter: above 0.5 (at 0.5 or below the ball would not fit
+#: its groove) and below 1. A plain number that may carry a tolerance (0.52 ± 0.005).
+Conformity = quantity(DIMENSIONLESS, bounds=(0.5, 1.0))

@@ -7,13 +7,25 @@ from typing import Any, Literal
 from pydantic import Field, model_validator
 
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.spec.fields import Angle, AngularSpeed, BallCount, PositiveLength, Ratio, SpecModel
+from bearingcalc.spec.fields import (
+    Angle,
+    AngularSpeed,
+    BallCount,
+    BallMaterial,
+    Force,
+    PositiveLength,
+    PositiveStress,
+    Ratio,
+    SpecModel,
+)
 
 _GEOMETRY = ("ball size", "contact_angle", "pitch_radius")
 
 
 class ThrustBearingLimits(SpecModel):
     max_spin_to_roll: Ratio = Field(0.01, description="largest allowed |spin/roll| at the shaft")
+    max_contact_pressure: PositiveStress = Field(4.2e9, description="largest Hertz pressure "
+                                                 "at any contact (ISO 76's 4200 MPa)")
 
 
 class ThrustBearingSpec(SpecModel):
@@ -31,6 +43,9 @@ class ThrustBearingSpec(SpecModel):
     pitch_radius: PositiveLength | None = Field(None, description="radius b of the ball centres")
     shaft_speed: AngularSpeed
     ball_count: BallCount | None = None
+    axial_load: Force | None = Field(None, description="thrust Fa on the shaft, shared by "
+                                     "the balls; adds the contact stresses")
+    material: BallMaterial = BallMaterial()
     limits: ThrustBearingLimits = ThrustBearingLimits()
 
     @model_validator(mode="after")
@@ -46,6 +61,9 @@ class ThrustBearingSpec(SpecModel):
                 f"{missing} are all missing; give at least two of ball_diameter (or "
                 "ball_radius), contact_angle and pitch_radius (the third is solved for pure "
                 "rolling)")
+        if self.axial_load is not None and self.ball_count is None:
+            raise SpecFieldError("axial_load", "the axial load is shared by the balls: give "
+                                 "ball_count too")
         return self
 
     @property
@@ -64,6 +82,11 @@ class ThrustBearingSpec(SpecModel):
             "shaft_speed": self.shaft_speed,
             "ball_count": self.ball_count,
             "max_spin_to_roll": self.limits.max_spin_to_roll,
+            "axial_load": self.axial_load,
+            "elastic_modulus": self.material.elastic_modulus,
+            "poisson_ratio": self.material.poisson_ratio,
+            "density": self.material.density,
+            "max_contact_pressure": self.limits.max_contact_pressure,
         }
 
     def field_as_written(self, field: str) -> str:
