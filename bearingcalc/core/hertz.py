@@ -16,10 +16,10 @@ from numpy.typing import ArrayLike, NDArray
 
 #: Newton iterations at most; from the tabulated start two or three reach full precision.
 MAX_ITERATIONS = 30
-#: Below this modulus F(ρ) is summed as a power series: the closed form loses digits to
-#: cancellation there (its numerator is of order m² out of terms of order 1).
-SERIES_LIMIT = 0.1
-SERIES_TERMS = 20
+#: Below this modulus F(ρ) is summed as a power series: the closed form loses digits
+#: to cancellation there (its numerator is of order m² out of terms of order 1).
+SERIES_LIMIT = 0.3
+SERIES_TERMS = 40
 
 
 def _series_coefficients() -> NDArray:
@@ -56,12 +56,13 @@ def _difference_and_slope(m: NDArray) -> tuple[NDArray, NDArray]:
 
     big_k, big_e = ellipk(m), ellipe(m)
     one_minus = 1.0 - m
-    numerator = (2.0 - m) * big_e - 2.0 * one_minus * big_k
-    d_e = (big_e - big_k) / (2.0 * m)
-    d_k = (big_e - one_minus * big_k) / (2.0 * m * one_minus)
-    d_numerator = (2.0 - m) * d_e - big_e + 2.0 * big_k - 2.0 * one_minus * d_k
-    over_m = numerator / m
-    over_m_slope = (d_numerator - over_m) / m
+    with np.errstate(all="ignore"):  # m = 0 divides by zero here; the series takes over
+        numerator = (2.0 - m) * big_e - 2.0 * one_minus * big_k
+        d_e = (big_e - big_k) / (2.0 * m)
+        d_k = (big_e - one_minus * big_k) / (2.0 * m * one_minus)
+        d_numerator = (2.0 - m) * d_e - big_e + 2.0 * big_k - 2.0 * one_minus * d_k
+        over_m = numerator / m
+        over_m_slope = (d_numerator - over_m) / m
     small = np.flatnonzero(m < SERIES_LIMIT)
     if small.size:
         # N/m by its power series, and E' by K' − E' ... from the series of K − E.
@@ -80,13 +81,14 @@ def curvature_difference(ellipse_modulus: ArrayLike) -> NDArray:
     .. math:: F = \frac{(k^2 + 1)E(m) - 2K(m)}{(k^2 - 1)E(m)}
                 = \frac{(2 - m)E(m) - 2(1 - m)K(m)}{m\,E(m)}
 
-    which rises from 0 (a circle, m → 0) toward 1 (a line, m → 1). Below m = 0.1 the
+    which rises from 0 (a circle, m → 0) toward 1 (a line, m → 1). Below m = 0.3 the
     numerator is summed as its power series, free of cancellation.
 
     Source: Harris & Kotzalas, *Essential Concepts of Bearing Technology*, 5th ed.,
     eq. (6.26); Hamrock, Schmid & Jacobson, *Fundamentals of Machine Elements*, ch. 8.
     """
-    return _difference_and_slope(np.asarray(ellipse_modulus, dtype=float))[0]
+    m = np.asarray(ellipse_modulus, dtype=float)
+    return _difference_and_slope(m.reshape(-1))[0].reshape(m.shape)
 
 
 #: The starting table: m at evenly spaced v = ln((1 + F)/(1 − F)) from 0 to START_V_MAX.
