@@ -136,7 +136,8 @@ KINDS: dict[str, Kind] = {
              limits={"apex_mismatch": "max_apex_mismatch"}),
         Kind("ball-bearing", "a rolling ball bearing: ISO 281 rating life, ISO 76 static safety",
              BallBearingSpec, ball_bearing,
-             margins=("life_margin", "static_safety_margin", "contact_pressure_margin"),
+             margins=("life_margin", "static_safety_margin", "contact_pressure_margin",
+                      "spin_to_roll_margin"),
              governing=("life_margin", "modified_rating_life", "static_safety_factor")),
     )
 }

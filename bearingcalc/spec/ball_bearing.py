@@ -7,6 +7,7 @@ import math
 import re
 from typing import Annotated, Any, Literal
 
+import numpy as np
 from pydantic import BeforeValidator, Field, WithJsonSchema, model_validator
 
 from bearingcalc.errors import SpecFieldError
@@ -106,6 +107,8 @@ class BallBearingLimits(SpecModel):
     min_rating_life: PositiveTime | None = Field(None, description="judged on the modified "
                                                  "rating life; not judged when absent")
     min_static_safety: Ratio = Field(1.0, description="smallest static safety factor s0")
+    max_spin_to_roll: Ratio | None = Field(None, description="largest |spin/roll|, judged "
+                                           "at the race that is not controlling")
     max_contact_pressure: PositiveStress = Field(
         ISO_76_PRESSURE, description="largest Hertz pressure (ISO 76: 4200 MPa for ball "
         "bearings)")
@@ -130,7 +133,12 @@ class BallBearingSpec(SpecModel):
                                         "90 deg for thrust by default")
     radial_load: Force = Field(0.0, description="Fr")
     axial_load: Force = Field(0.0, description="Fa")
-    speed: AngularSpeed = Field(description="the rotating ring relative to the other")
+    speed: AngularSpeed | None = Field(None, description="the rotating ring relative to the "
+                                       "other (inner turning, outer fixed)")
+    inner_speed: AngularSpeed | None = Field(None, description="inner ring, fixed frame")
+    outer_speed: AngularSpeed | None = Field(None, description="outer ring, fixed frame")
+    race_control: Literal["outer", "inner"] = Field(
+        "outer", description="the race at which the ball does not spin (Jones)")
     reliability: Reliability = 0.9
     lubrication: Lubrication | None = None
     contamination_factor: UnitFraction | None = Field(None, description="eC, 0 to 1")
@@ -145,9 +153,19 @@ class BallBearingSpec(SpecModel):
     @model_validator(mode="after")
     def _complete(self) -> BallBearingSpec:
         thrust = self.type == "thrust"
-        if not self.speed > 0:
+        ring_speeds = self.inner_speed is not None or self.outer_speed is not None
+        if self.speed is not None and ring_speeds:
+            raise SpecFieldError("speed", "give speed (the inner ring turning, the outer "
+                                 "fixed), or inner_speed and outer_speed, not both")
+        if self.speed is None and not ring_speeds:
+            raise SpecFieldError("speed", "missing: give speed, like 3000 rpm, or the ring "
+                                 "speeds inner_speed and outer_speed")
+        if self.speed is not None and not self.speed > 0:
             raise SpecFieldError("speed", "must be positive: the life in hours needs a "
                                  "turning bearing, like 3000 rpm")
+        if not self.relative_speed > 0:
+            raise SpecFieldError("inner_speed", "the rings must turn relative to each other: "
+                                 "the life in hours needs inner_speed ≠ outer_speed")
         if self.radial_load == 0 and self.axial_load == 0:
             raise SpecFieldError("radial_load", "both loads are zero, so the life is "
                                  "undefined: give radial_load or axial_load, like 10 kN")
@@ -228,6 +246,22 @@ class BallBearingSpec(SpecModel):
         return DEFAULT_CONTACT_ANGLE.get(self.type, 0.0)
 
     @property
+    def relative_speed(self) -> Any:
+        """n, the rotating ring relative to the other: ``speed`` or |inner − outer|. [rad/s]"""
+        if self.speed is not None:
+            return self.speed
+        return np.abs(self.ring_speeds[0] - self.ring_speeds[1])
+
+    @property
+    def ring_speeds(self) -> tuple[Any, Any]:
+        """(inner, outer) ring speeds in the fixed frame; ``speed`` alone turns the inner
+        ring with the outer fixed, and a ring speed left out is 0. [rad/s]"""
+        if self.speed is not None:
+            return self.speed, 0.0
+        return (0.0 if self.inner_speed is None else self.inner_speed,
+                0.0 if self.outer_speed is None else self.outer_speed)
+
+    @property
     def has_geometry(self) -> bool:
         return None not in (self.ball_count, self.ball_diameter, self.pitch_diameter)
 
@@ -273,7 +307,11 @@ class BallBearingSpec(SpecModel):
             "contact_angle": self.angle,
             "radial_load": self.radial_load,
             "axial_load": self.axial_load,
-            "speed": self.speed,
+            "speed": self.relative_speed,
+            "inner_speed": self.ring_speeds[0],
+            "outer_speed": self.ring_speeds[1],
+            "race_control": self.race_control,
+            "max_spin_to_roll": self.limits.max_spin_to_roll,
             "reliability": self.reliability,
             "viscosity": lubrication.viscosity if lubrication else None,
             "viscosity_40": lubrication.viscosity_40 if lubrication else None,
