@@ -18,6 +18,7 @@ from collections.abc import Collection, Mapping
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from bearingcalc.core import bevel_sizing
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
 
 RESULTS: dict[str, tuple[str, str]] = {
@@ -35,6 +36,69 @@ RESULTS: dict[str, tuple[str, str]] = {
     "pitch_line_speed": ("m/s", "pitch point speed relative to the arm, b·|ω_Z − Ω|"),
     "apex_mismatch": ("1", "b·sinα/(a·sinβ) − 1; 0 when the pitch cones share their apex"),
     "slip_margin": ("1", "max_apex_mismatch − |apex_mismatch|"),
+    "outer_cone_distance": ("m", "Re, apex to the outer end of the face"),
+    "mean_cone_distance": ("m", "Rm = Re − b/2"),
+    "face_width_ratio": ("1", "b/Re"),
+    "mean_module": ("m", "mm = m·Rm/Re"),
+    "gear_a_outer_pitch_diameter": ("m", "de1 = m·z1"),
+    "gear_b_outer_pitch_diameter": ("m", "de2 = m·z2"),
+    "gear_a_mean_pitch_diameter": ("m", "dm1 = de1·Rm/Re"),
+    "gear_b_mean_pitch_diameter": ("m", "dm2 = de2·Rm/Re"),
+    "gear_a_virtual_teeth": ("1", "zv1 = z1/cosδ1 (Tredgold)"),
+    "gear_b_virtual_teeth": ("1", "zv2 = z2/cosδ2"),
+    "gear_a_addendum": ("m", "ha1 = 2m − ha2 (Gleason)"),
+    "gear_b_addendum": ("m", "ha2 (Gleason)"),
+    "gear_a_dedendum": ("m", "hf1 = h − ha1, h = 2.188·m + 0.051 mm"),
+    "gear_b_dedendum": ("m", "hf2 = h − ha2"),
+    "gear_a_dedendum_angle": ("rad", "θf1 = atan(hf1/Re)"),
+    "gear_b_dedendum_angle": ("rad", "θf2 = atan(hf2/Re)"),
+    "gear_a_outside_diameter": ("m", "da1 = de1 + 2·ha1·cosδ1"),
+    "gear_b_outside_diameter": ("m", "da2 = de2 + 2·ha2·cosδ2"),
+    "gear_a_crown_to_apex": ("m", "pitch apex to crown X1 = Re·cosδ1 − ha1·sinδ1"),
+    "gear_b_crown_to_apex": ("m", "pitch apex to crown X2 = Re·cosδ2 − ha2·sinδ2"),
+    "contact_ratio": ("1", "εα of the virtual spur pair at the mean section"),
+    "tangential_force": ("N", "Wt = 2T/dm1 at the mean pitch point"),
+    "gear_a_radial_force": ("N", "Wr1 = Wt·tanφ·cosδ1"),
+    "gear_a_axial_force": ("N", "Wa1 = Wt·tanφ·sinδ1"),
+    "gear_b_radial_force": ("N", "Wr2 = Wt·tanφ·cosδ2 (= Wa1 at Σ = 90°)"),
+    "gear_b_axial_force": ("N", "Wa2 = Wt·tanφ·sinδ2 (= Wr1 at Σ = 90°)"),
+    "bending_stress": ("Pa", "AGMA 2003 s_F"),
+    "contact_stress": ("Pa", "AGMA 2003 s_H"),
+    "bending_safety": ("1", "S_F"),
+    "contact_safety": ("1", "S_H"),
+    "bending_power_rating": ("W", "power at S_F = 1, same speed"),
+    "contact_power_rating": ("W", "power at S_H = 1, same speed"),
+    "face_width_margin": ("1", "max_face_width_ratio − b/Re"),
+    "bending_safety_margin": ("1", "S_F − min_bending_safety"),
+    "contact_safety_margin": ("1", "S_H − min_contact_safety"),
+}
+
+#: Headings of the table, each with its results.
+GROUPS: dict[str, tuple[str, ...]] = {
+    "kinematics": ("gear_a_pitch_radius", "gear_b_pitch_radius", "gear_a_pitch_angle",
+                   "gear_b_pitch_angle", "shaft_angle", "gear_ratio", "cone_distance",
+                   "gear_a_speed_relative_to_arm", "relative_speed", "gear_a_speed",
+                   "contact_point_speed", "pitch_line_speed", "apex_mismatch", "slip_margin"),
+    "geometry": ("outer_cone_distance", "mean_cone_distance", "face_width_ratio",
+                 "mean_module", "gear_a_outer_pitch_diameter", "gear_b_outer_pitch_diameter",
+                 "gear_a_mean_pitch_diameter", "gear_b_mean_pitch_diameter",
+                 "gear_a_virtual_teeth", "gear_b_virtual_teeth", "gear_a_addendum",
+                 "gear_b_addendum", "gear_a_dedendum", "gear_b_dedendum",
+                 "gear_a_dedendum_angle", "gear_b_dedendum_angle", "gear_a_outside_diameter",
+                 "gear_b_outside_diameter", "gear_a_crown_to_apex", "gear_b_crown_to_apex",
+                 "contact_ratio", "face_width_margin"),
+    "forces": ("tangential_force", "gear_a_radial_force", "gear_a_axial_force",
+               "gear_b_radial_force", "gear_b_axial_force"),
+    "rating": ("bending_stress", "contact_stress", "bending_safety", "contact_safety",
+               "bending_power_rating", "contact_power_rating", "bending_safety_margin",
+               "contact_safety_margin"),
+}
+
+#: Conditions reported per design as warnings: flag key -> message.
+WARNINGS: dict[str, str] = {
+    "_warn_undercut": "the pinion's virtual teeth zv1 are below 2/sin²φ (17.1 at 20°): a "
+                      "generated pinion undercuts unless its addendum is lengthened; check "
+                      "the Gleason minimum for this ratio",
 }
 
 STATUS_REASONS: dict[int, tuple[str, str]] = {
@@ -46,6 +110,10 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
     5: ("gear_b.pitch_angle", "the pitch angle of gear B must be between 0 deg and the "
                               "shaft angle"),
     6: ("shaft_angle", "the shaft angle must equal the sum of the two pitch angles"),
+    7: ("face_width", "must be less than half the outer cone distance Re (and in practice at "
+                      "most Re/3)"),
+    8: ("power", "gear A does not turn relative to its arm, so power gives no torque: give "
+                 "torque instead"),
 }
 
 #: |γ − (α + β)| above which given angles are inconsistent. [rad] (about 2e-7 deg)
@@ -209,4 +277,49 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
     results = solve_bevel_gears(a, b, alpha, beta, inputs["arm_speed"],  # type: ignore[arg-type]
                                 gear_b_speed=inputs["gear_b_speed"],  # type: ignore[arg-type]
                                 max_apex_mismatch=inputs["max_apex_mismatch"])  # type: ignore[arg-type]
-    return results, status
+    if inputs.get("face_width") is None:
+        return results, status
+    sized, checks = size_pair(inputs, results)
+    shape = np.broadcast_shapes(status.shape, *(np.shape(c) for _, c in checks))
+    status = np.where(np.broadcast_to(status, shape) != 0, np.broadcast_to(status, shape),
+                      first_failure(checks, shape))
+    return broadcast_all({**results, **sized}), status
+
+
+def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, NDArray]
+              ) -> tuple[dict[str, NDArray], list[tuple[int, NDArray]]]:
+    """Blank geometry, tooth forces and AGMA rating of a pair given by teeth and module,
+    and the status checks they add (see :mod:`bearingcalc.core.bevel_sizing`)."""
+    alpha, beta = kinematics["gear_a_pitch_angle"], kinematics["gear_b_pitch_angle"]
+    phi = np.asarray(inputs["pressure_angle"], dtype=float)
+    face = np.asarray(inputs["face_width"], dtype=float)
+    out = bevel_sizing.blank_geometry(inputs["gear_a_teeth"], inputs["gear_b_teeth"],  # type: ignore[arg-type]
+                                      inputs["module"], alpha, beta, face, phi)  # type: ignore[arg-type]
+    checks: list[tuple[int, NDArray]] = [(7, ~(face < 0.5 * out["outer_cone_distance"]))]
+    out["face_width_margin"] = np.asarray(inputs["max_face_width_ratio"]) - out["face_width_ratio"]
+    out["_warn_undercut"] = (out["gear_a_virtual_teeth"] < 2.0 / np.sin(phi) ** 2).astype(float)
+    speed = np.abs(kinematics["gear_a_speed_relative_to_arm"])
+    if inputs.get("torque") is not None:
+        torque = np.abs(np.asarray(inputs["torque"], dtype=float))
+    elif inputs.get("power") is not None:
+        checks.append((8, ~(speed > 0)))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            torque = np.asarray(inputs["power"], dtype=float) / speed
+    else:
+        return out, checks
+    out.update(bevel_sizing.tooth_forces(torque, out["gear_a_mean_pitch_diameter"], phi,
+                                         alpha, beta))
+    if inputs.get("quality_number") is None:
+        return out, checks
+    rating = bevel_sizing.agma_rating(
+        torque, speed, inputs["module"], out["gear_a_outer_pitch_diameter"], face,  # type: ignore[arg-type]
+        inputs["quality_number"], inputs["hardness"], inputs["mounting_factor"],  # type: ignore[arg-type]
+        inputs["crowned"], inputs["geometry_factor_bending"],  # type: ignore[arg-type]
+        inputs["geometry_factor_pitting"], inputs["overload_factor"], inputs["cycles"],  # type: ignore[arg-type]
+        inputs["reliability"])  # type: ignore[arg-type]
+    out.update(rating)
+    out["bending_safety_margin"] = rating["bending_safety"] - np.asarray(
+        inputs["min_bending_safety"])
+    out["contact_safety_margin"] = rating["contact_safety"] - np.asarray(
+        inputs["min_contact_safety"])
+    return out, checks

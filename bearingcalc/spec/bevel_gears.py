@@ -3,19 +3,89 @@
 from __future__ import annotations
 
 import math
-from typing import Any, Literal
+import re
+from typing import Annotated, Any, Literal
 
-from pydantic import Field, model_validator
+from pydantic import BeforeValidator, Field, WithJsonSchema, model_validator
 
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.spec.fields import (
     Angle,
     AngularSpeed,
     PositiveLength,
+    PositivePower,
     Ratio,
     SpecModel,
     ToothCount,
+    Torque,
 )
+
+MOUNTING_FACTOR = {"both-straddle": 1.00, "one-straddle": 1.10, "neither-straddle": 1.25}
+
+
+def _ranged(low: float, high: float, what: str, example: str, whole: bool = False) -> Any:
+    """A plain number field in [low, high] with a message that names the range."""
+    def check(value: Any) -> float:
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise ValueError(f"must be a number, like {example}, got {value!r}")
+        if whole and not float(value).is_integer():
+            raise ValueError(f"must be a whole number ({what}), got {value!r}")
+        if not low <= value <= high:
+            raise ValueError(f"must be from {low:g} to {high:g} ({what}), got {value!r}")
+        return float(value)
+    return Annotated[float, BeforeValidator(check), WithJsonSchema(
+        {"type": "integer" if whole else "number", "minimum": low, "maximum": high})]
+
+
+def _hardness(value: Any) -> float:
+    if isinstance(value, str):
+        match = re.fullmatch(r"\s*([0-9]+(?:\.[0-9]*)?)\s*(?:HB|HBW|BHN)\s*", value, re.ASCII)
+        if match is None:
+            raise ValueError(f"write the Brinell hardness like '180 HB', got {value!r}")
+        value = float(match[1])
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ValueError(f"write the Brinell hardness like '180 HB', got {value!r}")
+    if not 180 <= value <= 400:
+        raise ValueError(f"must be from 180 to 400 HB (through-hardened grade 1 steel in "
+                         f"AGMA 2003), got {value:g}")
+    return float(value)
+
+
+def _reliability(value: Any) -> float:
+    if isinstance(value, str):
+        match = re.fullmatch(r"\s*([0-9]+(?:\.[0-9]*)?)\s*%\s*", value, re.ASCII)
+        if match is None:
+            raise ValueError(f"write a reliability as 0.99 or '99 %', got {value!r}")
+        value = float(match[1]) / 100.0
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ValueError(f"write a reliability as 0.99 or '99 %', got {value!r}")
+    if not 0.9 <= value <= 0.9999:
+        raise ValueError(f"must be from 0.9 to 0.9999 (AGMA 2003's K_R), got {value:g}")
+    return float(value)
+
+
+Hardness = Annotated[float, BeforeValidator(_hardness), WithJsonSchema({"anyOf": [
+    {"type": "string", "pattern": r"^\s*[0-9]+(\.[0-9]*)?\s*(HB|HBW|BHN)\s*$"},
+    {"type": "number", "minimum": 180, "maximum": 400}]})]
+RatingReliability = Annotated[float, BeforeValidator(_reliability), WithJsonSchema({"anyOf": [
+    {"type": "string", "pattern": r"^\s*[0-9]+(\.[0-9]*)?\s*%\s*$"},
+    {"type": "number", "minimum": 0.9, "maximum": 0.9999}]})]
+
+
+class BevelRating(SpecModel):
+    """The AGMA 2003 strength rating of a straight bevel pair of through-hardened steel."""
+
+    quality_number: _ranged(5, 11, "AGMA transmission accuracy number Qv", "7",  # type: ignore[valid-type]
+                            whole=True)
+    hardness: Hardness = Field(description="Brinell hardness, grade 1 through-hardened")
+    mounting: Literal["both-straddle", "one-straddle", "neither-straddle"] = Field(
+        description="Kmb 1.00 / 1.10 / 1.25")
+    crowned: bool = False
+    geometry_factor_bending: _ranged(1e-6, 10, "J, from AGMA 2003", "0.216")  # type: ignore[valid-type]
+    geometry_factor_pitting: _ranged(1e-6, 10, "I, from AGMA 2003", "0.065")  # type: ignore[valid-type]
+    overload_factor: _ranged(1, 10, "Ko", "1.0") = 1.0  # type: ignore[valid-type]
+    cycles: _ranged(1e3, 1e10, "load cycles of the pinion", "1e7") = 1e7  # type: ignore[valid-type]
+    reliability: RatingReliability = 0.99
 
 
 class Gear(SpecModel):
@@ -28,6 +98,9 @@ class Gear(SpecModel):
 class BevelGearsLimits(SpecModel):
     max_apex_mismatch: Ratio = Field(0.001, description="largest allowed "
                                      "|b·sinα/(a·sinβ) − 1|")
+    max_face_width_ratio: Ratio = Field(1 / 3, description="largest b/Re")
+    min_bending_safety: Ratio = Field(1.0, description="smallest S_F")
+    min_contact_safety: Ratio = Field(1.0, description="smallest S_H")
 
 
 class BevelGearsSpec(SpecModel):
@@ -41,6 +114,11 @@ class BevelGearsSpec(SpecModel):
     shaft_angle: Angle | None = Field(None, description="shaft angle γ between the gear axes")
     arm_speed: AngularSpeed = Field(description="ω_Z, the arm carrying gear A")
     gear_b_speed: AngularSpeed = Field(0.0, description="Ω, gear B's shaft")
+    face_width: PositiveLength | None = Field(None, description="b; enables sizing")
+    pressure_angle: Angle = Field(math.radians(20.0), description="φ, default 20 deg")
+    torque: Torque | None = Field(None, description="on gear A (the pinion)")
+    power: PositivePower | None = Field(None, description="through gear A, instead of torque")
+    rating: BevelRating | None = None
     limits: BevelGearsLimits = BevelGearsLimits()
 
     @model_validator(mode="after")
@@ -69,6 +147,22 @@ class BevelGearsSpec(SpecModel):
                 f"({a.pitch_radius * 1e3:g} mm/{b.pitch_radius * 1e3:g} mm): meshing gears "
                 "have pitch radii in the ratio of their teeth; leave the teeth or the radii "
                 "out, or make them agree")
+        sizing = [name for name in ("face_width", "torque", "power", "rating")
+                  if getattr(self, name) is not None]
+        if sizing and (self.module is None or self.gear_a.teeth is None
+                       or self.gear_b.teeth is None):
+            raise SpecFieldError(sizing[0], "sizing needs the teeth of both gears and the "
+                                 "(outer) module, not pitch radii alone")
+        if sizing and self.face_width is None:
+            raise SpecFieldError(sizing[0], "sizing needs face_width, like 28 mm")
+        if self.torque is not None and self.power is not None:
+            raise SpecFieldError("power", "give torque or power on gear A, not both")
+        if self.rating is not None and self.torque is None and self.power is None:
+            raise SpecFieldError("rating", "the strength rating needs a load: give torque "
+                                 "(like 150 N*m) or power (like 9.4 kW) on gear A")
+        if not 0 < self.pressure_angle < math.radians(45):
+            raise SpecFieldError("pressure_angle", "must be between 0 deg and 45 deg, like "
+                                 "20 deg")
         if self.shaft_angle is None and (self.gear_a.pitch_angle is None
                                          or self.gear_b.pitch_angle is None):
             raise SpecFieldError("shaft_angle", "missing: give shaft_angle (90 deg for the "
@@ -89,4 +183,27 @@ class BevelGearsSpec(SpecModel):
             "arm_speed": self.arm_speed,
             "gear_b_speed": self.gear_b_speed,
             "max_apex_mismatch": self.limits.max_apex_mismatch,
+            **self._sizing_inputs(),
+        }
+
+    def _sizing_inputs(self) -> dict[str, Any]:
+        rating = self.rating
+        limits = self.limits
+        return {
+            "face_width": self.face_width,
+            "pressure_angle": self.pressure_angle,
+            "torque": self.torque,
+            "power": self.power,
+            "quality_number": rating.quality_number if rating else None,
+            "hardness": rating.hardness if rating else None,
+            "mounting_factor": MOUNTING_FACTOR[rating.mounting] if rating else None,
+            "crowned": float(rating.crowned) if rating else None,
+            "geometry_factor_bending": rating.geometry_factor_bending if rating else None,
+            "geometry_factor_pitting": rating.geometry_factor_pitting if rating else None,
+            "overload_factor": rating.overload_factor if rating else None,
+            "cycles": rating.cycles if rating else None,
+            "reliability": rating.reliability if rating else None,
+            "max_face_width_ratio": limits.max_face_width_ratio,
+            "min_bending_safety": limits.min_bending_safety,
+            "min_contact_safety": limits.min_contact_safety,
         }

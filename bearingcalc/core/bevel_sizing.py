@@ -1,0 +1,244 @@
+"""Sizing a straight bevel pair: blank geometry, tooth forces and the AGMA 2003 rating
+(``docs/physics.md`` §8).
+
+Gear A is the pinion (z1 teeth, pitch angle δ1), gear B the gear (z2, δ2). Inputs
+are SI floats or broadcasting arrays; inside the rating, the SI form of AGMA 2003
+(Budynas & Nisbett, *Shigley's Mechanical Engineering Design*, ch. 15) works in
+mm, N, MPa and m/s, as that form is written.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+MM = 1e3
+#: Gleason whole depth: h = 2.188·m + 0.051 mm. [m]
+WHOLE_DEPTH_FACTOR, WHOLE_DEPTH_EXTRA = 2.188, 0.051e-3
+#: AGMA 2003 load-distribution base factor Kmb by mounting.
+MOUNTING_FACTOR = {"both-straddle": 1.00, "one-straddle": 1.10, "neither-straddle": 1.25}
+#: Elastic coefficient of steel on steel. [√MPa]
+STEEL_ELASTIC_COEFFICIENT = 190.0
+
+
+def blank_geometry(pinion_teeth: ArrayLike, gear_teeth: ArrayLike, module: ArrayLike,
+                   pinion_pitch_angle: ArrayLike, gear_pitch_angle: ArrayLike,
+                   face_width: ArrayLike, pressure_angle: ArrayLike) -> dict[str, NDArray]:
+    r"""Blank dimensions of a straight bevel pair (Gleason proportions, no offset).
+
+    With the outer transverse module m at the large end:
+
+    .. math:: d_e = m z, \quad R_e = \frac{d_e}{2\sin\delta}, \quad R_m = R_e - \frac b2,
+              \quad m_m = m\frac{R_m}{R_e}, \quad d_m = d_e\frac{R_m}{R_e},
+              \quad z_v = \frac{z}{\cos\delta}
+
+    h_a2 = 0.54·m + 0.46·m / (z2·cosδ1/(z1·cosδ2)), h_a1 = 2m − h_a2,
+    h = 2.188·m + 0.051 mm, h_f = h − h_a, θ_f = atan(h_f/R_e),
+    d_a = d_e + 2·h_a·cosδ, and the pitch apex to crown X = R_e·cosδ − h_a·sinδ.
+    The transverse contact ratio is the virtual spur pair's at the mean section
+    (virtual pitch radii d_m/(2cosδ), addenda h_a·R_m/R_e, base pitch π·m_m·cosφ).
+
+    Parameters
+    ----------
+    pinion_teeth, gear_teeth : z1, z2. [1]
+    module : m, outer transverse. [m]
+    pinion_pitch_angle, gear_pitch_angle : δ1, δ2. [rad]
+    face_width : b. [m]
+    pressure_angle : φ. [rad]
+
+    Returns
+    -------
+    dict keyed as the sizing results (outer_cone_distance, …). [SI]
+
+    Source: ISO 23509:2016 (cone geometry); Gleason Works, *Straight Bevel Gear Design*
+    (addendum and whole depth), as tabulated in the KHK Gear Technical Reference,
+    "Bevel gear calculations"; Dudley, *Handbook of Practical Gear Design*, ch. 3.
+
+    >>> g = blank_geometry(20, 40, 3e-3, np.arctan(0.5), np.arctan(2.0), 20e-3,
+    ...                    np.radians(20))
+    >>> [round(float(g[k]) * 1e3, 4) for k in ("gear_a_outside_diameter",
+    ...                                        "gear_b_crown_to_apex")]
+    [67.218, 28.2425]
+    """
+    z1, z2 = np.asarray(pinion_teeth, dtype=float), np.asarray(gear_teeth, dtype=float)
+    m = np.asarray(module, dtype=float)
+    d1, d2 = (np.asarray(x, dtype=float) for x in (pinion_pitch_angle, gear_pitch_angle))
+    b = np.asarray(face_width, dtype=float)
+    phi = np.asarray(pressure_angle, dtype=float)
+    de1, de2 = m * z1, m * z2
+    cone = de1 / (2.0 * np.sin(d1))
+    mean_cone = cone - 0.5 * b
+    scale = mean_cone / cone
+    ha2 = 0.54 * m + 0.46 * m / (z2 * np.cos(d1) / (z1 * np.cos(d2)))
+    ha1 = 2.0 * m - ha2
+    depth = WHOLE_DEPTH_FACTOR * m + WHOLE_DEPTH_EXTRA
+    hf1, hf2 = depth - ha1, depth - ha2
+    dm1, dm2 = de1 * scale, de2 * scale
+    out = {
+        "outer_cone_distance": cone, "mean_cone_distance": mean_cone,
+        "face_width_ratio": b / cone, "mean_module": m * scale,
+        "gear_a_outer_pitch_diameter": de1, "gear_b_outer_pitch_diameter": de2,
+        "gear_a_mean_pitch_diameter": dm1, "gear_b_mean_pitch_diameter": dm2,
+        "gear_a_virtual_teeth": z1 / np.cos(d1), "gear_b_virtual_teeth": z2 / np.cos(d2),
+        "gear_a_addendum": ha1, "gear_b_addendum": ha2,
+        "gear_a_dedendum": hf1, "gear_b_dedendum": hf2,
+        "gear_a_dedendum_angle": np.arctan(hf1 / cone),
+        "gear_b_dedendum_angle": np.arctan(hf2 / cone),
+        "gear_a_outside_diameter": de1 + 2.0 * ha1 * np.cos(d1),
+        "gear_b_outside_diameter": de2 + 2.0 * ha2 * np.cos(d2),
+        "gear_a_crown_to_apex": cone * np.cos(d1) - ha1 * np.sin(d1),
+        "gear_b_crown_to_apex": cone * np.cos(d2) - ha2 * np.sin(d2),
+    }
+    out["contact_ratio"] = virtual_contact_ratio(dm1 / (2.0 * np.cos(d1)),
+                                                 dm2 / (2.0 * np.cos(d2)),
+                                                 ha1 * scale, ha2 * scale, m * scale, phi)
+    return out
+
+
+def virtual_contact_ratio(pitch_radius_1: ArrayLike, pitch_radius_2: ArrayLike,
+                          addendum_1: ArrayLike, addendum_2: ArrayLike, module: ArrayLike,
+                          pressure_angle: ArrayLike) -> NDArray:
+    r"""Transverse contact ratio of a spur pair (the virtual pair of a bevel set).
+
+    .. math:: \varepsilon_\alpha = \frac{\sqrt{r_{a1}^2 - r_{b1}^2}
+              + \sqrt{r_{a2}^2 - r_{b2}^2} - (r_1 + r_2)\sin\varphi}{\pi m\cos\varphi}
+
+    with r_a = r + h_a and r_b = r·cosφ. [1]
+
+    Source: ISO 6336-1 / Budynas & Nisbett ch. 13 (length of action over base pitch).
+    """
+    r1, r2 = (np.asarray(x, dtype=float) for x in (pitch_radius_1, pitch_radius_2))
+    phi = np.asarray(pressure_angle, dtype=float)
+    cos, sin = np.cos(phi), np.sin(phi)
+    ra1 = r1 + np.asarray(addendum_1, dtype=float)
+    ra2 = r2 + np.asarray(addendum_2, dtype=float)
+    action = (np.sqrt(ra1 ** 2 - (r1 * cos) ** 2) + np.sqrt(ra2 ** 2 - (r2 * cos) ** 2)
+              - (r1 + r2) * sin)
+    return action / (np.pi * np.asarray(module, dtype=float) * cos)
+
+
+def tooth_forces(pinion_torque: ArrayLike, pinion_mean_diameter: ArrayLike,
+                 pressure_angle: ArrayLike, pinion_pitch_angle: ArrayLike,
+                 gear_pitch_angle: ArrayLike) -> dict[str, NDArray]:
+    r"""Tooth forces of a straight bevel pair at the mean pitch point.
+
+    .. math:: W_t = \frac{2T}{d_{m1}}, \quad W_{r1} = W_t\tan\varphi\cos\delta_1,
+              \quad W_{a1} = W_t\tan\varphi\sin\delta_1, \quad
+              W_{r2} = W_t\tan\varphi\cos\delta_2, \quad
+              W_{a2} = W_t\tan\varphi\sin\delta_2
+
+    The separating force W_t·tanφ lies in the plane of the axes, square to the pitch
+    cones' common element, so each gear's share along and across its own axis follows
+    from its own pitch angle; at a shaft angle of 90° (δ1 + δ2 = 90°) the gear's forces
+    are the pinion's exchanged, W_r2 = W_a1 and W_a2 = W_r1.
+
+    Parameters
+    ----------
+    pinion_torque : T on gear A. [N·m]
+    pinion_mean_diameter : d_m1. [m]
+    pressure_angle : φ. [rad]
+    pinion_pitch_angle, gear_pitch_angle : δ1, δ2. [rad]
+
+    Source: Budynas & Nisbett, *Shigley's Mechanical Engineering Design*, 10th ed.,
+    §13-15, eq. (13-38).
+    """
+    torque = np.abs(np.asarray(pinion_torque, dtype=float))
+    tangential = 2.0 * torque / np.asarray(pinion_mean_diameter, dtype=float)
+    separating = tangential * np.tan(np.asarray(pressure_angle, dtype=float))
+    d1, d2 = (np.asarray(x, dtype=float) for x in (pinion_pitch_angle, gear_pitch_angle))
+    return {"tangential_force": tangential,
+            "gear_a_radial_force": separating * np.cos(d1),
+            "gear_a_axial_force": separating * np.sin(d1),
+            "gear_b_radial_force": separating * np.cos(d2),
+            "gear_b_axial_force": separating * np.sin(d2)}
+
+
+def dynamic_factor(quality_number: ArrayLike, pitch_line_speed: ArrayLike) -> NDArray:
+    r"""AGMA dynamic factor, SI form.
+
+    .. math:: K_v = \left(\frac{A + \sqrt{200\,v_{et}}}{A}\right)^B, \quad
+              B = 0.25(12 - Q_v)^{2/3}, \quad A = 50 + 56(1 - B)
+
+    with v_et in m/s.
+
+    Source: Budynas & Nisbett, eq. (15-5).
+    """
+    qv = np.asarray(quality_number, dtype=float)
+    b_exp = 0.25 * (12.0 - qv) ** (2.0 / 3.0)
+    a_coeff = 50.0 + 56.0 * (1.0 - b_exp)
+    return ((a_coeff + np.sqrt(200.0 * np.abs(np.asarray(pitch_line_speed)))) / a_coeff) ** b_exp
+
+
+def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: ArrayLike,
+                pinion_outer_diameter: ArrayLike, face_width: ArrayLike,
+                quality_number: ArrayLike, hardness: ArrayLike, mounting_factor: ArrayLike,
+                crowned: ArrayLike, bending_geometry_factor: ArrayLike,
+                pitting_geometry_factor: ArrayLike, overload_factor: ArrayLike,
+                cycles: ArrayLike, reliability: ArrayLike) -> dict[str, NDArray]:
+    r"""AGMA 2003 bending and contact stresses, safety factors and power ratings of a
+    straight bevel pair of through-hardened grade 1 steel, in the SI form of
+    Budynas & Nisbett ch. 15.
+
+    Wt = 2T/d_e1 at the outer pitch diameter, v_et its pitch-line speed;
+    s_F = (Wt/b)·Ks·Km/(Kx·J)·Ko·Kv/m with Ks = 0.4867 + 0.008339·m,
+    Km = Kmb + 5.6e−6·b², Kx = 1; s_H = Cp·√(Wt·Ko·Kv·Km·Cs·Cxc/(b·d_e1·I)) with
+    Cp = 190 √MPa, Cs = 0.00492·b + 0.4375, Cxc = 2 (1.5 crowned); allowables
+    s_at = 0.30·HB + 14.48 and s_ac = 2.35·HB + 162.89 MPa; K_L = 1.683·N^−0.0323,
+    C_L = 3.4822·N^−0.0602, K_R = 0.50 − 0.25·log10(1 − R) (R ≥ 0.99) else
+    0.70 − 0.15·log10(1 − R), C_R = √K_R, K_T = C_H = 1;
+    S_F = s_at·K_L/(K_T·K_R·s_F), S_H = s_ac·C_L/(K_T·C_R·s_H). The power at which
+    S = 1 at the same speed is P·S_F (bending, s_F ∝ Wt) and P·S_H² (contact,
+    s_H ∝ √Wt).
+
+    Parameters
+    ----------
+    pinion_torque : T. [N·m]
+    pinion_speed : n of gear A (relative to its arm). [rad/s]
+    module : m, outer. [m]
+    pinion_outer_diameter : d_e1. [m]
+    face_width : b. [m]
+    quality_number : Qv, 5 to 11. [1]
+    hardness : Brinell HB. [1]
+    mounting_factor : Kmb. [1]
+    crowned : true (1) for crowned teeth, Cxc = 1.5; else Cxc = 2.
+    bending_geometry_factor, pitting_geometry_factor : J, I. [1]
+    overload_factor : Ko. [1]
+    cycles : N, load cycles of the pinion. [1]
+    reliability : R, 0.9 to 0.9999. [1]
+
+    Returns
+    -------
+    dict with bending_stress and contact_stress [Pa], bending_safety and
+    contact_safety [1], bending_power_rating and contact_power_rating [W].
+
+    Source: ANSI/AGMA 2003-B97; Budynas & Nisbett, *Shigley's Mechanical Engineering
+    Design*, 10th ed., §15-1 to 15-4, eqs. (15-1)–(15-23), SI form.
+    """
+    torque = np.abs(np.asarray(pinion_torque, dtype=float))
+    speed = np.abs(np.asarray(pinion_speed, dtype=float))
+    m = np.asarray(module, dtype=float) * MM
+    de1 = np.asarray(pinion_outer_diameter, dtype=float) * MM
+    b = np.asarray(face_width, dtype=float) * MM
+    wt = 2.0 * torque * MM / de1                       # N, with T in N·mm
+    v = 0.5 * de1 / MM * speed                         # m/s
+    kv = dynamic_factor(quality_number, v)
+    ks = 0.4867 + 0.008339 * m
+    km = np.asarray(mounting_factor, dtype=float) + 5.6e-6 * b * b
+    ko = np.asarray(overload_factor, dtype=float)
+    bending = wt / b * ks * km / np.asarray(bending_geometry_factor, dtype=float) * ko * kv / m
+    cs = 0.00492 * b + 0.4375
+    cxc = np.where(np.asarray(crowned, dtype=bool), 1.5, 2.0)
+    contact = STEEL_ELASTIC_COEFFICIENT * np.sqrt(
+        wt * ko * kv * km * cs * cxc / (b * de1 * np.asarray(pitting_geometry_factor, dtype=float)))
+    hb = np.asarray(hardness, dtype=float)
+    n = np.asarray(cycles, dtype=float)
+    r = np.asarray(reliability, dtype=float)
+    k_l, c_l = 1.683 * n ** -0.0323, 3.4822 * n ** -0.0602
+    k_r = np.where(r >= 0.99, 0.50 - 0.25 * np.log10(1.0 - r), 0.70 - 0.15 * np.log10(1.0 - r))
+    bending_safety = (0.30 * hb + 14.48) * k_l / (k_r * bending)
+    contact_safety = (2.35 * hb + 162.89) * c_l / (np.sqrt(k_r) * contact)
+    power = torque * speed
+    return {"bending_stress": bending * 1e6, "contact_stress": contact * 1e6,
+            "bending_safety": bending_safety, "contact_safety": contact_safety,
+            "bending_power_rating": power * bending_safety,
+            "contact_power_rating": power * contact_safety ** 2}
