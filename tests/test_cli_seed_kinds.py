@@ -53,7 +53,8 @@ def test_every_kind_has_an_example_spec_and_complete_result_metadata():
     examples = {path.stem for path in (ROOT / "specs").glob("*.yaml")}
     assert set(KINDS) <= examples
     for name, keys in CONTRACT_KEYS.items():
-        assert list(KINDS[name].results) == keys
+        # the seed contract first, in order; later issues add results after it
+        assert list(KINDS[name].results)[:len(keys)] == keys
 
 
 @pytest.mark.parametrize("kind", sorted(CONTRACT_KEYS))
