@@ -7,27 +7,17 @@ Adding a kind takes a solver module in ``core/`` (with ``RESULTS``,
 
 from __future__ import annotations
 
+import importlib
 from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
 from types import ModuleType
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
-from bearingcalc.core import (
-    ball_bearing,
-    bevel_gears,
-    cone_on_plane,
-    disk_on_circle,
-    thrust_bearing,
-)
-from bearingcalc.spec.ball_bearing import BallBearingSpec
-from bearingcalc.spec.bevel_gears import BevelGearsSpec
-from bearingcalc.spec.cone_on_plane import ConeOnPlaneSpec
-from bearingcalc.spec.disk_on_circle import DiskOnCircleSpec
-from bearingcalc.spec.fields import SpecModel
-from bearingcalc.spec.thrust_bearing import ThrustBearingSpec
+if TYPE_CHECKING:
+    from bearingcalc.spec.fields import SpecModel
 
 #: Status of a design whose inputs are valid but whose results overflow double precision.
 OUT_OF_RANGE = 99
@@ -41,14 +31,27 @@ class Kind:
 
     name: str
     summary: str
-    model: type[SpecModel]
-    solver: ModuleType
+    #: "module:Class" of the spec model and the solver module, imported on first use:
+    #: a command that reads one kind builds only that kind's pydantic model.
+    model_path: str
+    solver_path: str
     margins: tuple[str, ...]   # result keys that must be >= 0 for the design to pass
     governing: tuple[str, ...]  # results a study shows first
     #: result key -> the solver input that limits it symmetrically: |result| <= limit
     limits: dict[str, str] = field(default_factory=dict)
     #: results that may legitimately be +inf (an edge that no design reaches)
     unbounded: tuple[str, ...] = ()
+
+    @property
+    def model(self) -> type[SpecModel]:
+        """The kind's pydantic spec model."""
+        module, _, name = self.model_path.partition(":")
+        return getattr(importlib.import_module(module), name)  # type: ignore[no-any-return]
+
+    @property
+    def solver(self) -> ModuleType:
+        """The kind's solver module (``RESULTS``, ``STATUS_REASONS``, ``evaluate``)."""
+        return importlib.import_module(self.solver_path)
 
     def evaluate(self, inputs: Mapping[str, Any], wanted: Collection[str] | None = None
                  ) -> tuple[dict[str, NDArray], NDArray]:
@@ -120,24 +123,29 @@ KINDS: dict[str, Kind] = {
     kind.name: kind
     for kind in (
         Kind("thrust-bearing", "balls between a fixed race and a turning shaft",
-             ThrustBearingSpec, thrust_bearing, margins=("slip_margin", "contact_pressure_margin"),
+             "bearingcalc.spec.thrust_bearing:ThrustBearingSpec",
+             "bearingcalc.core.thrust_bearing",
+             margins=("slip_margin", "contact_pressure_margin"),
              governing=("slip_margin", "spin_to_roll"),
              limits={"spin_to_roll": "max_spin_to_roll"},
              unbounded=("pitch_radius_max",)),
         Kind("disk-on-circle", "a disk rolling on a fixed or turning circle, outside or inside",
-             DiskOnCircleSpec, disk_on_circle, margins=(),
+             "bearingcalc.spec.disk_on_circle:DiskOnCircleSpec",
+             "bearingcalc.core.disk_on_circle", margins=(),
              governing=("contact_point_accel", "center_speed")),
         Kind("cone-on-plane", "a cone rolling on a plane about its fixed apex",
-             ConeOnPlaneSpec, cone_on_plane, margins=(),
+             "bearingcalc.spec.cone_on_plane:ConeOnPlaneSpec",
+             "bearingcalc.core.cone_on_plane", margins=(),
              governing=("precession_speed",)),
         Kind("bevel-gears", "an epicyclic bevel pair: gear B on a shaft, gear A on an arm",
-             BevelGearsSpec, bevel_gears,
+             "bearingcalc.spec.bevel_gears:BevelGearsSpec", "bearingcalc.core.bevel_gears",
              margins=("slip_margin", "face_width_margin", "bending_safety_margin",
                       "contact_safety_margin"),
              governing=("apex_mismatch", "slip_margin"),
              limits={"apex_mismatch": "max_apex_mismatch"}),
         Kind("ball-bearing", "a rolling ball bearing: ISO 281 rating life, ISO 76 static safety",
-             BallBearingSpec, ball_bearing,
+             "bearingcalc.spec.ball_bearing:BallBearingSpec",
+             "bearingcalc.core.ball_bearing",
              margins=("life_margin", "static_safety_margin", "contact_pressure_margin",
                       "spin_to_roll_margin"),
              governing=("life_margin", "modified_rating_life", "static_safety_factor")),

@@ -80,15 +80,16 @@ def test_a_bad_quantity_in_one_file_does_not_stop_a_check_batch(cli, spec_file, 
 
 
 def test_a_solver_surprise_is_that_specs_invalid_status_only(monkeypatch, tmp_path):
-    from bearingcalc import batch, kinds
+    from bearingcalc import batch
+    from bearingcalc.core import thrust_bearing
 
     def explode(inputs, wanted=None):
         if (np.asarray(inputs["shaft_speed"]) > 50).any():  # rad/s: 1500 rpm, not 100
             raise ZeroDivisionError("boom")
         return original(inputs, wanted)
 
-    original = kinds.thrust_bearing.evaluate
-    monkeypatch.setattr(kinds.thrust_bearing, "evaluate", explode)
+    original = thrust_bearing.evaluate
+    monkeypatch.setattr(thrust_bearing, "evaluate", explode)
     (tmp_path / "a.yaml").write_text(TB.replace("1500 rpm", "100 rpm"))
     (tmp_path / "b.yaml").write_text(TB)
     records = {r.spec: r for r in batch.check_paths([tmp_path])}
