@@ -285,6 +285,7 @@ class SweepFormat(str, Enum):
     table = "table"
     csv = "csv"
     json = "json"
+    parquet = "parquet"
 
 
 @app.command()
@@ -299,8 +300,9 @@ def sweep(
         "--result", "-r", help="Results for the table and plot (repeatable) "
         "(default: the kind's governing results).")] = None,
     output_format: Annotated[SweepFormat | None, typer.Option(
-        "--format", "-f", help="table, csv or json (JSON Lines) (default: csv for "
-        "--output *.csv, json for *.json or *.jsonl, else table).", show_default=False)
+        "--format", "-f", help="table, csv, json (JSON Lines) or parquet (default: csv for "
+        "--output *.csv, json for *.json or *.jsonl, parquet for *.parquet, else table).",
+        show_default=False)
     ] = None,
     output: OutputOption = None,
     plot: PlotOption = None,
@@ -339,6 +341,9 @@ def sweep(
             from bearingcalc.plots import sweep_plot
 
             _save_plot(plot, lambda f, fmt: sweep_plot(solved, keys, f, fmt=fmt))
+        if chosen is SweepFormat.parquet:
+            _write_parquet(solved, output, document.source)
+            return
         _emit(write, output)
 
 
@@ -359,8 +364,29 @@ def _workers(jobs: int | None) -> int:
 
 def _format_for(output: Path | None) -> SweepFormat:
     suffix = output.suffix.lower() if output is not None else ""
-    return {".csv": SweepFormat.csv, ".json": SweepFormat.json,
-            ".jsonl": SweepFormat.json}.get(suffix, SweepFormat.table)
+    return {".csv": SweepFormat.csv, ".json": SweepFormat.json, ".jsonl": SweepFormat.json,
+            ".parquet": SweepFormat.parquet}.get(suffix, SweepFormat.table)
+
+
+def _write_parquet(solved: object, output: Path | None, source: str) -> None:
+    """The sweep as a Parquet file, atomically; pyarrow is the optional extra."""
+    if output is None:
+        raise SpecError("--format parquet writes a file: give --output grid.parquet",
+                        source=source)
+    try:
+        import pyarrow  # noqa: F401
+    except ImportError:
+        raise SpecError("Parquet output needs pyarrow, the optional extra: pip install "
+                        "'bearingcalc[parquet]'", source=str(output)) from None
+    from bearingcalc import reports
+    from bearingcalc.output import atomic_write
+
+    try:
+        atomic_write(output, lambda stream: reports.write_sweep_parquet(solved, stream),  # type: ignore[arg-type]
+                     binary=True)
+    except OSError as exc:
+        raise SpecError(f"cannot write the report: {exc.strerror or exc}",
+                        source=str(output)) from None
 
 
 def _with_progress(work: Callable[[Callable[[int], None] | None], T], total: int | None = None,

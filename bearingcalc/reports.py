@@ -379,7 +379,10 @@ def write_sweep_csv(sweep: Sweep, stream: IO[str]) -> None:
 
     Numbers are written in their shortest round-trip form by orjson, 50,000 rows at
     a time: formatting a million rows is the cost of a large sweep, and Python's
-    float formatting would take several times as long.
+    float formatting would take several times as long. Each block is built as bytes
+    with no work per line: the status code rides along as a last column (null for a
+    possible design), and each code's ",code" at the end of a line is replaced by its
+    reason in one pass over the block.
     """
     import orjson
 
@@ -390,14 +393,53 @@ def write_sweep_csv(sweep: Sweep, stream: IO[str]) -> None:
                np.unique(sweep.status).tolist() if code}
     for start in range(0, len(sweep.status), SWEEP_CSV_ROWS):
         stop = min(start + SWEEP_CSV_ROWS, len(sweep.status))
-        block = np.column_stack([values[start:stop].astype(float) for _, values in columns])
+        codes = sweep.status[start:stop]
+        # The last column is NaN for a possible design (written null, then removed with
+        # the other nulls, leaving the empty reason) and the status code otherwise.
+        marker = np.where(codes == 0, np.nan, codes.astype(float))
+        block = np.column_stack([*(values[start:stop].astype(float) for _, values in columns),
+                                 marker])
         text = orjson.dumps(np.ascontiguousarray(block), option=orjson.OPT_SERIALIZE_NUMPY)
-        lines = text[2:-2].replace(b"],[", b"\n").replace(b"null", b"").split(b"\n")
-        codes = sweep.status[start:stop].tolist()
+        body = text[2:-2].replace(b"],[", b"\n").replace(b"null", b"") + b"\n"
         if any(integer_axes):
-            lines = [_integer_fields(line, integer_axes) for line in lines]
-        stream.write(b"".join(line + reasons.get(code, b",") + b"\n"
-                              for line, code in zip(lines, codes, strict=True)).decode())
+            lines = [_integer_fields(line, integer_axes) for line in body.split(b"\n")[:-1]]
+            body = b"\n".join(lines) + b"\n"
+        for code in np.unique(codes).tolist():
+            if code:
+                body = body.replace(b"," + repr(float(code)).encode() + b"\n",
+                                    reasons[code] + b"\n")
+        _write_bytes(stream, body)
+
+
+def _write_bytes(stream: IO[str], data: bytes) -> None:
+    """UTF-8 bytes onto a text stream: straight to its buffer where it has one."""
+    buffer = getattr(stream, "buffer", None)
+    if buffer is None:
+        stream.write(data.decode())
+        return
+    stream.flush()
+    buffer.write(data)
+
+
+def write_sweep_parquet(sweep: Sweep, path: Any) -> None:
+    """The CSV's columns as a Parquet table (pyarrow, the optional extra
+    ``bearingcalc[parquet]``): float64 columns named as the CSV's headers, integer axes
+    as int64, and ``reason`` (null for possible designs)."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    arrays, names = [], []
+    integer = {f"input.{axis.name} [{axis.unit}]": axis.integer for axis in sweep.axes}
+    for name, values in sweep_columns(sweep):
+        # from_pandas: NaN (an impossible design's result) becomes null, as in the CSV.
+        arrays.append(pa.array(values.astype(np.int64) if integer.get(name)
+                               else values.astype(float), from_pandas=True))
+        names.append(name)
+    reasons = {code: sweep.reason(code) for code in np.unique(sweep.status).tolist() if code}
+    arrays.append(pa.array([reasons.get(code) for code in sweep.status.tolist()],
+                           type=pa.string()))
+    names.append("reason")
+    pq.write_table(pa.Table.from_arrays(arrays, names=names), path)
 
 
 def _integer_fields(line: bytes, integer_axes: list[bool]) -> bytes:

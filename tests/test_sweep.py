@@ -179,3 +179,70 @@ def test_one_document_of_a_multi_document_file_is_picked_with_a_hash(cli, spec_f
     assert run.code == 0 and len(csv_rows(run.out)) == 3
     run = cli("tolerance", f"{path}#3")
     assert run.code == 2 and "'#3' does not pick a document" in run.err
+
+
+def _reference_csv_rows(sweep) -> str:
+    """The CSV body as the first implementation wrote it, line by line in Python (kept
+    here to pin the block writer to it, byte for byte)."""
+    import orjson
+
+    from bearingcalc.reports import _csv_text, _integer_fields, sweep_columns
+
+    columns = sweep_columns(sweep)
+    integer_axes = [axis.integer for axis in sweep.axes]
+    out = []
+    for row in range(len(sweep.status)):
+        block = np.array([[values[row] for _, values in columns]], dtype=float)
+        line = orjson.dumps(block, option=orjson.OPT_SERIALIZE_NUMPY)[2:-2].replace(
+            b"null", b"")
+        if any(integer_axes):
+            line = _integer_fields(line, integer_axes)
+        code = int(sweep.status[row])
+        reason = ("," + _csv_text(sweep.reason(code))).encode() if code else b","
+        out.append(line + reason + b"\n")
+    return b"".join(out).decode()
+
+
+@pytest.mark.parametrize("vary", [
+    ("pitch_radius=5mm:40mm:60", "contact_angle=5deg:50deg:40"),
+    ("pitch_radius=5mm:40mm:30", "ball_count=1:40:40"),
+    ("contact_angle=0deg:45deg:91",),
+])
+def test_block_csv_writer_is_byte_identical_to_the_line_writer(vary):
+    import io
+
+    from bearingcalc.evaluation import load_one_spec
+    from bearingcalc.reports import write_sweep_csv
+    from bearingcalc.sweep import parse_axis, run_sweep
+
+    kind, spec, document = load_one_spec(SPECS / "thrust-bearing.yaml")
+    solved = run_sweep(kind, spec, document.source, [parse_axis(v, spec) for v in vary])
+    assert (solved.status != 0).any() and (solved.status == 0).any()
+    stream = io.StringIO()
+    write_sweep_csv(solved, stream)
+    body = stream.getvalue().split("\n", 1)[1]
+    assert body == _reference_csv_rows(solved)
+
+
+def test_parquet_output_holds_the_csv_columns(cli, tmp_path):
+    pq = pytest.importorskip("pyarrow.parquet")
+    out = tmp_path / "grid.parquet"
+    run = cli("sweep", SPECS / "thrust-bearing.yaml", "--vary", "pitch_radius=10mm:30mm:5",
+              "--vary", "ball_count=4:16:5", "-o", out)
+    assert run.code == 0, run.err
+    table = pq.read_table(out)
+    csv_run = cli("sweep", SPECS / "thrust-bearing.yaml", "--vary", "pitch_radius=10mm:30mm:5",
+                  "--vary", "ball_count=4:16:5", "-f", "csv")
+    header = csv_run.out.splitlines()[0].split(",")
+    assert table.schema.names == header and table.num_rows == 25
+    assert str(table.schema.field("input.ball_count [1]").type) == "int64"
+
+
+def test_parquet_without_pyarrow_names_the_extra(cli, tmp_path, monkeypatch):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "pyarrow", None)
+    out = tmp_path / "grid.parquet"
+    run = cli("sweep", SPECS / "thrust-bearing.yaml", "--vary", "pitch_radius=10mm:30mm:5",
+              "-o", out)
+    assert run.code == 2 and "bearingcalc[parquet]" in run.err and not out.exists()
