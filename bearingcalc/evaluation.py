@@ -22,7 +22,12 @@ from pydantic import BaseModel, ValidationError
 from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind
 from bearingcalc.spec.fields import SpecModel, nested_model
-from bearingcalc.spec.yaml_loader import Document, load_documents
+from bearingcalc.spec.yaml_loader import (
+    Document,
+    dotted_name,
+    field_key_path,
+    load_documents,
+)
 from bearingcalc.wording import plural
 
 
@@ -202,11 +207,14 @@ def _judge(document: Document, kind: Kind, spec: SpecModel, raw: dict[str, float
 
 
 def _value_at(data: Any, dotted: str) -> Any:
-    """The value at a dotted key path of a document, or None."""
-    for key in dotted.split("."):
-        if not isinstance(data, dict):
+    """The value at a dotted field name of a document (list items 1-based), or None."""
+    for key in field_key_path(dotted):
+        if isinstance(key, int) and isinstance(data, list) and 0 <= key < len(data):
+            data = data[key]
+        elif isinstance(key, str) and isinstance(data, dict):
+            data = data.get(key)
+        else:
             return None
-        data = data.get(key)
     return data
 
 
@@ -226,15 +234,16 @@ def _spec_error(document: Document, model: type[SpecModel], exc: ValidationError
     The first is the error raised; the others are in its ``more``.
     """
     problems = sorted(exc.errors(include_url=False),
-                      key=lambda e: document.line_of(tuple(str(p) for p in e["loc"])))
+                      key=lambda e: document.line_of(tuple(e["loc"])))
     errors = [_one_problem(document, model, problem) for problem in problems]
     errors[0].more = errors[1:]
     return errors[0]
 
 
 def _one_problem(document: Document, model: type[SpecModel], error: Any) -> SpecError:
-    loc = tuple(str(part) for part in error["loc"])
-    dotted = ".".join(loc)
+    key_path = tuple(error["loc"])
+    loc = tuple(str(part) for part in key_path)
+    dotted = dotted_name(key_path)
     kind, message = error["type"], str(error["msg"])
     if kind == "extra_forbidden":
         parent = _model_at(model, loc[:-1])
@@ -252,12 +261,14 @@ def _one_problem(document: Document, model: type[SpecModel], error: Any) -> Spec
         message = f"{message}, got {error.get('input')!r}"
     else:
         message = message.removeprefix("Value error, ")
-    return document.error(message, field=dotted, key_path=loc)
+    return document.error(message, field=dotted, key_path=key_path)
 
 
 def _model_at(model: type[BaseModel], loc: tuple[str, ...]) -> type[BaseModel] | None:
     current: type[BaseModel] | None = model
     for part in loc:
+        if part.isdigit() and current is not None:
+            continue  # an item of a list field: the same model as the list's
         if current is None or part not in current.model_fields:
             return None
         current = nested_model(current.model_fields[part])

@@ -105,6 +105,13 @@ class Kind:
         return getattr(self.solver, "GROUPS", {})
 
     @property
+    def matrices(self) -> dict[str, tuple[tuple[str, ...], tuple[str, ...]]]:
+        """Table heading -> (row prefixes, column suffixes): results shown as a small
+        table of their own, a row per member (``pinion_bearing_1``) and a column per
+        quantity (``radial_load``), whose keys are ``{row}_{column}``."""
+        return getattr(self.solver, "MATRICES", {})
+
+    @property
     def display(self) -> dict[str, tuple[str, float]]:
         """Result key -> (table unit, factor from SI) where the SI unit alone would not do."""
         return getattr(self.solver, "DISPLAY", {})
@@ -149,5 +156,11 @@ KINDS: dict[str, Kind] = {
              margins=("life_margin", "static_safety_margin", "contact_pressure_margin",
                       "spin_to_roll_margin"),
              governing=("life_margin", "modified_rating_life", "static_safety_factor")),
+        Kind("bevel-drive", "a bevel pair on two shafts, each on two ball bearings: every "
+             "bearing's life", "bearingcalc.spec.bevel_drive:BevelDriveSpec",
+             "bearingcalc.core.bevel_drive",
+             margins=("slip_margin", "face_width_margin", "bending_safety_margin",
+                      "contact_safety_margin", "life_margin", "static_safety_margin"),
+             governing=("life_margin", "system_modified_rating_life", "static_safety_margin")),
     )
 }

@@ -111,7 +111,11 @@ def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
         table.add_column("value", justify="right")
         table.add_column("unit")
         table.add_column("meaning", style="dim")
-        for heading, keys in _grouped(evaluation.results, kind.groups):
+        in_matrices = {f"{row}_{column}" for rows, columns in kind.matrices.values()
+                       for row in rows for column in columns}
+        shown = {key: value for key, value in evaluation.results.items()
+                 if key not in in_matrices}
+        for heading, keys in _grouped(shown, kind.groups):
             if heading:
                 table.add_row(f"[bold]{heading}[/]", end_section=False)
             for key in keys:
@@ -123,6 +127,8 @@ def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
             if heading:
                 table.add_section()
         out.print(table)
+        for heading, (rows, columns) in kind.matrices.items():
+            _print_matrix(out, evaluation, heading, rows, columns)
         if not evaluation.margins:
             out.print("[bold green]PASS[/]: no limits apply to this kind")
         elif evaluation.within_limits:
@@ -132,6 +138,31 @@ def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
         for warning in evaluation.warnings:
             out.print(f"[yellow]warning[/]: {_text(warning)}")
         out.print()
+
+
+def _print_matrix(out: Any, evaluation: Evaluation, heading: str, rows: Sequence[str],
+                  columns: Sequence[str]) -> None:
+    """Results named ``{row}_{column}`` as a table with a row per member; nothing when the
+    evaluation has none of them."""
+    from rich.table import Table
+
+    present = [row for row in rows if any(f"{row}_{c}" in evaluation.results for c in columns)]
+    if not present:
+        return
+    table = Table(title=heading, title_justify="left")
+    table.add_column("")
+    for column in columns:
+        unit = to_display(1.0, evaluation.units.get(f"{present[0]}_{column}", "1"))[1]
+        table.add_column(_text(f"{column} [{unit}]" if unit else column), justify="right")
+    for row in present:
+        cells = []
+        for column in columns:
+            value = evaluation.results.get(f"{row}_{column}")
+            key = f"{row}_{column}"
+            cells.append("" if value is None else format_number(
+                to_display(value, evaluation.units[key])[0]))
+        table.add_row(row, *cells)
+    out.print(table)
 
 
 def _grouped(results: Mapping[str, Any], groups: Mapping[str, Sequence[str]]

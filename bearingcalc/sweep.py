@@ -117,12 +117,23 @@ def parse_axis(text: str, spec: SpecModel) -> Axis:
 def _parser_at(model: type[BaseModel], path: str) -> tuple[str, Any, str]:
     current: type[BaseModel] = model
     parts = path.split(".")
+    in_list = False
     for i, part in enumerate(parts):
+        if in_list:
+            in_list = False
+            if not part.isdigit():
+                raise SweepError(f"--vary {path}: name an item of {'.'.join(parts[:i])} by its "
+                                 f"number, like {'.'.join(parts[:i])}.1")
+            continue  # an item of the list named before it: the same model
         if part not in current.model_fields or part in ("kind", "name"):
             known = ", ".join(f for f in current.model_fields if f not in ("kind", "name"))
             where = ".".join(parts[:i]) or "the spec"
             raise SweepError(f"--vary {path}: {where} has no input '{part}'; inputs: {known}")
         info = current.model_fields[part]
+        if _is_list(info) and (i == len(parts) - 1 or not parts[i + 1].isdigit()):
+            raise SweepError(f"--vary {path}: {'.'.join(parts[:i + 1])} is a list; name an "
+                             f"item by its number, like {'.'.join(parts[:i + 1])}.1."
+                             f"{parts[i + 1] if i + 1 < len(parts) else '...'}")
         if i == len(parts) - 1:
             parser = field_parser(info)
             if parser is None:
@@ -132,6 +143,7 @@ def _parser_at(model: type[BaseModel], path: str) -> tuple[str, Any, str]:
         if nested is None:
             raise SweepError(f"--vary {path}: {'.'.join(parts[:i + 1])} has no fields")
         current = nested
+        in_list = _is_list(info)
     raise AssertionError("unreachable")
 
 
@@ -163,11 +175,26 @@ def _as_written(axis: Axis, value: Any) -> Any:
     return f"{float(value)!r} {axis.unit}" if axis.unit != "1" else float(value)
 
 
-def _set_dotted(data: dict[str, Any], dotted: str, value: Any) -> None:
+def _set_dotted(data: Any, dotted: str, value: Any) -> None:
+    """Set a dotted field of document data (list items 1-based)."""
     *parents, last = dotted.split(".")
     for part in parents:
-        data = data.setdefault(part, {})
-    data[last] = value
+        data = data[int(part) - 1] if isinstance(data, list) else data.setdefault(part, {})
+    if isinstance(data, list):
+        data[int(last) - 1] = value
+    else:
+        data[last] = value
+
+
+def _is_list(info: Any) -> bool:
+    """Whether a model field holds a list (of nested models)."""
+    import typing
+
+    if info is None:
+        return False
+    annotation = info.annotation
+    return typing.get_origin(annotation) in (list, tuple) or any(
+        typing.get_origin(arg) in (list, tuple) for arg in typing.get_args(annotation))
 
 
 def run_sweep(kind: Kind, spec: SpecModel, source: str, axes: list[Axis]) -> Sweep:

@@ -19,26 +19,36 @@ from bearingcalc.spec.fields import Measured, SpecModel, Tolerance
 
 
 def toleranced_fields(spec: BaseModel, prefix: str = "") -> dict[str, Tolerance]:
-    """Dotted field name -> tolerance, for every field of ``spec`` that carries one."""
+    """Dotted field name -> tolerance, for every field of ``spec`` that carries one
+    (items of list fields are named by their 1-based index: ``bearings.1.position``)."""
     found: dict[str, Tolerance] = {}
     for name, value in _fields(spec):
         path = f"{prefix}{name}"
-        if isinstance(value, Measured) and value.tolerance is not None:
-            found[path] = value.tolerance
-        elif isinstance(value, BaseModel):
-            found.update(toleranced_fields(value, f"{path}."))
+        items = enumerate(value, 1) if isinstance(value, (list, tuple)) else [(None, value)]
+        for index, item in items:
+            where = path if index is None else f"{path}.{index}"
+            if isinstance(item, Measured) and item.tolerance is not None:
+                found[where] = item.tolerance
+            elif isinstance(item, BaseModel):
+                found.update(toleranced_fields(item, f"{where}."))
     return found
 
 
 def field_value(spec: BaseModel, path: str) -> Any:
-    """The value of the dotted field ``path`` of ``spec``."""
+    """The value of the dotted field ``path`` of ``spec`` (list items 1-based)."""
     value: Any = spec
     for part in path.split("."):
-        value = getattr(value, part)
+        if part.isdigit() and isinstance(value, (list, tuple)):
+            index = int(part) - 1
+            if not 0 <= index < len(value):
+                raise AttributeError(part)
+            value = value[index]
+        else:
+            value = getattr(value, part)
     return value
 
 
-def with_values(spec: SpecModel, values: Mapping[str, ArrayLike]) -> SpecModel:
+def with_values(spec: Any, values: Mapping[str, ArrayLike]) -> Any:
     """A copy of ``spec`` with the dotted fields in ``values`` replaced (unvalidated)."""
     nested: dict[str, dict[str, ArrayLike]] = {}
     direct: dict[str, ArrayLike] = {}
@@ -48,6 +58,13 @@ def with_values(spec: SpecModel, values: Mapping[str, ArrayLike]) -> SpecModel:
             nested.setdefault(head, {})[rest] = value
         else:
             direct[head] = value
+    if isinstance(spec, (list, tuple)):
+        items = list(spec)
+        for head, inner in nested.items():
+            items[int(head) - 1] = with_values(items[int(head) - 1], inner)
+        for head, value in direct.items():
+            items[int(head) - 1] = value
+        return type(spec)(items)
     for head, inner in nested.items():
         direct[head] = with_values(getattr(spec, head), inner)
     return spec.model_copy(update=direct)

@@ -152,6 +152,12 @@ class BallBearingSpec(SpecModel):
 
     @model_validator(mode="after")
     def _complete(self) -> BallBearingSpec:
+        self.check_rules()
+        return self
+
+    def check_rules(self) -> None:
+        """The kind's rules across fields; raises SpecFieldError naming the field at fault.
+        (Also run by ``kind: bevel-drive`` on each of its bearings.)"""
         thrust = self.type == "thrust"
         ring_speeds = self.inner_speed is not None or self.outer_speed is not None
         if self.speed is not None and ring_speeds:
@@ -236,7 +242,6 @@ class BallBearingSpec(SpecModel):
         if self.lubrication is None and self.contamination_factor is not None:
             raise SpecFieldError("contamination_factor", "applies with lubrication only: "
                                  "give lubrication: {viscosity: ...} too, or leave it out")
-        return self
 
     @property
     def angle(self) -> float:

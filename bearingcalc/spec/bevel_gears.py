@@ -103,26 +103,24 @@ class BevelGearsLimits(SpecModel):
     min_contact_safety: Ratio = Field(1.0, description="smallest S_H")
 
 
-class BevelGearsSpec(SpecModel):
-    """Gear B on a shaft turning at Ω; gear A meshing with it on an arm turning at ω_Z."""
+class BevelPair(SpecModel):
+    """The fields of a bevel pair, its sizing and its rating, shared by the kinds that
+    hold one (``bevel-gears``, ``bevel-drive``)."""
 
-    kind: Literal["bevel-gears"]
+    kind: str
     name: str | None = None
     gear_a: Gear
     gear_b: Gear
     module: PositiveLength | None = Field(None, description="module m: pitch radius = m·teeth/2")
     shaft_angle: Angle | None = Field(None, description="shaft angle γ between the gear axes")
-    arm_speed: AngularSpeed = Field(description="ω_Z, the arm carrying gear A")
-    gear_b_speed: AngularSpeed = Field(0.0, description="Ω, gear B's shaft")
     face_width: PositiveLength | None = Field(None, description="b; enables sizing")
     pressure_angle: Angle = Field(math.radians(20.0), description="φ, default 20 deg")
     torque: Torque | None = Field(None, description="on gear A (the pinion)")
     power: PositivePower | None = Field(None, description="through gear A, instead of torque")
     rating: BevelRating | None = None
-    limits: BevelGearsLimits = BevelGearsLimits()
 
     @model_validator(mode="after")
-    def _geometry_is_determined(self) -> BevelGearsSpec:
+    def _geometry_is_determined(self) -> BevelPair:
         for label, gear in (("gear_a", self.gear_a), ("gear_b", self.gear_b)):
             if gear.pitch_radius is None and gear.teeth is None:
                 raise SpecFieldError(label, f"give {label}.pitch_radius, or {label}.teeth "
@@ -169,7 +167,8 @@ class BevelGearsSpec(SpecModel):
                                  "usual right-angle pair), or both pitch angles")
         return self
 
-    def solver_inputs(self) -> dict[str, Any]:
+    def pair_inputs(self, arm_speed: Any, gear_b_speed: Any, limits: BevelGearsLimits
+                    ) -> dict[str, Any]:
         """SI inputs of :func:`bearingcalc.core.bevel_gears.evaluate`."""
         return {
             "gear_a_teeth": self.gear_a.teeth,
@@ -180,15 +179,14 @@ class BevelGearsSpec(SpecModel):
             "gear_a_pitch_angle": self.gear_a.pitch_angle,
             "gear_b_pitch_angle": self.gear_b.pitch_angle,
             "shaft_angle": self.shaft_angle,
-            "arm_speed": self.arm_speed,
-            "gear_b_speed": self.gear_b_speed,
-            "max_apex_mismatch": self.limits.max_apex_mismatch,
-            **self._sizing_inputs(),
+            "arm_speed": arm_speed,
+            "gear_b_speed": gear_b_speed,
+            "max_apex_mismatch": limits.max_apex_mismatch,
+            **self._sizing_inputs(limits),
         }
 
-    def _sizing_inputs(self) -> dict[str, Any]:
+    def _sizing_inputs(self, limits: BevelGearsLimits) -> dict[str, Any]:
         rating = self.rating
-        limits = self.limits
         return {
             "face_width": self.face_width,
             "pressure_angle": self.pressure_angle,
@@ -207,3 +205,16 @@ class BevelGearsSpec(SpecModel):
             "min_bending_safety": limits.min_bending_safety,
             "min_contact_safety": limits.min_contact_safety,
         }
+
+
+class BevelGearsSpec(BevelPair):
+    """Gear B on a shaft turning at Ω; gear A meshing with it on an arm turning at ω_Z."""
+
+    kind: Literal["bevel-gears"]
+    arm_speed: AngularSpeed = Field(description="ω_Z, the arm carrying gear A")
+    gear_b_speed: AngularSpeed = Field(0.0, description="Ω, gear B's shaft")
+    limits: BevelGearsLimits = BevelGearsLimits()
+
+    def solver_inputs(self) -> dict[str, Any]:
+        """SI inputs of :func:`bearingcalc.core.bevel_gears.evaluate`."""
+        return self.pair_inputs(self.arm_speed, self.gear_b_speed, self.limits)

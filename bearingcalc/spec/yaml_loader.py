@@ -86,8 +86,20 @@ class Document:
               key_path: KeyPath | None = None) -> SpecError:
         """A SpecError located at ``key_path`` (default: the dotted ``field``)."""
         if key_path is None:
-            key_path = tuple(field.split(".")) if field else ()
+            key_path = field_key_path(field) if field else ()
         return SpecError(message, source=self.source, line=self.line_of(key_path), field=field)
+
+
+def field_key_path(dotted: str) -> KeyPath:
+    """The key path of a dotted field name; list items are named by their 1-based index
+    (``pinion_bearings.1.position`` is item 0 of the list)."""
+    return tuple(int(part) - 1 if part.isdigit() else part for part in dotted.split("."))
+
+
+def dotted_name(key_path: tuple[Any, ...]) -> str:
+    """The dotted field name of a key path, list items by their 1-based index."""
+    return ".".join(str(part + 1) if isinstance(part, int) else str(part)
+                    for part in key_path)
 
 
 def read_spec_text(path: str | os.PathLike[str]) -> str:

@@ -1,0 +1,180 @@
+"""Spec of ``kind: bevel-drive``: a bevel pair on two shafts, each on two ball bearings
+(``docs/physics.md`` §9)."""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+from pydantic import Field, model_validator
+
+from bearingcalc.errors import SpecFieldError
+from bearingcalc.spec.ball_bearing import (
+    BallBearingLimits,
+    BallBearingSpec,
+    Conformity,
+    LoadFactors,
+    Lubrication,
+    Reliability,
+    UnitFraction,
+)
+from bearingcalc.spec.bevel_gears import BevelGearsLimits, BevelPair
+from bearingcalc.spec.fields import (
+    Angle,
+    AngularSpeed,
+    BallCount,
+    ElasticMaterial,
+    Length,
+    PositiveForce,
+    PositiveLength,
+    PositiveTime,
+    Ratio,
+    SpecModel,
+)
+
+#: Keys of a ball-bearing spec that the drive sets for every bearing itself.
+_DRIVE_SETS = ("radial_load", "axial_load", "speed", "inner_speed", "outer_speed")
+SHAFTS = ("pinion", "gear")
+
+
+class DriveBearing(SpecModel):
+    """One ball bearing of a shaft: where it sits, whether it locates the shaft axially,
+    and every field of ``kind: ball-bearing`` except loads and speeds."""
+
+    position: Length = Field(description="along the shaft axis, from the pitch-cone apex "
+                             "toward the gear's back face")
+    locating: bool = Field(False, description="takes the shaft's whole axial force")
+    type: Literal["deep-groove", "angular-contact", "thrust"] = "deep-groove"
+    dynamic_load_rating: PositiveForce | None = None
+    static_load_rating: PositiveForce | None = None
+    fatigue_load_limit: PositiveForce | None = None
+    static_factor: Ratio | None = None
+    ball_count: BallCount | None = None
+    ball_diameter: PositiveLength | None = None
+    pitch_diameter: PositiveLength | None = None
+    bore_diameter: PositiveLength | None = None
+    outside_diameter: PositiveLength | None = None
+    contact_angle: Angle | None = None
+    load_factors: LoadFactors | None = None
+    inner_groove_conformity: Conformity | None = None
+    outer_groove_conformity: Conformity | None = None
+    material: ElasticMaterial = ElasticMaterial()
+    race_control: Literal["outer", "inner"] = "outer"
+
+    @model_validator(mode="before")
+    @classmethod
+    def _no_loads_or_speeds(cls, data: Any) -> Any:
+        if isinstance(data, dict):
+            given = [key for key in _DRIVE_SETS if key in data]
+            if given:
+                raise SpecFieldError(given[0], "a drive's bearing takes no load or speed: the "
+                                     "drive finds them from the gear forces and input_speed")
+        return data
+
+
+class BevelDriveLimits(BevelGearsLimits):
+    min_rating_life: PositiveTime | None = Field(None, description="judged on the system's "
+                                                 "modified rating life")
+    min_static_safety: Ratio = Field(1.0, description="judged on the smallest s0")
+
+
+class BevelDriveSpec(BevelPair):
+    """A right-angle (or any-angle) bevel drive: the pair, its two shafts and their
+    bearings, from the input torque to every bearing's life."""
+
+    kind: Literal["bevel-drive"]
+    input_speed: AngularSpeed = Field(description="the pinion shaft's speed")
+    pinion_bearings: list[DriveBearing] = Field(description="exactly two, on the pinion "
+                                                "shaft")
+    gear_bearings: list[DriveBearing] | None = Field(None, description="exactly two, on the "
+                                                     "gear shaft (optional)")
+    reliability: Reliability = 0.9
+    lubrication: Lubrication | None = None
+    contamination_factor: UnitFraction | None = None
+    limits: BevelDriveLimits = BevelDriveLimits()
+
+    @model_validator(mode="after")
+    def _a_drive(self) -> BevelDriveSpec:
+        if self.face_width is None or self.module is None or None in (self.gear_a.teeth,
+                                                                      self.gear_b.teeth):
+            raise SpecFieldError("face_width", "a drive needs the pair's teeth, module and "
+                                 "face_width for its tooth forces")
+        if self.torque is None and self.power is None:
+            raise SpecFieldError("torque", "a drive needs the load: torque (like 60 N*m) or "
+                                 "power (like 9.4 kW) on the pinion")
+        if not self.input_speed != 0:
+            raise SpecFieldError("input_speed", "must not be zero: the lives need a turning "
+                                 "drive, like 1500 rpm")
+        for shaft, bearings in self.shafts():
+            field = f"{shaft}_bearings"
+            if len(bearings) != 2:
+                raise SpecFieldError(field, f"a shaft sits on exactly two bearings, got "
+                                     f"{len(bearings)}")
+            if bearings[0].position == bearings[1].position:
+                raise SpecFieldError(f"{field}.2.position", "two bearings at the same "
+                                     "position cannot carry the shaft's moment")
+            locating = [i for i, bearing in enumerate(bearings, 1) if bearing.locating]
+            if len(locating) != 1:
+                raise SpecFieldError(f"{field}.1.locating" if not locating
+                                     else f"{field}.{locating[1]}.locating",
+                                     "exactly one bearing of a shaft is locating: it takes "
+                                     f"the whole axial force (got {len(locating)})")
+            for i, bearing in enumerate(bearings, 1):
+                if bearing.type == "thrust":
+                    raise SpecFieldError(f"{field}.{i}.type", "a thrust ball bearing takes no "
+                                         "radial load, and the gear forces load every "
+                                         "bearing of the shaft radially")
+                self._check_as_ball_bearing(f"{field}.{i}", bearing)
+        return self
+
+    def shafts(self) -> list[tuple[str, list[DriveBearing]]]:
+        """(shaft, its bearings) for the pinion shaft and, when given, the gear shaft."""
+        out = [("pinion", self.pinion_bearings)]
+        if self.gear_bearings is not None:
+            out.append(("gear", self.gear_bearings))
+        return out
+
+    def ball_bearing(self, bearing: DriveBearing, radial: Any = 1.0, axial: Any = 0.0,
+                     speed: Any = 1.0) -> BallBearingSpec:
+        """The bearing as a ``kind: ball-bearing`` spec with these loads and speed: one
+        definition of the rules and results for a bearing alone and in a drive. Its fields
+        were validated by the drive's own (the same) field types."""
+        fields = {name: getattr(bearing, name) for name in DriveBearing.model_fields
+                  if name not in ("position", "locating")}
+        fields.update(kind="ball-bearing", radial_load=radial, axial_load=axial, speed=speed,
+                      reliability=self.reliability, lubrication=self.lubrication,
+                      contamination_factor=self.contamination_factor,
+                      limits=BallBearingLimits(min_static_safety=self.limits.min_static_safety))
+        return BallBearingSpec.model_construct(**fields)
+
+    def _check_as_ball_bearing(self, where: str, bearing: DriveBearing) -> None:
+        """Everything ``kind: ball-bearing`` refuses of the bearing, checked by that kind's
+        own rules under the load it will carry (axial too where it locates)."""
+        spec = self.ball_bearing(bearing, radial=1.0, axial=1.0 if bearing.locating else 0.0,
+                                 speed=1.0)
+        try:
+            spec.check_rules()
+        except SpecFieldError as problem:
+            if problem.field in ("lubrication", "contamination_factor", "reliability"):
+                raise
+            field = problem.field if problem.field not in _DRIVE_SETS else "locating"
+            raise SpecFieldError(f"{where}.{field}", problem.message) from None
+
+    def solver_inputs(self) -> dict[str, Any]:
+        """SI inputs of :func:`bearingcalc.core.bevel_drive.evaluate`: the pair's (gear A
+        turning at input_speed relative to a resting arm), then each bearing's
+        ball-bearing inputs under ``{shaft}_bearing_{i}.`` and its position."""
+        ratio = self.gear_a.teeth / self.gear_b.teeth  # type: ignore[operator]
+        inputs: dict[str, Any] = self.pair_inputs(0.0, -self.input_speed * ratio, self.limits)
+        inputs["input_speed"] = self.input_speed
+        inputs["min_rating_life"] = self.limits.min_rating_life
+        inputs["min_static_safety"] = self.limits.min_static_safety
+        for shaft, bearings in self.shafts():
+            for i, bearing in enumerate(bearings, 1):
+                prefix = f"{shaft}_bearing_{i}."
+                inputs[prefix + "position"] = bearing.position
+                inputs[prefix + "locating"] = "locating" if bearing.locating else "floating"
+                for key, value in self.ball_bearing(bearing).solver_inputs().items():
+                    if key not in ("radial_load", "axial_load", "speed", "inner_speed",
+                                   "outer_speed", "min_rating_life"):
+                        inputs[prefix + key] = value
+        return inputs
