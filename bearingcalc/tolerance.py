@@ -125,6 +125,9 @@ class Study:
         wanted = {*keys, *self.margins}
         results, status = evaluate_with(self.kind, self.spec, values, wanted)
         bad = status != 0
+        if not bad.any():  # the usual chunk: nothing to blank, no copies
+            shape = np.broadcast_shapes(status.shape, *(np.shape(results[k]) for k in wanted))
+            return {key: np.broadcast_to(results[key], shape) for key in wanted}, status
         return {key: np.where(bad, np.nan, results[key]) for key in wanted}, status
 
     @property
@@ -511,7 +514,10 @@ class _Accumulator:
     def add(self, values: NDArray) -> None:
         """Count a chunk of values that starts on a block boundary; NaN is skipped."""
         finite = np.isfinite(values)
-        shifted = np.where(finite, values - self.shift, 0.0)
+        all_finite = bool(finite.all())
+        # values − shift where finite, 0 elsewhere: the same numbers either way.
+        shifted = values - self.shift if all_finite else np.where(finite, values - self.shift,
+                                                                  0.0)
         blocks = -(-len(values) // BLOCK)
         if len(values) % BLOCK:
             shifted = np.concatenate([shifted, np.zeros(blocks * BLOCK - len(values))])
@@ -520,14 +526,18 @@ class _Accumulator:
         # np.sum's pairwise order depends only on the block, not on where the chunk
         # sits in memory (einsum's does), which keeps the result chunk-invariant.
         self.squares.extend(np.square(per_block).sum(axis=1).tolist())
-        kept = values[finite] if not finite.all() else values
+        kept = values if all_finite else values[finite]
         self.count += kept.size
         if kept.size:
             self.low = min(self.low, float(kept.min()))
             self.high = max(self.high, float(kept.max()))
-        index = np.floor((kept - self.edge) * (1.0 / self.width))
+        # In place, in the order the bins were always computed: (x − edge)·(1/width).
+        index = np.subtract(kept, self.edge)
+        np.multiply(index, 1.0 / self.width, out=index)
+        np.floor(index, out=index)
         np.clip(index, -1, HISTOGRAM_BINS, out=index)
-        self.counts += np.bincount(index.astype(np.int64) + 1, minlength=HISTOGRAM_BINS + 2)
+        np.add(index, 1.0, out=index)
+        self.counts += np.bincount(index.astype(np.int64), minlength=HISTOGRAM_BINS + 2)
 
     def merge(self, other: _Accumulator) -> None:
         """Add another accumulator's counts (sums are exact, so order does not matter)."""

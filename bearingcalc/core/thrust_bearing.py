@@ -172,7 +172,11 @@ def spin_to_roll_ratio(ball_radius: ArrayLike, contact_angle: ArrayLike,
 
 
 def _spin_to_roll_unchecked(r: NDArray, theta: NDArray, b: NDArray) -> NDArray:
-    sin, cos = np.sin(theta), np.cos(theta)
+    return _rho_from(r, b, np.sin(theta), np.cos(theta))
+
+
+def _rho_from(r: NDArray, b: NDArray, sin: NDArray, cos: NDArray) -> NDArray:
+    """ρ from r, b and the contact angle's sine and cosine (see spin_to_roll_ratio)."""
     with np.errstate(divide="ignore", invalid="ignore"):
         k = r * (1.0 + sin + cos) / (b - r * cos)
         return (k * sin + sin - cos) / (k * cos + sin + cos)
@@ -205,8 +209,16 @@ def pitch_radius_window(ball_radius: ArrayLike, contact_angle: ArrayLike,
     """
     r = np.asarray(ball_radius, dtype=float)
     theta = _angle_in_range(contact_angle)
+    b_min, b_max = _window_from(r, theta, np.sin(theta), np.cos(theta), max_spin_to_roll)
+    nan = np.isnan(theta) | np.isnan(np.asarray(max_spin_to_roll, dtype=float)) | np.isnan(r)
+    return np.where(nan, np.nan, b_min), np.where(nan, np.nan, b_max)
+
+
+def _window_from(r: NDArray, theta: NDArray, sin: NDArray, cos: NDArray,
+                 max_spin_to_roll: ArrayLike) -> tuple[NDArray, NDArray]:
+    """The window's edges from the contact angle and its sine and cosine (NaN in, NaN
+    out for the lower edge; see pitch_radius_window)."""
     rho_max = np.asarray(max_spin_to_roll, dtype=float)
-    sin, cos = np.sin(theta), np.cos(theta)
 
     def edge(rho: NDArray) -> NDArray:
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -218,8 +230,8 @@ def pitch_radius_window(ball_radius: ArrayLike, contact_angle: ArrayLike,
     high_reachable = rho_max < np.tan(np.pi / 4 - theta)
     b_min = np.where(low_reachable, edge(rho_max), r * cos)
     b_max = np.where(high_reachable, edge(-rho_max), np.inf)
-    nan = np.isnan(theta) | np.isnan(rho_max) | np.isnan(r)
-    return np.where(nan, np.nan, b_min), np.where(nan, np.nan, b_max)
+    # An impossible geometry (θ NaN) has no window: NaN, not the unbounded edge.
+    return b_min, np.where(np.isnan(theta) | np.isnan(r), np.nan, b_max)
 
 
 def thrust_bearing_status(ball_radius: ArrayLike, contact_angle: ArrayLike,
@@ -322,14 +334,16 @@ def _solve(r: NDArray, theta: NDArray, b: NDArray, shaft_speed: ArrayLike,
     spin = rel_1 * cos + rel_2 * sin
     roll = -rel_1 * sin + rel_2 * cos
     # ρ is a property of the geometry alone; computing it from K keeps it finite
-    # (and exact) when the shaft is at rest and spin and roll are both zero.
-    rho = spin_to_roll_ratio(r, theta, b)
+    # (and exact) when the shaft is at rest and spin and roll are both zero. The
+    # helpers get sin and cos computed once; r, θ and b are already NaN where the
+    # geometry is impossible, so their own masks would change nothing.
+    rho = _rho_from(r, b, sin, cos)
     if solved:
         # Pure rolling by construction: the formulas would leave rounding dust of
         # order 1e-17, which a limit of exactly 0 must not see.
         spin, rho = spin * 0.0, rho * 0.0
-    b_star = pure_rolling_pitch_radius(r, theta)
-    b_min, b_max = pitch_radius_window(r, theta, rho_max)
+    b_star = r * (1.0 + sin) / (cos - sin)
+    b_min, b_max = _window_from(r, theta, sin, cos, rho_max)
 
     results = {
         "ball_radius": r,
