@@ -7,7 +7,7 @@ loop per sample. Inputs are the spec fields that carry a tolerance (see
 Monte Carlo streams: samples are drawn and solved in chunks, and only running
 statistics are kept, so memory does not grow with the number of samples. The
 sample stream is one sequence, whatever the chunk size or the number of
-threads: chunk k starts by fast-forwarding the Sobol engine, or advancing the
+threads: chunk k starts the Sobol stream at its first sample, or advances the
 PCG64 generator, to its first sample. Sums are taken per fixed block of
 ``BLOCK`` samples and added exactly (``math.fsum``), and histogram counts are
 integers, so the statistics do not depend on chunking or threads either.
@@ -147,7 +147,8 @@ class Study:
         are skipped; ``feasible_fraction`` tells how much of the search was.
         """
         from scipy.optimize import minimize
-        from scipy.stats import qmc
+
+        from bearingcalc.sobol import SobolStream
 
         d = len(self.inputs)
         low = np.array([i.low for i in self.inputs])
@@ -156,7 +157,7 @@ class Study:
             corners = np.array(list(itertools.product((0.0, 1.0), repeat=d)))
         else:
             corners = np.empty((0, d))
-        interior = qmc.Sobol(d, scramble=True, rng=0).random(INTERIOR_POINTS)
+        interior = SobolStream(d, 0).next(INTERIOR_POINTS)
         unit = np.vstack([corners, interior, np.full((1, d), 0.5)])
         results, status = self.evaluate(low + unit * width)
         self.box_impossible = self._impossible_part(unit, status, low, width)
@@ -415,19 +416,18 @@ class Study:
 class SampleStream:
     """A uniform sample stream on (0, 1)^d from ``start`` on, drawn in pieces.
 
-    ``sobol``: scrambled Sobol points (scipy.stats.qmc), fast-forwarded once to
-    ``start``; ``random``: numpy's PCG64 advanced to ``start``. Either way the
-    points are those of one sequence, however it is cut.
+    ``sobol``: scrambled Sobol points, those of scipy.stats.qmc.Sobol bit for bit
+    (:mod:`bearingcalc.sobol`), from ``start`` on; ``random``: numpy's PCG64 advanced
+    to ``start``. Either way the points are those of one sequence, however it is cut.
     """
 
     def __init__(self, d: int, seed: int, sampler: str, start: int = 0) -> None:
         self.d = d
         if sampler == "sobol":
-            from scipy.stats import qmc
+            from bearingcalc.sobol import SobolStream
 
-            self.engine = qmc.Sobol(d, scramble=True, rng=seed)
-            if start:
-                self.engine.fast_forward(start)
+            # scipy.stats.qmc.Sobol's points bit for bit, without importing scipy.stats.
+            self.engine = SobolStream(d, seed, start)
             self.generator = None
         elif sampler == "random":
             bits = np.random.PCG64(seed)
@@ -440,9 +440,7 @@ class SampleStream:
         if self.generator is not None:
             points = self.generator.random((count, self.d))
         else:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")  # balance warnings: n not a power of 2
-                points = self.engine.random(count)
+            points = self.engine.next(count)
         # Keep the inverse CDFs finite: a point exactly at 0 would map to −inf.
         return np.clip(points, 1e-300, 1.0 - 2.0**-53)
 
