@@ -4,7 +4,6 @@
 from __future__ import annotations
 
 import math
-import re
 from typing import Annotated, Any, Literal
 
 import numpy as np
@@ -26,6 +25,7 @@ from bearingcalc.spec.fields import (
     Ratio,
     SpecModel,
     Temperature,
+    reliability,
 )
 
 RELIABILITY_RANGE = (0.90, 0.9995)
@@ -34,32 +34,7 @@ ISO_76_PRESSURE = 4.2e9
 DEFAULT_CONTACT_ANGLE = {"deep-groove": 0.0, "thrust": math.pi / 2}
 
 
-def _reliability(value: Any) -> float:
-    """'99 %' or 0.99 -> 0.99; the range is ISO 281's, 90 % to 99.95 %."""
-    if isinstance(value, str):
-        match = re.fullmatch(r"\s*([0-9]+(?:\.[0-9]*)?|\.[0-9]+)\s*%\s*", value, re.ASCII)
-        if match is None:
-            raise ValueError(f"write a reliability as '99 %' or 0.99, got {value!r}")
-        fraction = float(match[1]) / 100.0
-    elif isinstance(value, (int, float)) and not isinstance(value, bool):
-        if value > 1:
-            raise ValueError(f"a bare number is a fraction, at most 1; for percent write "
-                             f"'{value:g} %'")
-        fraction = float(value)
-    else:
-        raise ValueError(f"write a reliability as '99 %' or 0.99, got {value!r}")
-    low, high = RELIABILITY_RANGE
-    if not low <= fraction <= high:
-        raise ValueError(f"must be from 90 % to 99.95 % (ISO 281's range for a1), got "
-                         f"{100 * fraction:g} %")
-    return fraction
-
-
-Reliability = Annotated[float, BeforeValidator(_reliability), WithJsonSchema({
-    "anyOf": [{"type": "string", "pattern": r"^\s*([0-9]+(\.[0-9]*)?|\.[0-9]+)\s*%\s*$"},
-              {"type": "number", "minimum": RELIABILITY_RANGE[0],
-               "maximum": RELIABILITY_RANGE[1]}],
-    "description": "reliability, '99 %' or 0.99, from 90 % to 99.95 %"})]
+Reliability = reliability(*RELIABILITY_RANGE, "ISO 281's range for a1")
 
 
 def _unit_fraction(value: Any) -> float:

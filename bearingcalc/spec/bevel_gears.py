@@ -18,6 +18,7 @@ from bearingcalc.spec.fields import (
     SpecModel,
     ToothCount,
     Torque,
+    reliability,
 )
 
 MOUNTING_FACTOR = {"both-straddle": 1.00, "one-straddle": 1.10, "neither-straddle": 1.25}
@@ -51,25 +52,10 @@ def _hardness(value: Any) -> float:
     return float(value)
 
 
-def _reliability(value: Any) -> float:
-    if isinstance(value, str):
-        match = re.fullmatch(r"\s*([0-9]+(?:\.[0-9]*)?)\s*%\s*", value, re.ASCII)
-        if match is None:
-            raise ValueError(f"write a reliability as 0.99 or '99 %', got {value!r}")
-        value = float(match[1]) / 100.0
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise ValueError(f"write a reliability as 0.99 or '99 %', got {value!r}")
-    if not 0.9 <= value <= 0.9999:
-        raise ValueError(f"must be from 0.9 to 0.9999 (AGMA 2003's K_R), got {value:g}")
-    return float(value)
-
-
 Hardness = Annotated[float, BeforeValidator(_hardness), WithJsonSchema({"anyOf": [
     {"type": "string", "pattern": r"^\s*[0-9]+(\.[0-9]*)?\s*(HB|HBW|BHN)\s*$"},
     {"type": "number", "minimum": 180, "maximum": 400}]})]
-RatingReliability = Annotated[float, BeforeValidator(_reliability), WithJsonSchema({"anyOf": [
-    {"type": "string", "pattern": r"^\s*[0-9]+(\.[0-9]*)?\s*%\s*$"},
-    {"type": "number", "minimum": 0.9, "maximum": 0.9999}]})]
+RatingReliability = reliability(0.9, 0.9999, "AGMA 2003's K_R")
 
 
 class BevelRating(SpecModel):

@@ -400,3 +400,33 @@ class BallMaterial(ElasticMaterial):
 #: Groove radius over ball diameter: above 0.5 (at 0.5 or below the ball would not fit
 #: its groove) and below 1. A plain number that may carry a tolerance (0.52 ± 0.005).
 Conformity = quantity(DIMENSIONLESS, bounds=(0.5, 1.0))
+
+
+def reliability(low: float, high: float, source: str) -> Any:
+    """A reliability field: '99 %' or the fraction 0.99, from ``low`` to ``high``.
+
+    A bare number above 1 is refused (it is a percentage written without its sign).
+    ``source`` names the rule the range comes from, for the message.
+    """
+    def parse(value: Any) -> float:
+        if isinstance(value, str):
+            match = re.fullmatch(r"\s*([0-9]+(?:\.[0-9]*)?|\.[0-9]+)\s*%\s*", value, re.ASCII)
+            if match is None:
+                raise ValueError(f"write a reliability as '99 %' or 0.99, got {value!r}")
+            fraction = float(match[1]) / 100.0
+        elif isinstance(value, (int, float)) and not isinstance(value, bool):
+            if value > 1:
+                raise ValueError(f"a bare number is a fraction, at most 1; for percent write "
+                                 f"'{value:g} %'")
+            fraction = float(value)
+        else:
+            raise ValueError(f"write a reliability as '99 %' or 0.99, got {value!r}")
+        if not low <= fraction <= high:
+            raise ValueError(f"must be from {100 * low:g} % to {100 * high:g} % ({source}), "
+                             f"got {100 * fraction:g} %")
+        return fraction
+
+    return Annotated[float, BeforeValidator(parse), WithJsonSchema({
+        "anyOf": [{"type": "string", "pattern": r"^\s*([0-9]+(\.[0-9]*)?|\.[0-9]+)\s*%\s*$"},
+                  {"type": "number", "minimum": low, "maximum": high}],
+        "description": f"reliability, '99 %' or 0.99, from {100 * low:g} % to {100 * high:g} %"})]
