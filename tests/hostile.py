@@ -104,6 +104,8 @@ def _physics_cases() -> dict[str, str]:
     disk = (SPECS / "disk-on-circle.yaml").read_text()
     cone = (SPECS / "cone-on-plane.yaml").read_text()
     ball = (SPECS / "ball-bearing.yaml").read_text()
+    drive = (SPECS / "bevel-drive.yaml").read_text()
+    sizing = (SPECS / "bevel-gears-sizing.yaml").read_text()
     return {
         "thrust-angle-50.yaml": _mutate(tb, "contact_angle", "50 deg"),
         "thrust-angle-0.yaml": _mutate(tb, "contact_angle", "0 deg"),
@@ -147,6 +149,26 @@ def _physics_cases() -> dict[str, str]:
         "ball-no-contamination.yaml": ball.replace("contamination_factor: 0.5", ""),
         "ball-no-rating.yaml": ball.replace("dynamic_load_rating: 55.3 kN", ""),
         "ball-temperature.yaml": _mutate(ball, "viscosity", "20 degC"),
+        "drive-bearings-scalar.yaml": drive.replace("pinion_bearings:",
+                                                    "pinion_bearings: 5\nx:"),
+        "drive-bearings-numbers.yaml": drive.replace("gear_bearings:",
+                                                     "gear_bearings: [1, 2]\nx:"),
+        "drive-bearing-unknown.yaml": drive.replace("{position: 20 mm,",
+                                                    "{colour: red, position: 20 mm,"),
+        "drive-bearing-junk.yaml": drive.replace("{position: 20 mm,", "{position: '20 mm)',"),
+        "drive-bearing-load.yaml": drive.replace("{position: 20 mm,",
+                                                 "{axial_load: 1 kN, position: 20 mm,"),
+        "drive-nested.yaml": drive.replace("  - {position: 150 mm,",
+                                           "  - {position: 150 mm, x: [[[[1]]]],"),
+        "drive-no-locating.yaml": drive.replace("locating: true", "locating: false"),
+        "drive-thrust.yaml": drive.replace("{position: 20 mm, type: deep-groove",
+                                           "{position: 20 mm, type: thrust"),
+        "drive-same-position.yaml": drive.replace("position: 150 mm", "position: 90 mm"),
+        "drive-no-torque.yaml": drive.replace("torque: 60 N*m", "torque: 0 N*m"),
+        "bevel-sizing-hardness.yaml": sizing.replace("180 HB", "180 HRC"),
+        "bevel-sizing-both-loads.yaml": sizing.replace("power: 7.5 kW",
+                                                       "power: 7.5 kW\ntorque: 1 N*m"),
+        "bevel-sizing-wide.yaml": sizing.replace("face_width: 27.94 mm", "face_width: 60 mm"),
     }
 
 

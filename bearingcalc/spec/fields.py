@@ -322,9 +322,18 @@ Ratio = Annotated[float, BeforeValidator(_plain_number),
 
 def nested_model(info: FieldInfo) -> type[BaseModel] | None:
     """The spec model a field holds (``gear_a`` -> Gear), or None for a plain value."""
-    annotation = info.annotation
-    return next((c for c in (annotation, *typing.get_args(annotation))
-                 if isinstance(c, type) and issubclass(c, BaseModel)), None)
+    return _model_in(info.annotation)
+
+
+def _model_in(annotation: Any) -> type[BaseModel] | None:
+    """The first pydantic model in a type annotation (``Gear``, ``list[Bearing] | None``)."""
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation
+    for arg in typing.get_args(annotation):
+        found = _model_in(arg)
+        if found is not None:
+            return found
+    return None
 
 
 def field_parser(info: FieldInfo) -> tuple[str, Any, str] | None:
