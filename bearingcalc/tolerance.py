@@ -44,6 +44,8 @@ QUANTILES = {"p00135": 0.00135, "p50": 0.5, "p99865": 0.99865}
 #: Designs in the interior of the box, besides its corners, that seed the worst-case search.
 INTERIOR_POINTS = 1 << 10
 MAX_CORNER_INPUTS = 14
+#: Distinct points of a 30-bit Sobol' sequence (scipy's default, and ours).
+SOBOL_MAX_SAMPLES = 1 << 30
 
 
 class StudyError(BearingcalcError):
@@ -649,6 +651,9 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
         raise StudyError(f"unknown method {unknown[0]!r}; use {', '.join(METHODS)}")
     if sampler not in SAMPLERS:
         raise StudyError(f"unknown sampler {sampler!r}; use {' or '.join(SAMPLERS)}")
+    if sampler == "sobol" and "monte-carlo" in methods and samples > SOBOL_MAX_SAMPLES:
+        raise StudyError(f"--samples {samples} is more than the {SOBOL_MAX_SAMPLES} distinct "
+                         "Sobol' points of 30 bits; use --sampler random for more")
     study = Study(kind, spec)
     missing = [key for key in results if key not in study.keys]
     if missing:

@@ -415,6 +415,11 @@ def test_sweeps_keep_the_specs_own_checks(cli):
     assert run.code == 2 and "ball_count = 0" in run.err
 
 
+def test_more_samples_than_sobol_points_are_refused(cli):
+    run = cli("tolerance", ROOT / "specs" / "tolerances" / "thrust-bearing.yaml", "-n", "2e9")
+    assert run.code == 2 and "--sampler random" in run.err
+
+
 def test_an_empty_method_list_is_refused(cli):
     run = cli("tolerance", ROOT / "specs" / "tolerances" / "thrust-bearing.yaml", "-m", " , ")
     assert run.code == 2 and "--method names no method" in run.err
