@@ -283,7 +283,7 @@ class Study:
                                 for i, item in enumerate(self.inputs)])
 
     def monte_carlo(self, samples: int, seed: int = 0, sampler: str = "sobol", *,
-                    chunk: int = 4 * BLOCK, threads: int = 2, keys: Sequence[str] | None = None,
+                    chunk: int = 2 * BLOCK, threads: int = 2, keys: Sequence[str] | None = None,
                     progress: Callable[[int], None] | None = None) -> MonteCarloResult:
         """Statistics of every result (or of ``keys``) over ``samples`` drawn designs.
 
