@@ -57,7 +57,6 @@ MATRICES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
                                 tuple(BEARING_RESULTS))
     for shaft in SHAFTS
 }
-DISPLAY: dict[str, tuple[str, float]] = {}
 
 WARNINGS: dict[str, str] = {
     **bevel_gears.WARNINGS,
