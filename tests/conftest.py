@@ -26,6 +26,14 @@ class Run:
         self.exception = result.exception
 
 
+def csv_column(text: str, header: str) -> list[float]:
+    """The values of one column of a sweep's CSV output, by its header."""
+    import csv
+    import io
+
+    return [float(row[header]) for row in csv.DictReader(io.StringIO(text))]
+
+
 def solve_json(cli, path) -> list[dict]:
     """The JSON records of `bearingcalc solve PATH --format json` (exit 0 or 1)."""
     run = cli("solve", path, "--format", "json")

@@ -12,7 +12,7 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from bearingcalc.core import ball_bearing as bb
-from tests.conftest import ROOT, solve_json
+from tests.conftest import ROOT, csv_column, solve_json
 
 HOURS = 3600.0
 SPECS = sorted((ROOT / "specs").glob("ball-bearing*.yaml"))
@@ -291,10 +291,9 @@ def test_sweep_of_life_against_load_plots(cli, tmp_path):
               "radial_load=2kN:20kN:10", "-r", "modified_rating_life", "-r", "life_margin",
               "--plot", plot, "-f", "csv")
     assert run.code == 0, run.err
-    header, *rows = [line.split(",") for line in run.out.splitlines()]
-    load = np.array([float(row[header.index("input.radial_load [N]")]) for row in rows])
-    life = np.array([float(row[header.index("basic_rating_life [s]")]) for row in rows])
-    assert len(rows) == 10 and np.allclose(life * load ** 3, life[0] * load[0] ** 3, rtol=1e-13)
+    load = np.array(csv_column(run.out, "input.radial_load [N]"))
+    life = np.array(csv_column(run.out, "basic_rating_life [s]"))
+    assert len(load) == 10 and np.allclose(life * load ** 3, life[0] * load[0] ** 3, rtol=1e-13)
     assert plot.read_bytes().startswith(b"\x89PNG")
 
 

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from bearingcalc.core import bevel_sizing as bs
-from tests.conftest import ROOT, solve_json
+from tests.conftest import ROOT, csv_column, solve_json
 
 LBF, HP, INCH = 4.4482216152605, 745.69987158227022, 0.0254
 
@@ -216,9 +216,8 @@ def test_sweep_of_face_width_plots_both_safety_factors(cli, tmp_path):
               "face_width=15mm:30mm:16", "-r", "bending_safety", "-r", "contact_safety",
               "--plot", plot, "-f", "csv")
     assert run.code == 0, run.err
-    header, *rows = [line.split(",") for line in run.out.splitlines()]
-    bending = [float(row[header.index("bending_safety [1]")]) for row in rows]
-    assert len(rows) == 16 and bending[-1] > bending[0]
+    bending = csv_column(run.out, "bending_safety [1]")
+    assert len(bending) == 16 and bending[-1] > bending[0]
     assert plot.read_bytes().startswith(b"\x89PNG")
 
 

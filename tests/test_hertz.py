@@ -21,7 +21,7 @@ from scipy.optimize import brentq
 
 from bearingcalc.core import ball_bearing, thrust_bearing
 from bearingcalc.core.hertz import curvature_difference, ellipse_modulus, hertz_point_contact
-from tests.conftest import ROOT, solve_json
+from tests.conftest import ROOT, csv_column, solve_json
 
 STEEL = (210e9, 0.3, 210e9, 0.3)
 
@@ -245,8 +245,7 @@ def test_conformity_tolerance_and_sweep(cli, spec_file):
     run = cli("sweep", spec_file(BEARING), "--vary", "inner_groove_conformity=0.505:0.56:12",
               "-r", "inner_contact_pressure", "-f", "csv")
     assert run.code == 0, run.err
-    header, *rows = [line.split(",") for line in run.out.splitlines()]
-    pressures = [float(row[header.index("inner_contact_pressure [Pa]")]) for row in rows]
+    pressures = csv_column(run.out, "inner_contact_pressure [Pa]")
     assert all(later > earlier for earlier, later in itertools.pairwise(pressures))
 
 
