@@ -2,7 +2,10 @@
 
 Adding a kind takes a solver module in ``core/`` (with ``RESULTS``,
 ``STATUS_REASONS`` and ``evaluate``), a spec model in ``spec/`` (with
-``solver_inputs``) and one entry here; every command picks it up.
+``solver_inputs``) and one entry here; every command picks it up. A solver may
+also give ``GROUPS`` (table headings), ``MATRICES`` (per-member sub-tables),
+``DISPLAY`` (table units of its own) and ``WARNINGS`` (flags it returns as
+``_warn_*`` results, reported as warnings and never as results).
 """
 
 from __future__ import annotations
