@@ -4,10 +4,10 @@
 from __future__ import annotations
 
 import math
-from typing import Annotated, Any, Literal
+from typing import Any, Literal
 
 import numpy as np
-from pydantic import BeforeValidator, Field, WithJsonSchema, model_validator
+from pydantic import Field, model_validator
 
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.spec.fields import (
@@ -25,6 +25,7 @@ from bearingcalc.spec.fields import (
     Ratio,
     SpecModel,
     Temperature,
+    ranged_number,
     reliability,
 )
 
@@ -37,14 +38,7 @@ DEFAULT_CONTACT_ANGLE = {"deep-groove": 0.0, "thrust": math.pi / 2}
 Reliability = reliability(*RELIABILITY_RANGE, "ISO 281's range for a1")
 
 
-def _unit_fraction(value: Any) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not 0 <= value <= 1:
-        raise ValueError(f"must be a number from 0 to 1, got {value!r}")
-    return float(value)
-
-
-UnitFraction = Annotated[float, BeforeValidator(_unit_fraction),
-                         WithJsonSchema({"type": "number", "minimum": 0, "maximum": 1})]
+UnitFraction = ranged_number(0.0, 1.0, "a fraction", "0.5")
 
 
 class Lubrication(SpecModel):

@@ -18,24 +18,11 @@ from bearingcalc.spec.fields import (
     SpecModel,
     ToothCount,
     Torque,
+    ranged_number,
     reliability,
 )
 
 MOUNTING_FACTOR = {"both-straddle": 1.00, "one-straddle": 1.10, "neither-straddle": 1.25}
-
-
-def _ranged(low: float, high: float, what: str, example: str, whole: bool = False) -> Any:
-    """A plain number field in [low, high] with a message that names the range."""
-    def check(value: Any) -> float:
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise ValueError(f"must be a number, like {example}, got {value!r}")
-        if whole and not float(value).is_integer():
-            raise ValueError(f"must be a whole number ({what}), got {value!r}")
-        if not low <= value <= high:
-            raise ValueError(f"must be from {low:g} to {high:g} ({what}), got {value!r}")
-        return float(value)
-    return Annotated[float, BeforeValidator(check), WithJsonSchema(
-        {"type": "integer" if whole else "number", "minimum": low, "maximum": high})]
 
 
 def _hardness(value: Any) -> float:
@@ -61,16 +48,16 @@ RatingReliability = reliability(0.9, 0.9999, "AGMA 2003's K_R")
 class BevelRating(SpecModel):
     """The AGMA 2003 strength rating of a straight bevel pair of through-hardened steel."""
 
-    quality_number: _ranged(5, 11, "AGMA transmission accuracy number Qv", "7",  # type: ignore[valid-type]
-                            whole=True)
+    quality_number: ranged_number(5, 11, "AGMA transmission accuracy number Qv", "7",  # type: ignore[valid-type]
+                                   whole=True)
     hardness: Hardness = Field(description="Brinell hardness, grade 1 through-hardened")
     mounting: Literal["both-straddle", "one-straddle", "neither-straddle"] = Field(
         description="Kmb 1.00 / 1.10 / 1.25")
     crowned: bool = False
-    geometry_factor_bending: _ranged(1e-6, 10, "J, from AGMA 2003", "0.216")  # type: ignore[valid-type]
-    geometry_factor_pitting: _ranged(1e-6, 10, "I, from AGMA 2003", "0.065")  # type: ignore[valid-type]
-    overload_factor: _ranged(1, 10, "Ko", "1.0") = 1.0  # type: ignore[valid-type]
-    cycles: _ranged(1e3, 1e10, "load cycles of the pinion", "1e7") = 1e7  # type: ignore[valid-type]
+    geometry_factor_bending: ranged_number(1e-6, 10, "J, from AGMA 2003", "0.216")  # type: ignore[valid-type]
+    geometry_factor_pitting: ranged_number(1e-6, 10, "I, from AGMA 2003", "0.065")  # type: ignore[valid-type]
+    overload_factor: ranged_number(1, 10, "Ko", "1.0") = 1.0  # type: ignore[valid-type]
+    cycles: ranged_number(1e3, 1e10, "load cycles of the pinion", "1e7") = 1e7  # type: ignore[valid-type]
     reliability: RatingReliability = 0.99
 
 

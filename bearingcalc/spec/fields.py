@@ -378,15 +378,29 @@ def _finite_number(text: str) -> float:
     return value
 
 
-def _poisson(value: Any) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not -1 < value < 0.5:
-        raise ValueError(f"must be a number between -1 and 0.5 (exclusive), like 0.3, got "
-                         f"{value!r}")
-    return float(value)
+def ranged_number(low: float, high: float, what: str, example: str, *,
+                  whole: bool = False, exclusive: bool = False) -> Any:
+    """A plain-number field within [low, high] (or (low, high) when ``exclusive``),
+    refused with a message that names the range and what the number is."""
+    def check(value: Any) -> float:
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise ValueError(f"must be a number, like {example}, got {value!r}")
+        if whole and not float(value).is_integer():
+            raise ValueError(f"must be a whole number ({what}), got {value!r}")
+        if exclusive and not low < value < high:
+            raise ValueError(f"must be between {low:g} and {high:g}, exclusive ({what}), "
+                             f"like {example}, got {value!r}")
+        if not low <= value <= high:
+            raise ValueError(f"must be from {low:g} to {high:g} ({what}), got {value!r}")
+        return float(value)
+
+    bounds = ({"exclusiveMinimum": low, "exclusiveMaximum": high} if exclusive
+              else {"minimum": low, "maximum": high})
+    return Annotated[float, BeforeValidator(check), WithJsonSchema(
+        {"type": "integer" if whole else "number", **bounds})]
 
 
-PoissonRatio = Annotated[float, BeforeValidator(_poisson), WithJsonSchema(
-    {"type": "number", "exclusiveMinimum": -1, "exclusiveMaximum": 0.5})]
+PoissonRatio = ranged_number(-1.0, 0.5, "Poisson's ratio", "0.3", exclusive=True)
 
 #: Bearing steel (AISI 52100 / 100Cr6), ball and rings alike: E = 207.5 GPa (the value
 #: of bearing makers' contact calculations), ν = 0.3, ρ = 7850 kg/m³.
