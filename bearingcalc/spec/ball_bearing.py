@@ -83,11 +83,12 @@ class BallBearingLimits(SpecModel):
         "bearings)")
 
 
-class BallBearingSpec(SpecModel):
-    """A rolling ball bearing sized by ISO 281 (life) and ISO 76 (static safety)."""
+class BearingFields(SpecModel):
+    """What a ball bearing is, apart from how it is loaded and run: its type, catalogue
+    ratings, internal geometry, load factors, grooves, material and race control.
+    ``kind: ball-bearing`` adds loads, speeds and lubrication; a drive's bearing entry
+    (``kind: bevel-drive``) adds its position on the shaft."""
 
-    kind: Literal["ball-bearing"]
-    name: str | None = None
     type: Literal["deep-groove", "angular-contact", "thrust"] = "deep-groove"
     dynamic_load_rating: PositiveForce | None = Field(None, description="C, catalogue")
     static_load_rating: PositiveForce | None = Field(None, description="C0, catalogue")
@@ -100,23 +101,30 @@ class BallBearingSpec(SpecModel):
     outside_diameter: PositiveLength | None = Field(None, description="D (for dm only)")
     contact_angle: Angle | None = Field(None, description="α; 0 deg for deep-groove, "
                                         "90 deg for thrust by default")
-    radial_load: Force = Field(0.0, description="Fr")
-    axial_load: Force = Field(0.0, description="Fa")
-    speed: AngularSpeed | None = Field(None, description="the rotating ring relative to the "
-                                       "other (inner turning, outer fixed)")
-    inner_speed: AngularSpeed | None = Field(None, description="inner ring, fixed frame")
-    outer_speed: AngularSpeed | None = Field(None, description="outer ring, fixed frame")
     race_control: Literal["outer", "inner"] = Field(
         "outer", description="the race at which the ball does not spin (Jones)")
-    reliability: Reliability = 0.9
-    lubrication: Lubrication | None = None
-    contamination_factor: UnitFraction | None = Field(None, description="eC, 0 to 1")
     load_factors: LoadFactors | None = None
     inner_groove_conformity: Conformity | None = Field(
         None, description="fi = inner groove radius / Dw (> 0.5)")
     outer_groove_conformity: Conformity | None = Field(
         None, description="fo = outer groove radius / Dw (> 0.5)")
     material: ElasticMaterial = ElasticMaterial()
+
+
+class BallBearingSpec(BearingFields):
+    """A rolling ball bearing sized by ISO 281 (life) and ISO 76 (static safety)."""
+
+    kind: Literal["ball-bearing"]
+    name: str | None = None
+    radial_load: Force = Field(0.0, description="Fr")
+    axial_load: Force = Field(0.0, description="Fa")
+    speed: AngularSpeed | None = Field(None, description="the rotating ring relative to the "
+                                       "other (inner turning, outer fixed)")
+    inner_speed: AngularSpeed | None = Field(None, description="inner ring, fixed frame")
+    outer_speed: AngularSpeed | None = Field(None, description="outer ring, fixed frame")
+    reliability: Reliability = 0.9
+    lubrication: Lubrication | None = None
+    contamination_factor: UnitFraction | None = Field(None, description="eC, 0 to 1")
     limits: BallBearingLimits = BallBearingLimits()
 
     @model_validator(mode="after")

@@ -11,24 +11,17 @@ from bearingcalc.errors import SpecFieldError
 from bearingcalc.spec.ball_bearing import (
     BallBearingLimits,
     BallBearingSpec,
-    Conformity,
-    LoadFactors,
+    BearingFields,
     Lubrication,
     Reliability,
     UnitFraction,
 )
 from bearingcalc.spec.bevel_gears import BevelGearsLimits, BevelPair
 from bearingcalc.spec.fields import (
-    Angle,
     AngularSpeed,
-    BallCount,
-    ElasticMaterial,
     Length,
-    PositiveForce,
-    PositiveLength,
     PositiveTime,
     Ratio,
-    SpecModel,
 )
 
 #: Keys of a ball-bearing spec that the drive sets for every bearing itself.
@@ -36,29 +29,13 @@ _DRIVE_SETS = ("radial_load", "axial_load", "speed", "inner_speed", "outer_speed
 SHAFTS = ("pinion", "gear")
 
 
-class DriveBearing(SpecModel):
+class DriveBearing(BearingFields):
     """One ball bearing of a shaft: where it sits, whether it locates the shaft axially,
     and every field of ``kind: ball-bearing`` except loads and speeds."""
 
     position: Length = Field(description="along the shaft axis, from the pitch-cone apex "
                              "toward the gear's back face")
     locating: bool = Field(False, description="takes the shaft's whole axial force")
-    type: Literal["deep-groove", "angular-contact", "thrust"] = "deep-groove"
-    dynamic_load_rating: PositiveForce | None = None
-    static_load_rating: PositiveForce | None = None
-    fatigue_load_limit: PositiveForce | None = None
-    static_factor: Ratio | None = None
-    ball_count: BallCount | None = None
-    ball_diameter: PositiveLength | None = None
-    pitch_diameter: PositiveLength | None = None
-    bore_diameter: PositiveLength | None = None
-    outside_diameter: PositiveLength | None = None
-    contact_angle: Angle | None = None
-    load_factors: LoadFactors | None = None
-    inner_groove_conformity: Conformity | None = None
-    outer_groove_conformity: Conformity | None = None
-    material: ElasticMaterial = ElasticMaterial()
-    race_control: Literal["outer", "inner"] = "outer"
 
     @model_validator(mode="before")
     @classmethod
@@ -138,8 +115,7 @@ class BevelDriveSpec(BevelPair):
         """The bearing as a ``kind: ball-bearing`` spec with these loads and speed: one
         definition of the rules and results for a bearing alone and in a drive. Its fields
         were validated by the drive's own (the same) field types."""
-        fields = {name: getattr(bearing, name) for name in DriveBearing.model_fields
-                  if name not in ("position", "locating")}
+        fields = {name: getattr(bearing, name) for name in BearingFields.model_fields}
         fields.update(kind="ball-bearing", radial_load=radial, axial_load=axial, speed=speed,
                       reliability=self.reliability, lubrication=self.lubrication,
                       contamination_factor=self.contamination_factor,
@@ -174,7 +150,6 @@ class BevelDriveSpec(BevelPair):
                 inputs[prefix + "position"] = bearing.position
                 inputs[prefix + "locating"] = "locating" if bearing.locating else "floating"
                 for key, value in self.ball_bearing(bearing).solver_inputs().items():
-                    if key not in ("radial_load", "axial_load", "speed", "inner_speed",
-                                   "outer_speed", "min_rating_life"):
+                    if key not in (*_DRIVE_SETS, "min_rating_life"):
                         inputs[prefix + key] = value
         return inputs
