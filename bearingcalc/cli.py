@@ -21,6 +21,7 @@ os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
 import typer
 
 from bearingcalc.errors import SpecError
+from bearingcalc.wording import printable
 
 T = TypeVar("T")
 
@@ -351,8 +352,6 @@ def _workers(jobs: int | None) -> int:
     """The number of workers: ``--jobs``, or the cores; at most ``MAX_JOBS_PER_CORE`` per
     core, since more only fight over the same cores (and hundreds of processes can
     exhaust a shared machine)."""
-    import os
-
     cores = os.cpu_count() or 1
     most = MAX_JOBS_PER_CORE * cores
     if jobs is not None and jobs > most:
@@ -452,8 +451,6 @@ def _emit(write: Callable[[TextIO], None], output: Path | None) -> None:
 
 def _silence_stdout() -> None:
     """Point stdout at /dev/null, so the flush at exit does not fail a second time."""
-    import os
-
     devnull = os.open(os.devnull, os.O_WRONLY)
     os.dup2(devnull, sys.stdout.fileno())
     os.close(devnull)
@@ -461,15 +458,8 @@ def _silence_stdout() -> None:
 
 def _print_error(error: Exception) -> None:
     lines = error.lines() if isinstance(error, SpecError) else [f"error: {error}"]
-    print("\n".join(_printable(line) for line in lines), file=sys.stderr)
-
-
-def _printable(text: str) -> str:
-    """``text`` with control characters shown as escapes, so a value from a spec cannot
-    move the cursor, colour the terminal or start a line of its own."""
-    from bearingcalc.wording import printable
-
-    return printable(text)
+    # Control characters from a spec are shown as escapes, never sent to the terminal.
+    print("\n".join(printable(line) for line in lines), file=sys.stderr)
 
 
 class _errors_as_exit:

@@ -11,6 +11,7 @@ import copy
 import dataclasses
 import itertools
 import re
+import typing
 from dataclasses import dataclass
 from typing import Any
 
@@ -188,8 +189,6 @@ def _set_dotted(data: Any, dotted: str, value: Any) -> None:
 
 def _is_list(info: Any) -> bool:
     """Whether a model field holds a list (of nested models)."""
-    import typing
-
     if info is None:
         return False
     annotation = info.annotation
