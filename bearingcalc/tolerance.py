@@ -278,9 +278,15 @@ class Study:
         """
         return self._shape(SampleStream(len(self.inputs), seed, sampler, start).next(count))
 
-    def _shape(self, uniform: NDArray) -> NDArray:
-        return np.column_stack([inverse_cdf(item.tolerance, uniform[:, i])
-                                for i, item in enumerate(self.inputs)])
+    def _shape(self, uniform: NDArray, normal_quantile: Callable[..., NDArray] | None = None
+               ) -> NDArray:
+        """The designs at uniform points (n, d): an (n, d) view of a (d, n) array, so
+        that each input's values, which the solver reads whole, are contiguous."""
+        quantile = normal_quantile or normal_quantile_function(len(uniform))
+        out = np.empty((len(self.inputs), len(uniform)))
+        for i, item in enumerate(self.inputs):
+            inverse_cdf(item.tolerance, uniform[:, i], out=out[i], normal_quantile=quantile)
+        return out.T
 
     def monte_carlo(self, samples: int, seed: int = 0, sampler: str = "sobol", *,
                     chunk: int = 2 * BLOCK, threads: int = 2, keys: Sequence[str] | None = None,
@@ -298,7 +304,14 @@ class Study:
             raise StudyError(f"the chunk size must be a multiple of {BLOCK}")
         keys = list(keys or self.keys)
         limits = self.limit_values
-        pilot, _ = self.evaluate(self.draw(0, min(samples, BLOCK), seed, sampler), keys)
+        normal_draws = samples * sum(item.tolerance.distribution == "normal"
+                                     for item in self.inputs)
+        quantile = normal_quantile_function(normal_draws)
+        # The pilot is the stream's first block: it sets the histogram ranges, and its
+        # results are then counted as that block instead of being solved again.
+        pilot_count = min(samples, BLOCK)
+        pilot_uniform = SampleStream(len(self.inputs), seed, sampler, 0).next(pilot_count)
+        pilot, pilot_status = self.evaluate(self._shape(pilot_uniform, quantile), keys)
         template = {key: _Accumulator(self.nominal[key], pilot[key]) for key in keys}
         blocks = -(-samples // BLOCK)
         workers = max(1, min(threads, blocks))
@@ -308,20 +321,29 @@ class Study:
 
         def work(first_block: int, end_block: int) -> tuple[dict[str, _Accumulator], int, int]:
             accumulators = {key: acc.empty_like() for key, acc in template.items()}
+            scratch = _Scratch()
             passed = infeasible = 0
             start, stop = first_block * BLOCK, min(end_block * BLOCK, samples)
-            stream = SampleStream(len(self.inputs), seed, sampler, start)
-            while start < stop and not stop_now.is_set():
-                count = min(chunk, stop - start)
-                results, status = self.evaluate(self._shape(stream.next(count)), keys)
+
+            def count(results: dict[str, NDArray], status: NDArray, size: int) -> None:
+                nonlocal passed, infeasible
                 ok = self.kind.within_limits(results, status)
                 for key in keys:
-                    accumulators[key].add(results[key])
-                passed += int(ok.sum())
-                infeasible += int((status != 0).sum())
-                start += count
+                    accumulators[key].add(results[key], scratch)
+                passed += int(np.count_nonzero(ok))
+                infeasible += int(np.count_nonzero(status))
                 if progress:
-                    progress(count)
+                    progress(size)
+
+            if start == 0 and start < stop:
+                count(pilot, pilot_status, pilot_count)
+                start = pilot_count
+            stream = SampleStream(len(self.inputs), seed, sampler, start)
+            while start < stop and not stop_now.is_set():
+                size = min(chunk, stop - start)
+                results, status = self.evaluate(self._shape(stream.next(size), quantile), keys)
+                count(results, status, size)
+                start += size
             return accumulators, passed, infeasible
 
         pool = ThreadPoolExecutor(max_workers=workers)
@@ -440,25 +462,51 @@ class SampleStream:
 
     def next(self, count: int) -> NDArray:
         if self.generator is not None:
-            points = self.generator.random((count, self.d))
+            # Drawn row by row as ever, then laid out column by column like the Sobol'
+            # points, so that each input's values are contiguous.
+            points = np.asfortranarray(self.generator.random((count, self.d)))
         else:
             points = self.engine.next(count)
         # Keep the inverse CDFs finite: a point exactly at 0 would map to −inf.
-        return np.clip(points, 1e-300, 1.0 - 2.0**-53)
+        return np.clip(points, 1e-300, 1.0 - 2.0**-53, out=points)
 
 
-def inverse_cdf(tolerance: Tolerance, u: NDArray) -> NDArray:
-    """Map uniform points ``u`` to the tolerance's distribution."""
-    from scipy.special import ndtri
+#: Normal draws in a study above which scipy.special.ndtri is worth its import (about
+#: 0.3 s); below it, bearingcalc.normal.ndtri, whose tails run per element in Python.
+#: Both give the same bits, so the choice never shows in a result.
+SCIPY_NDTRI_ABOVE = 1 << 21
 
+
+def normal_quantile_function(draws: int) -> Callable[..., NDArray]:
+    """The inverse normal CDF to use for ``draws`` normal values: scipy.special.ndtri
+    or its bit-for-bit twin that needs no scipy import (see SCIPY_NDTRI_ABOVE)."""
+    if draws > SCIPY_NDTRI_ABOVE:
+        from scipy.special import ndtri
+
+        return ndtri  # type: ignore[no-any-return]
+    from bearingcalc.normal import ndtri as light_ndtri
+
+    return light_ndtri
+
+
+def inverse_cdf(tolerance: Tolerance, u: NDArray, out: NDArray | None = None,
+                normal_quantile: Callable[..., NDArray] | None = None) -> NDArray:
+    """Map uniform points ``u`` to the tolerance's distribution (into ``out`` if given)."""
     low, width = tolerance.low, tolerance.high - tolerance.low
+    if out is None:
+        out = np.empty(np.shape(u))
     if tolerance.distribution == "uniform":
-        return low + u * width
+        np.multiply(u, width, out=out)
+        return np.add(out, low, out=out)   # low + u·width
     if tolerance.distribution == "triangular":
         lower = low + width * np.sqrt(u / 2.0)
         upper = tolerance.high - width * np.sqrt((1.0 - u) / 2.0)
-        return np.where(u < 0.5, lower, upper)
-    return tolerance.center + tolerance.std * ndtri(u)
+        out[...] = np.where(u < 0.5, lower, upper)
+        return out
+    quantile = normal_quantile or normal_quantile_function(np.size(u))
+    quantile(u, out=out)
+    np.multiply(out, tolerance.std, out=out)
+    return np.add(out, tolerance.center, out=out)   # center + std·Φ⁻¹(u)
 
 
 def _frozen(tolerance: Tolerance, stats: Any) -> Any:
@@ -475,6 +523,25 @@ def _cpk(stats: dict[str, float | None], limit: float) -> float | None:
     if mean is None or std is None or std <= 0:
         return None
     return min(limit - mean, mean + limit) / (3.0 * std)
+
+
+class _Scratch:
+    """One worker's temporary arrays, grown as needed and reused for every result and
+    chunk, so that counting a chunk allocates nothing."""
+
+    def __init__(self) -> None:
+        self._floats = np.empty(0)
+        self._ints = np.empty(0, dtype=np.int64)
+
+    def floats(self, size: int) -> NDArray:
+        if self._floats.size < size:
+            self._floats = np.empty(size)
+        return self._floats[:size]
+
+    def ints(self, size: int) -> NDArray:
+        if self._ints.size < size:
+            self._ints = np.empty(size, dtype=np.int64)
+        return self._ints[:size]
 
 
 class _Accumulator:
@@ -511,33 +578,74 @@ class _Accumulator:
         twin.counts = np.zeros_like(self.counts)
         return twin
 
-    def add(self, values: NDArray) -> None:
-        """Count a chunk of values that starts on a block boundary; NaN is skipped."""
+    def add(self, values: NDArray, scratch: _Scratch | None = None) -> None:
+        """Count a chunk of values that starts on a block boundary; NaN is skipped.
+
+        ``scratch`` holds the worker's temporary arrays, reused from chunk to chunk.
+        """
+        scratch = scratch or _Scratch()
+        size = len(values)
+        blocks = -(-size // BLOCK)
+        padded = scratch.floats(blocks * BLOCK)
+        shifted = padded[:size]
+        np.subtract(values, self.shift, out=shifted)
+        padded[size:] = 0.0
+        per_block = padded.reshape(blocks, BLOCK)
+        sums = per_block.sum(axis=1)
+        if not np.isfinite(sums).all():
+            # A NaN or an infinity (or an overflow) somewhere in the chunk: the general
+            # path, which skips what is not finite.
+            self._add_with_gaps(values)
+            return
+        # Every value is finite (a NaN or an infinity would make its block's sum so).
+        self.sums.extend(sums.tolist())
+        # np.sum's pairwise order depends only on the block, not on where the chunk
+        # sits in memory (einsum's does), which keeps the result chunk-invariant.
+        np.square(per_block, out=per_block)
+        self.squares.extend(per_block.sum(axis=1).tolist())
+        self.count += size
+        if size == 0:
+            return
+        # + 0.0 makes a zero positive: which signed zero np.min meets first depends on
+        # the chunking, and the result must not.
+        low, high = float(values.min()) + 0.0, float(values.max()) + 0.0
+        self.low, self.high = min(self.low, low), max(self.high, high)
+        if low == high:
+            # A result that does not vary (a speed the spec fixes): one bin takes all.
+            self.counts[self._bins(np.array([low]), scratch)[0]] += size
+            return
+        self.counts += np.bincount(self._bins(values, scratch), minlength=HISTOGRAM_BINS + 2)
+
+    def _bins(self, values: NDArray, scratch: _Scratch) -> NDArray:
+        """The histogram bin of each value, 0 and HISTOGRAM_BINS + 1 being the overflow
+        bins: floor((x − edge)·(1/width)) + 1 clipped, in that order of operations."""
+        index = scratch.floats(len(values))[:len(values)]
+        np.subtract(values, self.edge, out=index)
+        np.multiply(index, 1.0 / self.width, out=index)
+        np.floor(index, out=index)
+        np.clip(index, -1, HISTOGRAM_BINS, out=index)
+        np.add(index, 1.0, out=index)
+        bins = scratch.ints(len(values))[:len(values)]
+        np.copyto(bins, index, casting="unsafe")
+        return bins
+
+    def _add_with_gaps(self, values: NDArray) -> None:
+        """:meth:`add` for a chunk holding non-finite values."""
         finite = np.isfinite(values)
-        all_finite = bool(finite.all())
-        # values − shift where finite, 0 elsewhere: the same numbers either way.
-        shifted = values - self.shift if all_finite else np.where(finite, values - self.shift,
-                                                                  0.0)
+        shifted = np.where(finite, values - self.shift, 0.0)
         blocks = -(-len(values) // BLOCK)
         if len(values) % BLOCK:
             shifted = np.concatenate([shifted, np.zeros(blocks * BLOCK - len(values))])
         per_block = shifted.reshape(blocks, BLOCK)
         self.sums.extend(per_block.sum(axis=1).tolist())
-        # np.sum's pairwise order depends only on the block, not on where the chunk
-        # sits in memory (einsum's does), which keeps the result chunk-invariant.
         self.squares.extend(np.square(per_block).sum(axis=1).tolist())
-        kept = values if all_finite else values[finite]
+        kept = values[finite]
         self.count += kept.size
         if kept.size:
-            self.low = min(self.low, float(kept.min()))
-            self.high = max(self.high, float(kept.max()))
-        # In place, in the order the bins were always computed: (x − edge)·(1/width).
-        index = np.subtract(kept, self.edge)
-        np.multiply(index, 1.0 / self.width, out=index)
-        np.floor(index, out=index)
-        np.clip(index, -1, HISTOGRAM_BINS, out=index)
-        np.add(index, 1.0, out=index)
-        self.counts += np.bincount(index.astype(np.int64), minlength=HISTOGRAM_BINS + 2)
+            self.low = min(self.low, float(kept.min()) + 0.0)
+            self.high = max(self.high, float(kept.max()) + 0.0)
+            self.counts += np.bincount(self._bins(kept, _Scratch()),
+                                       minlength=HISTOGRAM_BINS + 2)
 
     def merge(self, other: _Accumulator) -> None:
         """Add another accumulator's counts (sums are exact, so order does not matter)."""

@@ -177,8 +177,14 @@ def _spin_to_roll_unchecked(r: NDArray, theta: NDArray, b: NDArray) -> NDArray:
 
 def _rho_from(r: NDArray, b: NDArray, sin: NDArray, cos: NDArray) -> NDArray:
     """ρ from r, b and the contact angle's sine and cosine (see spin_to_roll_ratio)."""
+    return _rho_from_terms(r * (1.0 + sin + cos), b - r * cos, sin, cos)
+
+
+def _rho_from_terms(r_rolling: NDArray, d: NDArray, sin: NDArray, cos: NDArray) -> NDArray:
+    """ρ from r(1 + sinθ + cosθ), d = b − r·cosθ, sinθ and cosθ, each computed once by
+    the caller (the same arithmetic, so the same bits, as :func:`_rho_from`)."""
     with np.errstate(divide="ignore", invalid="ignore"):
-        k = r * (1.0 + sin + cos) / (b - r * cos)
+        k = r_rolling / d
         return (k * sin + sin - cos) / (k * cos + sin + cos)
 
 
@@ -218,33 +224,52 @@ def _window_from(r: NDArray, theta: NDArray, sin: NDArray, cos: NDArray,
                  max_spin_to_roll: ArrayLike) -> tuple[NDArray, NDArray]:
     """The window's edges from the contact angle and its sine and cosine (NaN in, NaN
     out for the lower edge; see pitch_radius_window)."""
+    return _window_from_terms(r, theta, sin, cos, r * cos, r * (1.0 + sin + cos),
+                              max_spin_to_roll)
+
+
+def _window_from_terms(r: NDArray, theta: NDArray, sin: NDArray, cos: NDArray,
+                       r_cos: NDArray, r_rolling: NDArray, max_spin_to_roll: ArrayLike
+                       ) -> tuple[NDArray, NDArray]:
+    """:func:`_window_from` with r·cosθ and r(1 + sinθ + cosθ) computed once by the caller."""
     rho_max = np.asarray(max_spin_to_roll, dtype=float)
+    sin_plus_cos = sin + cos
 
     def edge(rho: NDArray) -> NDArray:
         with np.errstate(divide="ignore", invalid="ignore"):
-            k = (rho * (sin + cos) + cos - sin) / (sin - rho * cos)
-            return r * cos + r * (1.0 + sin + cos) / k
+            k = (rho * sin_plus_cos + cos - sin) / (sin - rho * cos)
+            return r_cos + r_rolling / k
 
     # K must be positive for a real edge; otherwise the edge is out of reach.
     low_reachable = rho_max < np.tan(theta)
     high_reachable = rho_max < np.tan(np.pi / 4 - theta)
-    b_min = np.where(low_reachable, edge(rho_max), r * cos)
-    b_max = np.where(high_reachable, edge(-rho_max), np.inf)
+    # The usual study has every edge in reach: no selection pass is needed then.
+    b_min = edge(rho_max)
+    if not low_reachable.all():
+        b_min = np.where(low_reachable, b_min, r_cos)
+    b_max = edge(-rho_max)
+    if not high_reachable.all():
+        b_max = np.where(high_reachable, b_max, np.inf)
     # An impossible geometry (θ NaN) has no window: NaN, not the unbounded edge.
-    return b_min, np.where(np.isnan(theta) | np.isnan(r), np.nan, b_max)
+    if np.isnan(theta).any() or np.isnan(r).any():
+        b_max = np.where(np.isnan(theta) | np.isnan(r), np.nan, b_max)
+    return b_min, b_max
 
 
 def thrust_bearing_status(ball_radius: ArrayLike, contact_angle: ArrayLike,
-                          pitch_radius: ArrayLike, ball_count: ArrayLike | None = None) -> NDArray:
+                          pitch_radius: ArrayLike, ball_count: ArrayLike | None = None,
+                          cos: NDArray | None = None) -> NDArray:
     """Feasibility code of each design: 0 when feasible, else a key of ``STATUS_REASONS``.
 
     Checks, in order: r > 0, b > 0, 0 < θ < π/4, d = b − r·cosθ > 0 and, with a ball
     count Z, Z·asin(r/b) <= π (the balls fit on the pitch circle). NaN inputs fail
-    the first check they take part in.
+    the first check they take part in. ``cos`` is cosθ when the caller has it.
     """
     r = np.asarray(ball_radius, dtype=float)
     theta = np.asarray(contact_angle, dtype=float)
     b = np.asarray(pitch_radius, dtype=float)
+    if cos is None:
+        cos = np.cos(theta)
     shape = np.broadcast_shapes(r.shape, theta.shape, b.shape,
                                 np.shape(ball_count) if ball_count is not None else ())
     with np.errstate(invalid="ignore"):
@@ -253,7 +278,7 @@ def thrust_bearing_status(ball_radius: ArrayLike, contact_angle: ArrayLike,
             (1, ~(r > 0)),
             (3, ~((theta > 0) & (theta < np.pi / 4))),
             (2, ~(b > 0)),
-            (4, ~(b - r * np.cos(theta) > 0)),
+            (4, ~(b - r * cos > 0)),
         ]
         if ball_count is not None:
             z = np.asarray(ball_count, dtype=float)
@@ -315,17 +340,32 @@ def solve_thrust_bearing(ball_radius: ArrayLike | None, contact_angle: ArrayLike
 
 def _solve(r: NDArray, theta: NDArray, b: NDArray, shaft_speed: ArrayLike,
            ball_count: ArrayLike | None, max_spin_to_roll: ArrayLike,
-           solved: bool) -> dict[str, NDArray]:
+           solved: bool, ok: NDArray | None = None, cos: NDArray | None = None
+           ) -> dict[str, NDArray]:
     """:func:`solve_thrust_bearing` on a complete geometry; ``solved`` says that one of
-    r, θ, b was solved for pure rolling, so spin is zero by construction."""
+    r, θ, b was solved for pure rolling, so spin is zero by construction. ``ok`` (where
+    the geometry is possible) and ``cos`` (cosθ) may come from the caller's checks."""
     omega_s = np.asarray(shaft_speed, dtype=float)
     rho_max = np.asarray(max_spin_to_roll, dtype=float)
-    ok = _geometry_ok(r, theta, b)
-    r, theta, b = (np.where(ok, x, np.nan) for x in (r, theta, b))
+    if cos is None:
+        cos = np.cos(theta)
+    if ok is None:
+        ok = _geometry_ok(r, theta, b, cos)
+    all_ok = bool(np.all(ok))
+    if not all_ok:
+        # NaN where impossible: cos(NaN) is NaN, so masking cosθ equals taking the
+        # cosine of the masked θ, bit for bit.
+        r, theta, b, cos = (np.where(ok, x, np.nan) for x in (r, theta, b, cos))
 
-    sin, cos = np.sin(theta), np.cos(theta)
-    d = b - r * cos
-    omega_b = omega_s * d / (HALF_SQRT2 * r * (1.0 + sin + cos))
+    # Each shared term is computed once, in the order of operations the formulas
+    # below were always evaluated in, so the numbers do not change.
+    sin = np.sin(theta)
+    r_cos = r * cos
+    d = b - r_cos
+    one_plus_sin = 1.0 + sin
+    rolling_factor = one_plus_sin + cos           # 1 + sinθ + cosθ
+    r_rolling = r * rolling_factor
+    omega_b = omega_s * d / (HALF_SQRT2 * r * rolling_factor)
     v_g = HALF_SQRT2 * r * omega_b
     cage = v_g / b
     # ω_rel = −(√2/2)ω_B·e1 + (ω_S + (√2/2)ω_B)·e2, projected on n and t.
@@ -334,16 +374,14 @@ def _solve(r: NDArray, theta: NDArray, b: NDArray, shaft_speed: ArrayLike,
     spin = rel_1 * cos + rel_2 * sin
     roll = -rel_1 * sin + rel_2 * cos
     # ρ is a property of the geometry alone; computing it from K keeps it finite
-    # (and exact) when the shaft is at rest and spin and roll are both zero. The
-    # helpers get sin and cos computed once; r, θ and b are already NaN where the
-    # geometry is impossible, so their own masks would change nothing.
-    rho = _rho_from(r, b, sin, cos)
+    # (and exact) when the shaft is at rest and spin and roll are both zero.
+    rho = _rho_from_terms(r_rolling, d, sin, cos)
     if solved:
         # Pure rolling by construction: the formulas would leave rounding dust of
         # order 1e-17, which a limit of exactly 0 must not see.
         spin, rho = spin * 0.0, rho * 0.0
-    b_star = r * (1.0 + sin) / (cos - sin)
-    b_min, b_max = _window_from(r, theta, sin, cos, rho_max)
+    b_star = r * one_plus_sin / (cos - sin)
+    b_min, b_max = _window_from_terms(r, theta, sin, cos, r_cos, r_rolling, rho_max)
 
     results = {
         "ball_radius": r,
@@ -352,7 +390,7 @@ def _solve(r: NDArray, theta: NDArray, b: NDArray, shaft_speed: ArrayLike,
         "pitch_radius_pure_rolling": b_star,
         "pitch_radius_deviation": b - b_star,
         "shaft_contact_radius": d,
-        "shaft_speed": omega_s * np.where(ok, 1.0, np.nan),
+        "shaft_speed": omega_s if all_ok else omega_s * np.where(ok, 1.0, np.nan),
         "ball_speed": omega_b,
         "cage_speed": cage,
         "ball_center_speed": v_g,
@@ -402,19 +440,25 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
     """
     r, theta, b = complete_geometry(inputs["ball_radius"], inputs["contact_angle"],
                                     inputs["pitch_radius"])
-    status = thrust_bearing_status(r, theta, b, inputs.get("ball_count"))
+    cos = np.cos(theta)
+    status = thrust_bearing_status(r, theta, b, inputs.get("ball_count"), cos)
     if inputs["pitch_radius"] is not None and inputs["contact_angle"] is None:
         # θ came out NaN because no pure-rolling angle exists: say why.
         status = np.where((status == 3) & ~(b > r), np.int8(6), status)
     solved = any(inputs[key] is None for key in ("ball_radius", "contact_angle", "pitch_radius"))
     if wanted is not None and set(wanted) <= _RATIO_ONLY:
-        rho = np.where(status == 0, _spin_to_roll_unchecked(r, theta, b), np.nan)
+        rho = _rho_from(r, b, np.sin(theta), cos)
+        feasible = status == FEASIBLE
+        if not feasible.all():
+            rho = np.where(feasible, rho, np.nan)
         if solved:
             rho = rho * 0.0
         margin = np.asarray(inputs.get("max_spin_to_roll", 0.01), dtype=float) - np.abs(rho)
         return {"spin_to_roll": rho, "slip_margin": margin}, status
+    # Checks 1 to 4 of the status are the geometry's; 5 (the balls' fit) is not.
+    geometry_ok = (status == FEASIBLE) | (status == 5)
     results = _solve(r, theta, b, inputs["shaft_speed"], inputs.get("ball_count"),
-                     inputs.get("max_spin_to_roll", 0.01), solved)
+                     inputs.get("max_spin_to_roll", 0.01), solved, geometry_ok, cos)
     if inputs.get("axial_load") is not None:
         results.update(ball_contact_loads(
             r, theta, b, results["cage_speed"], inputs["ball_count"], inputs["axial_load"],
@@ -486,6 +530,8 @@ def _angle_in_range(contact_angle: ArrayLike) -> NDArray:
     return np.where((theta > 0) & (theta < np.pi / 4), theta, np.nan)
 
 
-def _geometry_ok(r: NDArray, theta: NDArray, b: NDArray) -> NDArray:
+def _geometry_ok(r: NDArray, theta: NDArray, b: NDArray, cos: NDArray | None = None) -> NDArray:
     with np.errstate(invalid="ignore"):
-        return (r > 0) & (b > 0) & (theta > 0) & (theta < np.pi / 4) & (b - r * np.cos(theta) > 0)
+        if cos is None:
+            cos = np.cos(theta)
+        return (r > 0) & (b > 0) & (theta > 0) & (theta < np.pi / 4) & (b - r * cos > 0)
