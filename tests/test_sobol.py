@@ -38,19 +38,3 @@ def test_lowest_zero_bit_positions():
         positions = _lowest_zero_bits(first, 20)
         expected = [(~k & (k + 1)).bit_length() - 1 for k in range(first, first + 20)]
         assert positions.tolist() == expected
-
-
-def test_the_default_study_does_not_import_scipy_stats():
-    import subprocess
-    import sys
-
-    code = ("import sys\nfrom bearingcalc.cli import app\n"
-            "sys.argv = ['bearingcalc', 'tolerance', 'specs/tolerances/thrust-bearing.yaml',"
-            " '-m', 'monte-carlo', '-n', '1e4', '-f', 'json']\n"
-            "try:\n    app()\nexcept SystemExit:\n    pass\n"
-            "print('scipy.stats' in sys.modules, file=sys.stderr)\n")
-    from tests.conftest import ROOT
-
-    done = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True,
-                          text=True, check=False)
-    assert done.stderr.strip().endswith("False"), done.stderr

@@ -69,6 +69,89 @@ def test_worst_case_bounds_a_dense_grid_and_finds_the_interior_maximum(spec_file
     assert abs(rho) < 1e-11
 
 
+EXAMPLE_STUDIES = sorted((ROOT / "specs" / "tolerances").glob("*.yaml"))
+
+
+def example_study(path) -> Study:
+    (document,) = load_documents(path)
+    kind, spec = parse_document(document)
+    return Study(kind, spec)
+
+
+def lbfgsb_worst_case(study: Study) -> dict[str, dict[str, float]]:
+    """The extremes as L-BFGS-B finds them from the best of the same corners and Sobol
+    points, for every result, monotonic or not: the search the zoom replaces."""
+    import itertools
+
+    from bearingcalc.sobol import SobolStream
+    from bearingcalc.tolerance import INTERIOR_POINTS
+
+    d = len(study.inputs)
+    low = np.array([item.low for item in study.inputs])
+    width = np.array([item.high - item.low for item in study.inputs])
+    unit = np.vstack([np.array(list(itertools.product((0.0, 1.0), repeat=d))),
+                      SobolStream(d, 0).next(INTERIOR_POINTS), np.full((1, d), 0.5)])
+    results, _ = study.evaluate(low + unit * width)
+    found: dict[str, dict[str, float]] = {}
+    for key in study.keys:
+        for sense, sign in (("min", 1.0), ("max", -1.0)):
+            start = unit[np.nanargmin(sign * results[key])]
+            found.setdefault(key, {})[sense] = sign * study._refine(key, sign, start, low,
+                                                                    width)[1]
+    return found
+
+
+@pytest.mark.parametrize("path", EXAMPLE_STUDIES, ids=lambda p: p.stem)
+def test_worst_case_is_as_extreme_as_lbfgsb_on_every_example(path):
+    study = example_study(path)
+    ours, reference = study.worst_case(), lbfgsb_worst_case(study)
+    for key, entry in reference.items():
+        for sense in ("min", "max"):
+            scale = max(abs(entry[sense]), abs(ours[key][sense]), 1e-300)
+            # Never less extreme than L-BFGS-B beyond rounding, and never beyond the box
+            # (both stay inside it, so neither can be more extreme by more than that).
+            assert abs(ours[key][sense] - entry[sense]) <= 1e-13 * scale, (key, sense)
+            inputs = ours[key][f"{sense}_inputs"]
+            for item in study.inputs:
+                assert item.low <= inputs[item.name] <= item.high
+
+
+def test_a_monotonic_result_has_its_extremes_at_corners_exactly(spec_file):
+    study = linear_disk(spec_file)
+    wc = study.worst_case()["center_speed"]
+    # center_speed = R·Ω − r·ω falls with ω and rises with Ω.
+    assert wc["min"] == R_RING * -103 - R_DISK * 606
+    assert wc["max"] == R_RING * -97 - R_DISK * 594
+    assert wc["min_inputs"] == {"disk_speed": 606.0, "surface_speed": -103.0}
+
+
+def test_extremes_with_many_free_inputs_go_to_lbfgsb(spec_file, monkeypatch):
+    from bearingcalc import tolerance
+
+    study = study_of(spec_file, TB)
+    zoomed = study.worst_case()
+    monkeypatch.setattr(tolerance, "GRID_MAX_FREE", 0)
+    refined = study.worst_case()
+    for key in ("slip_margin", "ball_speed", "spin_to_roll"):
+        for sense in ("min", "max"):
+            assert_allclose(refined[key][sense], zoomed[key][sense], rtol=1e-12, atol=1e-18)
+
+
+def test_the_default_study_imports_no_scipy_stats_special_or_optimize():
+    import subprocess
+    import sys
+
+    code = ("import sys\nfrom bearingcalc.cli import app\n"
+            "sys.argv = ['bearingcalc', 'tolerance', 'specs/tolerances/thrust-bearing.yaml',"
+            " '-f', 'json']\n"
+            "try:\n    app()\nexcept SystemExit:\n    pass\n"
+            "print(sorted(m for m in ('scipy.stats', 'scipy.special', 'scipy.optimize')"
+            " if m in sys.modules), file=sys.stderr)\n")
+    done = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True,
+                          text=True, check=False)
+    assert done.stderr.strip().endswith("[]"), done.stderr
+
+
 def test_rss_is_exact_for_a_linear_result(spec_file):
     study = linear_disk(spec_file)
     rss = study.rss()["center_speed"]
