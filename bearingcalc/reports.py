@@ -410,13 +410,9 @@ def write_sweep_csv(sweep: Sweep, stream: IO[str]) -> None:
 
     Numbers are written in their shortest round-trip form by orjson, 50,000 rows at
     a time: formatting a million rows is the cost of a large sweep, and Python's
-    float formatting would take several times as long. Each block is built as bytes
-    with no work per line: the status code rides along as a last column (null for a
-    possible design), and each code's ",code" at the end of a line is replaced by its
-    reason in one pass over the block.
+    float formatting would take several times as long. Each block is turned into
+    CSV as bytes, with no work per line (see :func:`_csv_block`).
     """
-    import orjson
-
     columns = sweep_columns(sweep)
     stream.write(",".join([*(name for name, _ in columns), "reason"]) + "\n")
     integer_axes = [axis.integer for axis in sweep.axes]
@@ -424,29 +420,91 @@ def write_sweep_csv(sweep: Sweep, stream: IO[str]) -> None:
                np.unique(sweep.status).tolist() if code}
     for start in range(0, len(sweep.status), SWEEP_CSV_ROWS):
         stop = min(start + SWEEP_CSV_ROWS, len(sweep.status))
-        codes = sweep.status[start:stop]
-        # The last column is NaN for a possible design (written null, then removed with
-        # the other nulls, leaving the empty reason) and the status code otherwise.
-        marker = np.where(codes == 0, np.nan, codes.astype(float))
-        block = np.column_stack([*(values[start:stop].astype(float) for _, values in columns),
-                                 marker])
-        text = orjson.dumps(np.ascontiguousarray(block), option=orjson.OPT_SERIALIZE_NUMPY)
-        body = text[2:-2].replace(b"],[", b"\n").replace(b"null", b"") + b"\n"
+        block = np.column_stack([values[start:stop].astype(float) for _, values in columns])
+        pieces = _csv_block(block, sweep.status[start:stop], len(sweep.axes), reasons)
         if any(integer_axes):
-            lines = [_integer_fields(line, integer_axes) for line in body.split(b"\n")[:-1]]
-            body = b"\n".join(lines) + b"\n"
-        for code in np.unique(codes).tolist():
-            if code:
-                body = body.replace(b"," + repr(float(code)).encode() + b"\n",
-                                    reasons[code] + b"\n")
-        _write_bytes(stream, body)
+            lines = [_integer_fields(line, integer_axes)
+                     for line in b"".join(pieces).split(b"\n")[:-1]]
+            pieces = [b"\n".join(lines) + b"\n"]
+        for piece in pieces:
+            _write_bytes(stream, piece)
 
 
-def _write_bytes(stream: IO[str], data: bytes) -> None:
+#: Row by row, orjson's "[[a,b],[c,d]]" with "]" deleted and "[" made a line end: each
+#: row then ends in "," and a line end, a possible design's row end exactly.
+_ROWS = bytes.maketrans(b"[", b"\n")
+
+
+def _csv_block(block: NDArray, codes: NDArray, inputs: int, reasons: dict[int, bytes]
+               ) -> list[bytes | memoryview]:
+    """CSV lines of a block of rows (the varied inputs, then the results) with their
+    status codes, in passes over the whole block's text and none per line; in pieces,
+    to be written one after the other without joining them.
+
+    One translate makes every row a possible design's line. An impossible design's
+    results are all NaN: its first result is set to its code before formatting, so
+    that its row end (``,5.0,null,…,null,`` and the line end) is found, one pass per
+    code present, and replaced by empty fields and the reason. A last pass, only in
+    a block with a number that is not finite elsewhere, empties the ``null`` orjson
+    writes for it. A block where a possible design's row end could read as an
+    impossible one's is written by :func:`_csv_block_marked` instead.
+    """
+    import orjson
+
+    results = block.shape[1] - inputs
+    impossible = codes != 0
+    present = np.unique(codes[impossible]).tolist()
+    finite = np.isfinite(block)
+    if present and (results == 0 or finite[impossible, inputs:].any()
+                    or _could_read_as_impossible(block[:, inputs:], finite[:, inputs:],
+                                                 impossible, present)):
+        return _csv_block_marked(block, codes, reasons)
+    block[impossible, inputs] = codes[impossible]
+    text = orjson.dumps(block, option=orjson.OPT_SERIALIZE_NUMPY).translate(_ROWS, b"]")
+    # "[[" became two line ends, and the last row ends in "]]": it has no row end yet.
+    for code in present:
+        tail = b"," + repr(float(code)).encode() + b",null" * (results - 1)
+        text = text.replace(tail + b",\n", b"," * results + reasons[code] + b"\n")
+    last, ending = len(text), b",\n"
+    if codes[-1]:
+        last -= len(tail := b"," + repr(float(codes[-1])).encode() + b",null" * (results - 1))
+        ending = b"," * results + reasons[int(codes[-1])] + b"\n"
+    if not finite[~impossible].all():
+        # Only now, so that the impossible rows' nulls above were still there to find.
+        return [bytes(memoryview(text)[2:last]).replace(b"null", b""), ending]
+    return [memoryview(text)[2:last], ending]
+
+
+def _could_read_as_impossible(results: NDArray, finite: NDArray, impossible: NDArray,
+                              codes: list[int]) -> bool:
+    """Whether a possible design's results could end its row as an impossible one's:
+    a code as its first result and nothing finite after it."""
+    return bool((~impossible & np.isin(results[:, 0], codes)
+                 & ~finite[:, 1:].any(axis=1)).any())
+
+
+def _csv_block_marked(block: NDArray, codes: NDArray, reasons: dict[int, bytes]
+                      ) -> list[bytes | memoryview]:
+    """:func:`_csv_block` for any block: the status code rides along as a last column,
+    so that ``,<code>],[`` ends every row and one pass per code present replaces it."""
+    import orjson
+
+    marker = np.where(codes == 0, np.nan, codes.astype(float))
+    text = orjson.dumps(np.column_stack([block, marker]), option=orjson.OPT_SERIALIZE_NUMPY)
+    body = text[2:-2].replace(b"],[", b"\n").replace(b"null", b"") + b"\n"
+    for code in np.unique(codes).tolist():
+        if code:
+            body = body.replace(b"," + repr(float(code)).encode() + b"\n",
+                                reasons[code] + b"\n")
+    # A possible design's marker was a null: the line ends in the reason's empty field.
+    return [body]
+
+
+def _write_bytes(stream: IO[str], data: bytes | memoryview) -> None:
     """UTF-8 bytes onto a text stream: straight to its buffer where it has one."""
     buffer = getattr(stream, "buffer", None)
     if buffer is None:
-        stream.write(data.decode())
+        stream.write(bytes(data).decode())
         return
     stream.flush()
     buffer.write(data)

@@ -43,7 +43,7 @@ def main() -> None:
         peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
         size = out.stat().st_size / 1e6
     print(f"{n} x {n} grid to CSV ({size:.0f} MB): median {statistics.median(times):.2f} s "
-          f"end to end (target <= 10 s, stretch 5 s), peak RSS {peak:.0f} MB (target < 1024)")
+          f"end to end (target <= 3 s), peak RSS {peak:.0f} MB (target < 1024)")
 
     from bearingcalc import reports
     from bearingcalc.evaluation import load_one_spec

@@ -224,6 +224,43 @@ def test_block_csv_writer_is_byte_identical_to_the_line_writer(vary):
     assert body == _reference_csv_rows(solved)
 
 
+@pytest.mark.parametrize("angles", ["20deg:40deg:70", "20deg:50deg:70"])
+def test_block_csv_writer_with_unbounded_results(spec_file, angles):
+    import io
+
+    from bearingcalc.evaluation import load_one_spec
+    from bearingcalc.reports import write_sweep_csv
+    from bearingcalc.sweep import parse_axis, run_sweep
+
+    # ρ_max above tan(45° − θ): no upper pitch-radius edge, pitch_radius_max is +inf,
+    # which orjson writes as null; with every design possible, and with the last
+    # ones impossible (θ > 45°).
+    path = spec_file((SPECS / "thrust-bearing.yaml").read_text().replace(
+        "max_spin_to_roll: 0.01", "max_spin_to_roll: 0.5"))
+    kind, spec, document = load_one_spec(path)
+    solved = run_sweep(kind, spec, document.source,
+                       [parse_axis(f"contact_angle={angles}", spec)])
+    assert np.isinf(solved.results["pitch_radius_max"]).any()
+    assert (solved.status[-1] != 0) == angles.startswith("20deg:50")
+    stream = io.StringIO()
+    write_sweep_csv(solved, stream)
+    assert stream.getvalue().split("\n", 1)[1] == _reference_csv_rows(solved)
+
+
+def test_csv_block_where_a_possible_row_looks_like_an_impossible_one():
+    from bearingcalc.reports import _csv_block
+
+    # Row 1 is possible, but its results (5.0 and no number) read like code 5's row.
+    block = np.array([[1.0, 5.0, np.nan], [2.0, np.nan, np.nan], [3.0, 1.5, np.inf],
+                      [4.0, np.nan, np.nan]])
+    codes = np.array([0, 5, 0, 7])
+    reasons = {5: b",too big", 7: b",too small"}
+    assert b"".join(_csv_block(block, codes, 1, reasons)) == (
+        b"1.0,5.0,,\n2.0,,,too big\n3.0,1.5,,\n4.0,,,too small\n")
+    assert b"".join(_csv_block(block[1:], codes[1:], 1, reasons)) == (
+        b"2.0,,,too big\n3.0,1.5,,\n4.0,,,too small\n")
+
+
 def test_parquet_output_holds_the_csv_columns(cli, tmp_path):
     pq = pytest.importorskip("pyarrow.parquet")
     out = tmp_path / "grid.parquet"
