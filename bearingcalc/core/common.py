@@ -16,7 +16,8 @@ def first_failure(checks: Sequence[tuple[int, ArrayLike]], shape: tuple[int, ...
     """
     status = np.zeros(shape, dtype=np.int8)
     for code, failed in reversed(checks):
-        status = np.where(failed, np.int8(code), status)
+        if np.any(failed):   # usually none fails: no selection pass then
+            status = np.where(failed, np.int8(code), status)
     return status
 
 
