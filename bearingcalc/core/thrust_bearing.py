@@ -240,9 +240,11 @@ def _window_from_terms(r: NDArray, theta: NDArray, sin: NDArray, cos: NDArray,
             k = (rho * sin_plus_cos + cos - sin) / (sin - rho * cos)
             return r_cos + r_rolling / k
 
-    # K must be positive for a real edge; otherwise the edge is out of reach.
-    low_reachable = rho_max < np.tan(theta)
-    high_reachable = rho_max < np.tan(np.pi / 4 - theta)
+    # K must be positive for a real edge; otherwise the edge is out of reach. With
+    # 0 < θ < π/4 that is ρ_max < tanθ for the lower edge and ρ_max < tan(π/4 − θ) for
+    # the upper, compared here as the signs of K's numerator and denominator are.
+    low_reachable = rho_max * cos < sin
+    high_reachable = rho_max * sin_plus_cos < cos - sin
     # The usual study has every edge in reach: no selection pass is needed then.
     b_min = edge(rho_max)
     if not low_reachable.all():
