@@ -588,8 +588,9 @@ class SampleStream:
             points = np.asfortranarray(self.generator.random((count, self.d)))
         else:
             points = self.engine.next(count)
-        # Keep the inverse CDFs finite: a point exactly at 0 would map to −inf.
-        return np.clip(points, 1e-300, 1.0 - 2.0**-53, out=points)
+        # Keep the inverse CDFs finite: a point exactly at 0 would map to −inf. (Neither
+        # sampler reaches 1: Sobol' points are at most 1 − 2⁻³⁰, PCG64's 1 − 2⁻⁵³.)
+        return np.maximum(points, 1e-300, out=points)
 
 
 #: Normal draws in a study above which scipy.special.ndtri is worth its import (about
@@ -735,7 +736,8 @@ class _Accumulator:
             # A result that does not vary (a speed the spec fixes): one bin takes all.
             self.counts[self._bins(np.array([low]), scratch)[0]] += size
             return
-        self.counts += np.bincount(self._bins(values, scratch), minlength=HISTOGRAM_BINS + 2)
+        # In place: no 65,538-bin array to allocate, zero and add for every chunk.
+        np.add.at(self.counts, self._bins(values, scratch), 1)
 
     def _bins(self, values: NDArray, scratch: _Scratch) -> NDArray:
         """The histogram bin of each value, 0 and HISTOGRAM_BINS + 1 being the overflow
@@ -765,8 +767,7 @@ class _Accumulator:
         if kept.size:
             self.low = min(self.low, float(kept.min()) + 0.0)
             self.high = max(self.high, float(kept.max()) + 0.0)
-            self.counts += np.bincount(self._bins(kept, _Scratch()),
-                                       minlength=HISTOGRAM_BINS + 2)
+            np.add.at(self.counts, self._bins(kept, _Scratch()), 1)
 
     def merge(self, other: _Accumulator) -> None:
         """Add another accumulator's counts (sums are exact, so order does not matter)."""
