@@ -19,7 +19,7 @@ and in the tails, with z = √(−2 ln y') and y' = min(y, 1 − y):
 with (P₁, Q₁) for z < 8 and (P₂, Q₂) beyond.
 
 Reference: S. L. Moshier, Cephes Math Library, ``ndtri.c`` (1984, 1987, 1989, 2000),
-as carried in scipy.special.
+as carried in scipy.special; docs/physics.md §10.
 """
 
 from __future__ import annotations

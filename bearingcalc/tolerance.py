@@ -182,7 +182,7 @@ class Study:
            solver call per pass (:meth:`_zoom`); more by L-BFGS-B (scipy.optimize),
            with gradients from one vectorised central-difference call per step.
 
-        Infeasible designs (NaN) are skipped.
+        Infeasible designs (NaN) are skipped. Method: docs/physics.md §10.
         """
         from bearingcalc.sobol import SobolStream
 

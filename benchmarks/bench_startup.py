@@ -46,8 +46,10 @@ def main() -> None:
     numpy_median = statistics.median(numpy_times)
     solve_median = statistics.median(solve_times)
     study_median = statistics.median(study_times)
-    writes = "off" if os.environ.get("PYTHONDONTWRITEBYTECODE") else "on"
-    print(f"bytecode caches: {writes} (PYTHONDONTWRITEBYTECODE)")
+    if os.environ.get("PYTHONDONTWRITEBYTECODE"):
+        print("bytecode caches: off (PYTHONDONTWRITEBYTECODE is set: every run compiles)")
+    else:
+        print("bytecode caches: on (PYTHONDONTWRITEBYTECODE is not set)")
     print(f"python -c 'import numpy'                         median {numpy_median * 1e3:7.1f} ms")
     print(f"bearingcalc solve specs/thrust-bearing.yaml      median {solve_median * 1e3:7.1f} ms")
     print(f"bearingcalc tolerance (default, 1e5 samples)     median {study_median * 1e3:7.1f} ms")
