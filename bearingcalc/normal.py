@@ -75,8 +75,8 @@ def ndtri(y: NDArray, out: NDArray | None = None) -> NDArray:
     Standard normal quantiles. [1]
     """
     y = np.asarray(y, dtype=float)
-    if out is not None and not out.flags.c_contiguous:
-        out[...] = ndtri(y)
+    if out is not None and (not out.flags.c_contiguous or np.may_share_memory(out, y)):
+        out[...] = ndtri(y)   # written whole at the end: y is read to the last
         return out
     result = np.empty(y.shape) if out is None else out
     flat_y, flat_out = y.reshape(-1), result.reshape(-1)

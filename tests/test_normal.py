@@ -55,3 +55,9 @@ def test_a_strided_out_array_gets_the_values():
     out = np.empty((1000, 2))
     ndtri(y, out=out[:, 1])
     assert np.array_equal(out[:, 1], scipy_ndtri(y))
+
+
+def test_out_may_be_the_input():
+    y = np.random.default_rng(5).random(10_000)
+    expected = scipy_ndtri(y)
+    assert np.array_equal(ndtri(y, out=y), expected) and np.array_equal(y, expected)
