@@ -736,7 +736,23 @@ class _Accumulator:
             # A result that does not vary (a speed the spec fixes): one bin takes all.
             self.counts[self._bins(np.array([low]), scratch)[0]] += size
             return
-        # In place: no 65,538-bin array to allocate, zero and add for every chunk.
+        self._count(values, low, high, scratch)
+
+    def _count(self, values: NDArray, low: float, high: float, scratch: _Scratch) -> None:
+        """Add finite ``values`` whose min and max are ``low`` and ``high`` to the
+        histogram, in place (no 65,538-bin array to allocate, zero and add a chunk)."""
+        scale = 1.0 / self.width
+        # (x − edge)·scale rounds monotonically, so the chunk's extremes bound every
+        # index: when all lie in [0, HISTOGRAM_BINS + 1), truncation is the floor and
+        # nothing is clipped, and the same bins take two passes fewer.
+        if (low - self.edge) * scale >= 0.0 and (high - self.edge) * scale < HISTOGRAM_BINS + 1:
+            index = scratch.floats(len(values))
+            np.subtract(values, self.edge, out=index)
+            np.multiply(index, scale, out=index)
+            bins = scratch.ints(len(values))
+            np.copyto(bins, index, casting="unsafe")
+            np.add.at(self.counts[1:], bins, 1)   # bin floor(index) + 1
+            return
         np.add.at(self.counts, self._bins(values, scratch), 1)
 
     def _bins(self, values: NDArray, scratch: _Scratch) -> NDArray:

@@ -152,6 +152,26 @@ def test_the_default_study_imports_no_scipy_stats_special_or_optimize():
     assert done.stderr.strip().endswith("[]"), done.stderr
 
 
+def test_histogram_bins_are_the_clipped_floors_on_both_counting_paths():
+    from bearingcalc.tolerance import _Accumulator, _Scratch
+
+    rng = np.random.default_rng(11)
+    pilot = rng.normal(5.0, 1.0, BLOCK)
+    accumulator = _Accumulator(5.0, pilot)
+    inside = rng.uniform(pilot.min(), pilot.max(), BLOCK)            # the fast path
+    outside = np.concatenate([rng.normal(5.0, 9.0, BLOCK - 2),       # both overflow bins
+                              [accumulator.edge, np.nextafter(accumulator.edge, 0.0)]])
+    scratch = _Scratch()
+    for chunk in (inside, outside, np.full(BLOCK, 5.25)):
+        accumulator.add(chunk, scratch)
+    values = np.concatenate([inside, outside, np.full(BLOCK, 5.25)])
+    index = np.floor((values - accumulator.edge) * (1.0 / accumulator.width))
+    expected = np.bincount((np.clip(index, -1, HISTOGRAM_BINS) + 1).astype(np.int64),
+                           minlength=HISTOGRAM_BINS + 2)
+    assert np.array_equal(accumulator.counts, expected)
+    assert expected[0] > 0 and expected[-1] > 0
+
+
 def test_rss_is_exact_for_a_linear_result(spec_file):
     study = linear_disk(spec_file)
     rss = study.rss()["center_speed"]
