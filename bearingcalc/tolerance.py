@@ -714,76 +714,58 @@ class _Accumulator:
         padded[size:] = 0.0
         per_block = padded.reshape(blocks, BLOCK)
         sums = per_block.sum(axis=1)
+        kept = values
         if not np.isfinite(sums).all():
-            # A NaN or an infinity (or an overflow) somewhere in the chunk: the general
-            # path, which skips what is not finite.
-            self._add_with_gaps(values)
-            return
-        # Every value is finite (a NaN or an infinity would make its block's sum so).
+            # A NaN or an infinity somewhere in the chunk (a finite chunk's block sums
+            # are finite unless they overflow): what is not finite counts as 0 here and
+            # is left out of the count, the extremes and the histogram.
+            finite = np.isfinite(values)
+            shifted[~finite] = 0.0
+            sums = per_block.sum(axis=1)
+            kept = values[finite]
         self.sums.extend(sums.tolist())
         # np.sum's pairwise order depends only on the block, not on where the chunk
         # sits in memory (einsum's does), which keeps the result chunk-invariant.
         np.square(per_block, out=per_block)
         self.squares.extend(per_block.sum(axis=1).tolist())
-        self.count += size
-        if size == 0:
+        self.count += kept.size
+        if kept.size == 0:
             return
         # + 0.0 makes a zero positive: which signed zero np.min meets first depends on
         # the chunking, and the result must not.
-        low, high = float(values.min()) + 0.0, float(values.max()) + 0.0
+        low, high = float(kept.min()) + 0.0, float(kept.max()) + 0.0
         self.low, self.high = min(self.low, low), max(self.high, high)
-        if low == high:
-            # A result that does not vary (a speed the spec fixes): one bin takes all.
-            self.counts[self._bins(np.array([low]), scratch)[0]] += size
-            return
-        self._count(values, low, high, scratch)
+        self._count(kept, low, high, scratch)
 
     def _count(self, values: NDArray, low: float, high: float, scratch: _Scratch) -> None:
         """Add finite ``values`` whose min and max are ``low`` and ``high`` to the
-        histogram, in place (no 65,538-bin array to allocate, zero and add a chunk)."""
+        histogram, in place (no 65,538-bin array to allocate, zero and add a chunk).
+
+        A value's bin is floor((x − edge)·(1/width)) + 1, clipped to [0,
+        HISTOGRAM_BINS + 1] (the two overflow bins), in that order of operations.
+        """
         scale = 1.0 / self.width
+        if low == high:
+            # A result that does not vary (a speed the spec fixes): one bin takes all.
+            index = math.floor((low - self.edge) * scale)
+            self.counts[min(max(index, -1), HISTOGRAM_BINS) + 1] += len(values)
+            return
+        index = scratch.floats(len(values))
+        np.subtract(values, self.edge, out=index)
+        np.multiply(index, scale, out=index)
+        bins = scratch.ints(len(values))
         # (x − edge)·scale rounds monotonically, so the chunk's extremes bound every
         # index: when all lie in [0, HISTOGRAM_BINS + 1), truncation is the floor and
-        # nothing is clipped, and the same bins take two passes fewer.
+        # nothing is clipped, and the same bins take three passes fewer.
         if (low - self.edge) * scale >= 0.0 and (high - self.edge) * scale < HISTOGRAM_BINS + 1:
-            index = scratch.floats(len(values))
-            np.subtract(values, self.edge, out=index)
-            np.multiply(index, scale, out=index)
-            bins = scratch.ints(len(values))
             np.copyto(bins, index, casting="unsafe")
             np.add.at(self.counts[1:], bins, 1)   # bin floor(index) + 1
             return
-        np.add.at(self.counts, self._bins(values, scratch), 1)
-
-    def _bins(self, values: NDArray, scratch: _Scratch) -> NDArray:
-        """The histogram bin of each value, 0 and HISTOGRAM_BINS + 1 being the overflow
-        bins: floor((x − edge)·(1/width)) + 1 clipped, in that order of operations."""
-        index = scratch.floats(len(values))[:len(values)]
-        np.subtract(values, self.edge, out=index)
-        np.multiply(index, 1.0 / self.width, out=index)
         np.floor(index, out=index)
         np.clip(index, -1, HISTOGRAM_BINS, out=index)
         np.add(index, 1.0, out=index)
-        bins = scratch.ints(len(values))[:len(values)]
         np.copyto(bins, index, casting="unsafe")
-        return bins
-
-    def _add_with_gaps(self, values: NDArray) -> None:
-        """:meth:`add` for a chunk holding non-finite values."""
-        finite = np.isfinite(values)
-        shifted = np.where(finite, values - self.shift, 0.0)
-        blocks = -(-len(values) // BLOCK)
-        if len(values) % BLOCK:
-            shifted = np.concatenate([shifted, np.zeros(blocks * BLOCK - len(values))])
-        per_block = shifted.reshape(blocks, BLOCK)
-        self.sums.extend(per_block.sum(axis=1).tolist())
-        self.squares.extend(np.square(per_block).sum(axis=1).tolist())
-        kept = values[finite]
-        self.count += kept.size
-        if kept.size:
-            self.low = min(self.low, float(kept.min()) + 0.0)
-            self.high = max(self.high, float(kept.max()) + 0.0)
-            np.add.at(self.counts, self._bins(kept, _Scratch()), 1)
+        np.add.at(self.counts, bins, 1)
 
     def merge(self, other: _Accumulator) -> None:
         """Add another accumulator's counts (sums are exact, so order does not matter)."""
