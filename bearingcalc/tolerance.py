@@ -184,17 +184,8 @@ class Study:
 
         Infeasible designs (NaN) are skipped. Method: docs/physics.md §10.
         """
-        from bearingcalc.sobol import SobolStream
-
-        d = len(self.inputs)
-        low = np.array([i.low for i in self.inputs])
-        width = np.array([i.high - i.low for i in self.inputs])
-        if d <= MAX_CORNER_INPUTS:
-            corners = np.array(list(itertools.product((0.0, 1.0), repeat=d)))
-        else:
-            corners = np.empty((0, d))
-        interior = SobolStream(d, 0).next(INTERIOR_POINTS)
-        unit = np.vstack([corners, interior, np.full((1, d), 0.5)])
+        low, width = self.box()
+        unit = self.search_points()
         results, status = self.evaluate(low + unit * width)
         self.box_impossible = self._impossible_part(unit, status, low, width)
         rises = self._differences(unit, low, width)
@@ -232,6 +223,24 @@ class Study:
                 item.name: float(low[i] + search.point[i] * width[i])
                 for i, item in enumerate(self.inputs)}
         return out
+
+    def box(self) -> tuple[NDArray, NDArray]:
+        """(low, width) of the tolerance box, input by input. [SI]"""
+        return (np.array([item.low for item in self.inputs]),
+                np.array([item.high - item.low for item in self.inputs]))
+
+    def search_points(self) -> NDArray:
+        """Where the worst case starts, in unit coordinates of the box: all 2^d corners
+        (d <= MAX_CORNER_INPUTS), INTERIOR_POINTS scrambled Sobol' points, the centre."""
+        from bearingcalc.sobol import SobolStream
+
+        d = len(self.inputs)
+        if d <= MAX_CORNER_INPUTS:
+            corners = np.array(list(itertools.product((0.0, 1.0), repeat=d)))
+        else:
+            corners = np.empty((0, d))
+        interior = SobolStream(d, 0).next(INTERIOR_POINTS)
+        return np.vstack([corners, interior, np.full((1, d), 0.5)])
 
     def _differences(self, unit: NDArray, low: NDArray, width: NDArray) -> dict[str, NDArray]:
         """Result key -> f(u + h·eᵢ) − f(u − h·eᵢ), shape (d, points), at every point u of

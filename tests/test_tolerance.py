@@ -81,16 +81,8 @@ def example_study(path) -> Study:
 def lbfgsb_worst_case(study: Study) -> dict[str, dict[str, float]]:
     """The extremes as L-BFGS-B finds them from the best of the same corners and Sobol
     points, for every result, monotonic or not: the search the zoom replaces."""
-    import itertools
-
-    from bearingcalc.sobol import SobolStream
-    from bearingcalc.tolerance import INTERIOR_POINTS
-
-    d = len(study.inputs)
-    low = np.array([item.low for item in study.inputs])
-    width = np.array([item.high - item.low for item in study.inputs])
-    unit = np.vstack([np.array(list(itertools.product((0.0, 1.0), repeat=d))),
-                      SobolStream(d, 0).next(INTERIOR_POINTS), np.full((1, d), 0.5)])
+    low, width = study.box()
+    unit = study.search_points()
     results, _ = study.evaluate(low + unit * width)
     found: dict[str, dict[str, float]] = {}
     for key in study.keys:
