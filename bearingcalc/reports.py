@@ -462,13 +462,15 @@ def _csv_block(block: NDArray, codes: NDArray, inputs: int, reasons: dict[int, b
     block[impossible, inputs] = codes[impossible]
     text = orjson.dumps(block, option=orjson.OPT_SERIALIZE_NUMPY).translate(_ROWS, b"]")
     # "[[" became two line ends, and the last row ends in "]]": it has no row end yet.
-    for code in present:
-        tail = b"," + repr(float(code)).encode() + b",null" * (results - 1)
-        text = text.replace(tail + b",\n", b"," * results + reasons[code] + b"\n")
+    # code -> (its row's results as written, the same as CSV: empty fields and the reason)
+    blanks = {code: (b"," + repr(float(code)).encode() + b",null" * (results - 1),
+                     b"," * results + reasons[code]) for code in present}
+    for written, line in blanks.values():
+        text = text.replace(written + b",\n", line + b"\n")
     last, ending = len(text), b",\n"
     if codes[-1]:
-        last -= len(tail := b"," + repr(float(codes[-1])).encode() + b",null" * (results - 1))
-        ending = b"," * results + reasons[int(codes[-1])] + b"\n"
+        written, line = blanks[int(codes[-1])]
+        last, ending = last - len(written), line + b"\n"
     if not finite[~impossible].all():
         # Only now, so that the impossible rows' nulls above were still there to find.
         return [bytes(memoryview(text)[2:last]).replace(b"null", b""), ending]
