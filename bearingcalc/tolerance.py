@@ -415,7 +415,7 @@ class Study:
         quantile = normal_quantile or normal_quantile_function(len(uniform))
         out = np.empty((len(self.inputs), len(uniform)))
         for i, item in enumerate(self.inputs):
-            inverse_cdf(item.tolerance, uniform[:, i], out=out[i], normal_quantile=quantile)
+            inverse_cdf(item.tolerance, uniform[:, i], out[i], quantile)
         return out.T
 
     def monte_carlo(self, samples: int, seed: int = 0, sampler: str = "sobol", *,
@@ -620,12 +620,11 @@ def normal_quantile_function(draws: int) -> Callable[..., NDArray]:
     return light_ndtri
 
 
-def inverse_cdf(tolerance: Tolerance, u: NDArray, out: NDArray | None = None,
-                normal_quantile: Callable[..., NDArray] | None = None) -> NDArray:
-    """Map uniform points ``u`` to the tolerance's distribution (into ``out`` if given)."""
+def inverse_cdf(tolerance: Tolerance, u: NDArray, out: NDArray,
+                normal_quantile: Callable[..., NDArray]) -> NDArray:
+    """Map uniform points ``u`` to the tolerance's distribution, into ``out``;
+    ``normal_quantile`` is the inverse normal CDF to use (normal_quantile_function)."""
     low, width = tolerance.low, tolerance.high - tolerance.low
-    if out is None:
-        out = np.empty(np.shape(u))
     if tolerance.distribution == "uniform":
         np.multiply(u, width, out=out)
         return np.add(out, low, out=out)   # low + u·width
@@ -634,8 +633,7 @@ def inverse_cdf(tolerance: Tolerance, u: NDArray, out: NDArray | None = None,
         upper = tolerance.high - width * np.sqrt((1.0 - u) / 2.0)
         out[...] = np.where(u < 0.5, lower, upper)
         return out
-    quantile = normal_quantile or normal_quantile_function(np.size(u))
-    quantile(u, out=out)
+    normal_quantile(u, out=out)
     np.multiply(out, tolerance.std, out=out)
     return np.add(out, tolerance.center, out=out)   # center + std·Φ⁻¹(u)
 
