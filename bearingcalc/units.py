@@ -9,6 +9,12 @@ Angles need care: pint treats the radian as dimensionless, so a plain number or
 ``Hz`` would pass as an angle or an angular speed. Every dimension here therefore
 names the root units pint must reduce to, radian included, and ``25 Hz`` is
 refused for a speed rather than read silently as 25 rad/s.
+
+Speeds of rotation are written in many ways (``rpm``, ``r/min`` as ISO 281 and
+bearing catalogues write it, ``min⁻¹`` as DIN does); ``RPM_NOTATIONS`` reads them
+all as rpm, but only where an angular speed is expected: to pint, ``1/min`` is a
+frequency. Percent is a unit on its own (``90 %``) and never a factor of another
+unit, where it would scale silently (``20 deg%`` would be 0.2°).
 """
 
 from __future__ import annotations
@@ -114,6 +120,13 @@ COMMON_UNITS: dict[str, tuple[str, float]] = {
     "GPa": ("gram / meter / second ** 2", 1e12),
 }
 
+#: Notations of revolutions per minute, read as ``rpm`` where an angular speed is
+#: expected (and nowhere else: ``1/min`` is a frequency to pint, and ``r`` or ``RPM``
+#: are not units to it). Keys are written without spaces; ``1 / min`` is ``1/min``.
+#: ``tests/test_units.py`` checks each against pint's ``revolution / minute``.
+RPM_NOTATIONS = frozenset({"rpm", "RPM", "r/min", "rev/min", "1/min", "min^-1", "min**-1",
+                           "min⁻¹"})
+
 _DIVISORS: dict[str, float] = {"cm": 1e2, "mm": 1e3, "um": 1e6, "µm": 1e6, "μm": 1e6,
                                "mrad": 1e3}
 
@@ -141,10 +154,15 @@ DISPLAY_UNITS: dict[str, tuple[str, float]] = {
 _QUANTITY = re.compile(
     r"^\s*(?P<number>[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*(?P<unit>\S.*?)?\s*$",
     re.ASCII)
-#: A unit is words (with optional small whole exponents) joined by *, / or spaces;
-#: anything else (brackets, stray operators, punctuation) is refused before pint sees it.
-_UNIT_WORD = r"(?:[A-Za-z_°µμ%Ω]+(?:\s*(?:\^|\*\*)\s*[-+]?[1-9][0-9]?|[²³])?)"
-_UNIT = re.compile(rf"^{_UNIT_WORD}(?:\s*[*/·]\s*{_UNIT_WORD}|\s+{_UNIT_WORD})*$")
+#: A unit is words (with optional small whole exponents, ``^-1`` or ``⁻¹``) joined by
+#: *, / or spaces, the first of which may be a 1 over the rest (``1/min``); or ``%`` on
+#: its own. Anything else (brackets, stray operators, punctuation) is refused before
+#: pint sees it.
+_UNIT_WORD = r"(?:[A-Za-z_°µμΩ]+(?:\s*(?:\^|\*\*)\s*[-+]?[1-9][0-9]?|⁻?[¹²³])?)"
+_UNIT = re.compile(rf"^(?:%|(?:{_UNIT_WORD}|1(?=\s*/))(?:\s*[*/·]\s*{_UNIT_WORD}"
+                  rf"|\s+{_UNIT_WORD})*)$")
+#: Percent anywhere in a unit, as the sign or as pint's word for it.
+_PERCENT = re.compile(r"%|(?<![A-Za-z_])percent(?![A-Za-z_])")
 #: Longest quantity text handed on: longer ones are typos or attacks, and pint's parser
 #: is super-linear in the length.
 MAX_QUANTITY_CHARS = 80
@@ -194,12 +212,29 @@ def parse_quantity(text: Any, dimension: Dimension) -> float:
     if re.match(r"^,[0-9]", unit):
         raise UnitError(f"'{text}': write the decimal point as '.', like "
                         f"'{match['number']}.{unit[1:]}'")
+    if _PERCENT.search(unit) and unit not in ("%", "percent"):
+        raise UnitError(f"cannot read '{unit}' in '{text}' as a unit: percent is a unit on "
+                        f"its own, as in '90 %', never a factor of another unit; write "
+                        f"{what} like '{dimension.example}'")
     if not _UNIT.match(unit):
+        before_one = _number_before_one(match["number"], unit)
+        if before_one is not None:  # "15001/min": the 1 of 1/min read as a digit
+            raise UnitError(f"cannot read '{text}': put a space between the number and "
+                            f"'1{unit}', like '{before_one} 1{unit}', or write {what} like "
+                            f"'{dimension.example}'")
         raise UnitError(f"cannot read '{unit}' in '{text}' as a unit; write a number and a "
                         f"unit with nothing after it, like '{dimension.example}'")
     if dimension is TEMPERATURE:
         return _temperature(number, unit, text)
-    root, factor = COMMON_UNITS.get(unit) or _pint_unit(unit)
+    rpm_notation = re.sub(r"\s+", "", unit) in RPM_NOTATIONS
+    if rpm_notation and dimension is ANGULAR_SPEED:
+        unit = "rpm"
+    try:
+        root, factor = COMMON_UNITS.get(unit) or _pint_unit(unit)
+    except UnitError:
+        if not rpm_notation:
+            raise
+        root, factor = COMMON_UNITS["rpm"]  # "r/min" for a length: say what it is
     factor *= dimension.si_per_root
     if root != dimension.root:
         raise UnitError(f"'{unit}' is not a unit of {dimension.name} ({_describe_root(root)}); "
@@ -210,6 +245,15 @@ def parse_quantity(text: Any, dimension: Dimension) -> float:
         raise UnitError(f"'{text}' is out of range for {what} (at most {MAX_MAGNITUDE:g} "
                         f"{dimension.si_unit} in size)")
     return value
+
+
+def _number_before_one(number: str, unit: str) -> str | None:
+    """The number of ``15001/min`` written without the 1 of ``1/min`` (``1500``), or None
+    when the unit does not start with / or no number is left."""
+    if not unit.startswith("/") or not number.endswith("1"):
+        return None
+    rest = number[:-1]
+    return rest if re.fullmatch(r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)", rest, re.ASCII) else None
 
 
 def _plain_number(text: Any) -> float:
