@@ -40,7 +40,12 @@ class SpecFieldError(Exception):
     through unchanged, and the loader attaches file and line.
     """
 
-    def __init__(self, field: str, message: str) -> None:
+    def __init__(self, field: str, message: str, *, at: str | None = None) -> None:
         super().__init__(message)
         self.field = field
         self.message = message
+        #: The key whose line the problem belongs to when ``field`` is missing from the
+        #: spec (a missing contamination_factor belongs to the lubrication block).
+        self.at = at
+        #: Further problems of the same spec, found by other rules.
+        self.more: list[SpecFieldError] = []

@@ -22,6 +22,7 @@ from pydantic import BaseModel, ValidationError
 from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind
 from bearingcalc.spec.fields import SpecModel, nested_model
+from bearingcalc.spec.rules import problems_despite
 from bearingcalc.spec.yaml_loader import (
     Document,
     dotted_name,
@@ -69,10 +70,55 @@ def parse_document(document: Document) -> tuple[Kind, SpecModel]:
     try:
         spec = kind.model.model_validate(data)
     except ValidationError as exc:
-        raise _spec_error(document, kind.model, exc) from None
+        errors = [_one_problem(document, kind.model, problem)
+                  for problem in exc.errors(include_url=False)]
+        errors += [_rule_error(document, problem)
+                   for problem in _rule_problems_despite(kind.model, data, exc)]
+        raise _in_line_order(document, errors) from None
     except SpecFieldError as problem:
-        raise document.error(problem.message, field=problem.field) from None
+        errors = [_rule_error(document, each) for each in (problem, *problem.more)]
+        raise _in_line_order(document, errors) from None
     return kind, spec
+
+
+def _rule_error(document: Document, problem: SpecFieldError) -> SpecError:
+    """A rule's problem at the line of its field, or of the key it belongs to when the
+    field is not in the spec (a missing key)."""
+    key_path = field_key_path(problem.field)
+    if problem.at is not None and key_path not in document.lines:
+        key_path = field_key_path(problem.at)
+    return document.error(problem.message, field=problem.field, key_path=key_path)
+
+
+def _in_line_order(document: Document, errors: list[SpecError]) -> SpecError:
+    """The first error of a spec, with the others in its ``more``, all in line order."""
+    errors.sort(key=lambda error: error.line or 0)
+    errors[0].more = errors[1:]
+    return errors[0]
+
+
+def _rule_problems_despite(model: type[SpecModel], data: dict[str, Any],
+                           exc: ValidationError) -> list[SpecFieldError]:
+    """The problems of the spec's cross-field rules that read only valid fields.
+
+    The invalid top-level fields are given stand-ins (their default, or their schema's
+    example) so that the model can be built; rules that read them are not run. When no
+    stand-in serves, no rule runs: the field errors come first.
+    """
+    invalid = {str(error["loc"][0]) for error in exc.errors() if error["loc"]}
+    stand_in = {key: value for key, value in data.items() if key not in invalid}
+    for name in invalid & set(model.model_fields):
+        info = model.model_fields[name]
+        if info.is_required():
+            example = _example(model, (name,))
+            if example is None:
+                return []
+            stand_in[name] = example
+    try:
+        partial = model.model_validate(stand_in, context={"rules": False})
+    except (ValidationError, SpecFieldError):
+        return []
+    return problems_despite(partial, invalid)
 
 
 def evaluate_documents(documents: Sequence[Document]) -> list[Evaluation | SpecError]:
@@ -226,18 +272,6 @@ def _default_name(document: Document) -> str:
 def _did_you_mean(word: str, choices: Any) -> str:
     close = difflib.get_close_matches(word, list(choices), n=1, cutoff=0.6)
     return f" (did you mean '{close[0]}'?)" if close else ""
-
-
-def _spec_error(document: Document, model: type[SpecModel], exc: ValidationError) -> SpecError:
-    """Every problem of a ValidationError, each as one actionable line, in line order.
-
-    The first is the error raised; the others are in its ``more``.
-    """
-    problems = sorted(exc.errors(include_url=False),
-                      key=lambda e: document.line_of(tuple(e["loc"])))
-    errors = [_one_problem(document, model, problem) for problem in problems]
-    errors[0].more = errors[1:]
-    return errors[0]
 
 
 def _one_problem(document: Document, model: type[SpecModel], error: Any) -> SpecError:

@@ -306,10 +306,12 @@ BAD = [
     ("reliability: 80 %\n", "reliability", "from 90 % to 99.95 %"),
     ("reliability: 99\n", "reliability", "a bare number is a fraction"),
     ("contamination_factor: 1.5\n", "contamination_factor", "from 0 to 1"),
-    ("lubrication: {viscosity: 20 mm^2/s}\n", "contamination_factor",
-     "needs the contamination factor"),
+    # A missing key is blamed at the line of the key that needs it.
+    ("pitch_diameter: 72.5 mm\nlubrication: {viscosity: 20 mm^2/s}\n", "contamination_factor",
+     "needs the contamination factor", "lubrication"),
     ("contact_angle: 95 deg\n", "contact_angle", "from 0 deg to below 90 deg"),
-    ("type: angular-contact\ncontact_angle: 15 deg\n", "load_factors", "give load_factors"),
+    ("type: angular-contact\ncontact_angle: 15 deg\n", "load_factors", "give load_factors",
+     "contact_angle"),
     ("ball_count: 8\nball_diameter: 80 mm\npitch_diameter: 72.5 mm\n", "ball_diameter",
      "must be smaller than pitch_diameter"),
     ("ball_count: 40\nball_diameter: 17.462 mm\npitch_diameter: 72.5 mm\n", "ball_count",
@@ -318,16 +320,17 @@ BAD = [
      "outside ISO 281's fc table"),
     ("pitch_diameter: 72.5 mm\nlubrication: {viscosity: 0.5 mm^2/s}\n"
      "contamination_factor: 0.5\n", "lubrication", "κ = ν/ν1 is below 0.1"),
-    ("lubrication: {viscosity: 20 mm^2/s, temperature: 80 degC}\ncontamination_factor: 0.5\n",
-     "lubrication", "not both"),
+    ("pitch_diameter: 72.5 mm\nlubrication: {viscosity: 20 mm^2/s, temperature: 80 degC}\n"
+     "contamination_factor: 0.5\n", "lubrication", "not both"),
     ("bore_diameter: 45 mm\n", "outside_diameter", "give both bore_diameter and outside"),
     ("radial_load: 10 N*m\n", "radial_load", "is not a unit of force"),
 ]
 
 
-@pytest.mark.parametrize(("change", "field", "fragment"), BAD,
+@pytest.mark.parametrize(("change", "field", "fragment", "line_key"),
+                         [(*case, case[1]) if len(case) == 3 else case for case in BAD],
                          ids=[f"bad{i}" for i in range(len(BAD))])
-def test_bad_input_is_one_clear_line(cli, spec_file, change, field, fragment):
+def test_bad_input_is_one_clear_line(cli, spec_file, change, field, fragment, line_key):
     rows = BASE.splitlines()
     for new_row in change.splitlines():
         key = new_row.split(":")[0]
@@ -337,7 +340,7 @@ def test_bad_input_is_one_clear_line(cli, spec_file, change, field, fragment):
         else:
             rows.append(new_row)
     path = spec_file("\n".join(rows) + "\n")
-    blamed = [i for i, row in enumerate(rows) if row.startswith(f"{field}:")]
+    blamed = [i for i, row in enumerate(rows) if row.startswith(f"{line_key}:")]
     line = blamed[0] + 1 if blamed else 1
     run = cli("solve", path)
     assert run.code == 2, run.out

@@ -128,7 +128,7 @@ BAD = [
     (CONE + "axis_point_height: 0 mm\n", 4, "must be greater than zero"),
     (BEVEL.replace("teeth: 12", "{}").replace("gear_a:\n  {}", "gear_a: {}"), 2,
      "gear_a: give gear_a.pitch_radius, or gear_a.teeth with module"),
-    (BEVEL.replace("module: 2.5 mm\n", ""), 1, "module: gear_a.teeth without a pitch radius "
+    (BEVEL.replace("module: 2.5 mm\n", ""), 2, "module: gear_a.teeth without a pitch radius "
      "needs the module"),
     (BEVEL.replace("teeth: 12", "teeth: 12.5"), 3, "gear_a.teeth: must be a whole number"),
     (BEVEL.replace("teeth: 24", "teeth: 4"), 5, "gear_b.teeth: must be at least 5"),

@@ -65,6 +65,9 @@ KAPPA_CAP = 4.0
 KAPPA_MIN = 0.1
 #: Kelvin of the two ASTM D341 reference temperatures.
 T40, T100 = 313.15, 373.15
+#: Most operating viscosity taken from Walther's equation: 10⁶ mm²/s is a solid, far
+#: below an oil's pour point, where the viscosity–temperature relation no longer holds.
+MAX_OPERATING_VISCOSITY = 1.0
 
 #: Bearing types, as the spec names them, and their codes in solver inputs.
 TYPES = ("deep-groove", "angular-contact", "thrust")
@@ -311,14 +314,35 @@ def walther_viscosity(viscosity_40: ArrayLike, viscosity_100: ArrayLike,
     >>> round(float(walther_viscosity(68e-6, 8.7e-6, 313.15)) * 1e6, 9)
     68.0
     """
-    def loglog(nu: NDArray) -> NDArray:
-        return np.log10(np.log10(nu * 1e6 + 0.7))
-
-    v40, v100 = np.asarray(viscosity_40, dtype=float), np.asarray(viscosity_100, dtype=float)
+    intercept, slope = _walther_line(viscosity_40, viscosity_100)
     t = np.asarray(temperature, dtype=float)
-    slope = (loglog(v40) - loglog(v100)) / (np.log10(T100) - np.log10(T40))
-    intercept = loglog(v40) + slope * np.log10(T40)
     return (10.0 ** 10.0 ** (intercept - slope * np.log10(t)) - 0.7) * 1e-6
+
+
+def walther_temperature(viscosity_40: ArrayLike, viscosity_100: ArrayLike,
+                        viscosity: ArrayLike) -> NDArray:
+    r"""The temperature at which an oil has ``viscosity``: Walther's equation solved for T.
+
+    .. math:: T = 10^{(A - \log_{10}\log_{10}(\nu + 0.7)) / B}
+
+    Units: viscosities [m²/s], T [K]. Source: ASTM D341.
+
+    >>> round(float(walther_temperature(68e-6, 8.7e-6, 8.7e-6)), 9)
+    373.15
+    """
+    intercept, slope = _walther_line(viscosity_40, viscosity_100)
+    return 10.0 ** ((intercept - _loglog(np.asarray(viscosity, dtype=float))) / slope)
+
+
+def _loglog(nu: NDArray) -> NDArray:
+    return np.log10(np.log10(nu * 1e6 + 0.7))
+
+
+def _walther_line(viscosity_40: ArrayLike, viscosity_100: ArrayLike) -> tuple[NDArray, NDArray]:
+    """(A, B) of Walther's line through the oil's two reference points."""
+    v40, v100 = np.asarray(viscosity_40, dtype=float), np.asarray(viscosity_100, dtype=float)
+    slope = (_loglog(v40) - _loglog(v100)) / (np.log10(T100) - np.log10(T40))
+    return _loglog(v40) + slope * np.log10(T40), slope
 
 
 def life_modification_factor(viscosity_ratio: ArrayLike, contamination_factor: ArrayLike,

@@ -23,6 +23,7 @@ from bearingcalc.spec.fields import (
     PositiveTime,
     Ratio,
 )
+from bearingcalc.spec.rules import own_problems, rule
 
 #: Keys of a ball-bearing spec that the drive sets for every bearing itself.
 _DRIVE_SETS = ("radial_load", "axial_load", "speed", "inner_speed", "outer_speed")
@@ -43,8 +44,8 @@ class DriveBearing(BearingFields):
         if isinstance(data, dict):
             given = [key for key in _DRIVE_SETS if key in data]
             if given:
-                raise SpecFieldError(given[0], "a drive's bearing takes no load or speed: the "
-                                     "drive finds them from the gear forces and input_speed")
+                raise ValueError(f"{given[0]}: a drive's bearing takes no load or speed: the "
+                                 "drive finds them from the gear forces and input_speed")
         return data
 
 
@@ -69,39 +70,57 @@ class BevelDriveSpec(BevelPair):
     contamination_factor: UnitFraction | None = None
     limits: BevelDriveLimits = BevelDriveLimits()
 
-    @model_validator(mode="after")
-    def _a_drive(self) -> BevelDriveSpec:
+    @rule
+    def _pair_sized(self) -> SpecFieldError | None:
         if self.face_width is None or self.module is None or None in (self.gear_a.teeth,
                                                                       self.gear_b.teeth):
-            raise SpecFieldError("face_width", "a drive needs the pair's teeth, module and "
-                                 "face_width for its tooth forces")
+            return SpecFieldError("face_width", "a drive needs the pair's teeth, module and "
+                                  "face_width for its tooth forces")
+        return None
+
+    @rule
+    def _loaded(self) -> SpecFieldError | None:
         if self.torque is None and self.power is None:
-            raise SpecFieldError("torque", "a drive needs the load: torque (like 60 N*m) or "
-                                 "power (like 9.4 kW) on the pinion")
-        if not self.input_speed != 0:
-            raise SpecFieldError("input_speed", "must not be zero: the lives need a turning "
-                                 "drive, like 1500 rpm")
+            return SpecFieldError("torque", "a drive needs the load: torque (like 60 N*m) or "
+                                  "power (like 9.4 kW) on the pinion")
+        return None
+
+    @rule
+    def _turning(self) -> SpecFieldError | None:
+        if self.input_speed == 0:
+            return SpecFieldError("input_speed", "must not be zero: the lives need a turning "
+                                  "drive, like 1500 rpm")
+        return None
+
+    @rule
+    def _shafts_carried(self) -> list[SpecFieldError]:
+        problems: list[SpecFieldError] = []
         for shaft, bearings in self.shafts():
             field = f"{shaft}_bearings"
             if len(bearings) != 2:
-                raise SpecFieldError(field, f"a shaft sits on exactly two bearings, got "
-                                     f"{len(bearings)}")
+                problems.append(SpecFieldError(field, f"a shaft sits on exactly two "
+                                               f"bearings, got {len(bearings)}"))
+                continue
             if bearings[0].position == bearings[1].position:
-                raise SpecFieldError(f"{field}.2.position", "two bearings at the same "
-                                     "position cannot carry the shaft's moment")
+                problems.append(SpecFieldError(f"{field}.2.position", "two bearings at the "
+                                               "same position cannot carry the shaft's "
+                                               "moment"))
             locating = [i for i, bearing in enumerate(bearings, 1) if bearing.locating]
             if len(locating) != 1:
-                raise SpecFieldError(f"{field}.1.locating" if not locating
-                                     else f"{field}.{locating[1]}.locating",
-                                     "exactly one bearing of a shaft is locating: it takes "
-                                     f"the whole axial force (got {len(locating)})")
+                problems.append(SpecFieldError(
+                    f"{field}.1.locating" if not locating else f"{field}.{locating[1]}.locating",
+                    "exactly one bearing of a shaft is locating: it takes the whole axial "
+                    f"force (got {len(locating)})"))
             for i, bearing in enumerate(bearings, 1):
                 if bearing.type == "thrust":
-                    raise SpecFieldError(f"{field}.{i}.type", "a thrust ball bearing takes no "
-                                         "radial load, and the gear forces load every "
-                                         "bearing of the shaft radially")
-                self._check_as_ball_bearing(f"{field}.{i}", bearing)
-        return self
+                    problems.append(SpecFieldError(
+                        f"{field}.{i}.type", "a thrust ball bearing takes no radial load, and "
+                        "the gear forces load every bearing of the shaft radially"))
+                else:
+                    problems += self._as_ball_bearing(f"{field}.{i}", bearing)
+        # A rule of the drive's shared fields (lubrication, contamination) fails for every
+        # bearing alike: report it once.
+        return list({(p.field, p.message): p for p in problems}.values())
 
     def shafts(self) -> list[tuple[str, list[DriveBearing]]]:
         """(shaft, its bearings) for the pinion shaft and, when given, the gear shaft."""
@@ -122,18 +141,21 @@ class BevelDriveSpec(BevelPair):
                       limits=BallBearingLimits(min_static_safety=self.limits.min_static_safety))
         return BallBearingSpec.model_construct(**fields)
 
-    def _check_as_ball_bearing(self, where: str, bearing: DriveBearing) -> None:
+    def _as_ball_bearing(self, where: str, bearing: DriveBearing) -> list[SpecFieldError]:
         """Everything ``kind: ball-bearing`` refuses of the bearing, checked by that kind's
         own rules under the load it will carry (axial too where it locates)."""
         spec = self.ball_bearing(bearing, radial=1.0, axial=1.0 if bearing.locating else 0.0,
                                  speed=1.0)
-        try:
-            spec.check_rules()
-        except SpecFieldError as problem:
+        problems = []
+        for problem in own_problems(spec):
             if problem.field in ("lubrication", "contamination_factor", "reliability"):
-                raise
+                problems.append(problem)
+                continue
             field = problem.field if problem.field not in _DRIVE_SETS else "locating"
-            raise SpecFieldError(f"{where}.{field}", problem.message) from None
+            at = None if problem.at is None or problem.at in _DRIVE_SETS else (
+                f"{where}.{problem.at}")
+            problems.append(SpecFieldError(f"{where}.{field}", problem.message, at=at))
+        return problems
 
     def solver_inputs(self) -> dict[str, Any]:
         """SI inputs of :func:`bearingcalc.core.bevel_drive.evaluate`: the pair's (gear A

@@ -6,7 +6,7 @@ import math
 import re
 from typing import Annotated, Any, Literal
 
-from pydantic import BeforeValidator, Field, WithJsonSchema, model_validator
+from pydantic import BeforeValidator, Field, WithJsonSchema
 
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.spec.fields import (
@@ -21,6 +21,7 @@ from bearingcalc.spec.fields import (
     ranged_number,
     reliability,
 )
+from bearingcalc.spec.rules import rule
 
 MOUNTING_FACTOR = {"both-straddle": 1.00, "one-straddle": 1.10, "neither-straddle": 1.25}
 
@@ -92,19 +93,19 @@ class BevelPair(SpecModel):
     power: PositivePower | None = Field(None, description="through gear A, instead of torque")
     rating: BevelRating | None = None
 
-    @model_validator(mode="after")
-    def _geometry_is_determined(self) -> BevelPair:
+    @rule
+    def _geometry_is_determined(self) -> SpecFieldError | None:
         for label, gear in (("gear_a", self.gear_a), ("gear_b", self.gear_b)):
             if gear.pitch_radius is None and gear.teeth is None:
-                raise SpecFieldError(label, f"give {label}.pitch_radius, or {label}.teeth "
-                                     "with module")
+                return SpecFieldError(label, f"give {label}.pitch_radius, or {label}.teeth "
+                                      "with module")
             if gear.pitch_radius is None and self.module is None:
-                raise SpecFieldError("module", f"{label}.teeth without a pitch radius needs "
-                                     "the module, e.g. module: 2 mm")
+                return SpecFieldError("module", f"{label}.teeth without a pitch radius needs "
+                                      "the module, e.g. module: 2 mm", at=label)
             if gear.pitch_radius is not None and gear.teeth is not None and self.module:
                 from_teeth = self.module * gear.teeth / 2.0
                 if not math.isclose(gear.pitch_radius, from_teeth, rel_tol=1e-9):
-                    raise SpecFieldError(
+                    return SpecFieldError(
                         f"{label}.pitch_radius",
                         f"disagrees with module × teeth / 2 = {from_teeth * 1e3:g} mm; "
                         "give one or make them agree")
@@ -113,32 +114,48 @@ class BevelPair(SpecModel):
                 and not math.isclose(a.pitch_radius * b.teeth, b.pitch_radius * a.teeth,
                                      rel_tol=1e-9)):
             # Meshing gears share a module, so their pitch radii are in the ratio of teeth.
-            raise SpecFieldError(
+            return SpecFieldError(
                 "gear_b.teeth", f"the teeth ({a.teeth}/{b.teeth}) disagree with the pitch radii "
                 f"({a.pitch_radius * 1e3:g} mm/{b.pitch_radius * 1e3:g} mm): meshing gears "
                 "have pitch radii in the ratio of their teeth; leave the teeth or the radii "
                 "out, or make them agree")
+        return None
+
+    @rule
+    def _sizing_is_determined(self) -> SpecFieldError | None:
         sizing = [name for name in ("face_width", "torque", "power", "rating")
                   if getattr(self, name) is not None]
         if sizing and (self.module is None or self.gear_a.teeth is None
                        or self.gear_b.teeth is None):
-            raise SpecFieldError(sizing[0], "sizing needs the teeth of both gears and the "
-                                 "(outer) module, not pitch radii alone")
+            return SpecFieldError(sizing[0], "sizing needs the teeth of both gears and the "
+                                  "(outer) module, not pitch radii alone")
         if sizing and self.face_width is None:
-            raise SpecFieldError(sizing[0], "sizing needs face_width, like 28 mm")
+            return SpecFieldError(sizing[0], "sizing needs face_width, like 28 mm")
+        return None
+
+    @rule
+    def _one_load(self) -> SpecFieldError | None:
         if self.torque is not None and self.power is not None:
-            raise SpecFieldError("power", "give torque or power on gear A, not both")
+            return SpecFieldError("power", "give torque or power on gear A, not both")
         if self.rating is not None and self.torque is None and self.power is None:
-            raise SpecFieldError("rating", "the strength rating needs a load: give torque "
-                                 "(like 150 N*m) or power (like 9.4 kW) on gear A")
+            return SpecFieldError("rating", "the strength rating needs a load: give torque "
+                                  "(like 150 N*m) or power (like 9.4 kW) on gear A")
+        return None
+
+    @rule
+    def _pressure_angle(self) -> SpecFieldError | None:
         if not 0 < self.pressure_angle < math.radians(45):
-            raise SpecFieldError("pressure_angle", "must be between 0 deg and 45 deg, like "
-                                 "20 deg")
+            return SpecFieldError("pressure_angle", "must be between 0 deg and 45 deg, like "
+                                  "20 deg")
+        return None
+
+    @rule
+    def _axes_placed(self) -> SpecFieldError | None:
         if self.shaft_angle is None and (self.gear_a.pitch_angle is None
                                          or self.gear_b.pitch_angle is None):
-            raise SpecFieldError("shaft_angle", "missing: give shaft_angle (90 deg for the "
-                                 "usual right-angle pair), or both pitch angles")
-        return self
+            return SpecFieldError("shaft_angle", "missing: give shaft_angle (90 deg for the "
+                                  "usual right-angle pair), or both pitch angles")
+        return None
 
     def pair_inputs(self, arm_speed: Any, gear_b_speed: Any, limits: BevelGearsLimits
                     ) -> dict[str, Any]:

@@ -20,10 +20,13 @@ from pydantic import (
     ConfigDict,
     Field,
     PlainValidator,
+    ValidationInfo,
     WithJsonSchema,
+    model_validator,
 )
 from pydantic.fields import FieldInfo
 
+from bearingcalc.spec.rules import problems_of
 from bearingcalc.units import (
     ANGLE,
     ANGULAR_ACCEL,
@@ -51,10 +54,25 @@ QUANTITY_PATTERN = (r"^\s*[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?\s*"
 
 
 class SpecModel(BaseModel):
-    """Base of spec models: unknown keys and non-finite numbers are refused."""
+    """Base of spec models: unknown keys and non-finite numbers are refused.
+
+    A spec (a model with a ``kind``) checks its cross-field rules, and those of every
+    model it holds, once its fields are valid; it raises the first problem with the
+    others in its ``more``. Validating with ``context={"rules": False}`` skips them.
+    """
 
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False, frozen=True,
                               validate_default=False)
+
+    @model_validator(mode="after")
+    def _cross_field_rules(self, info: ValidationInfo) -> SpecModel:
+        if "kind" not in type(self).model_fields or (info.context or {}).get("rules") is False:
+            return self
+        problems = problems_of(self)
+        if problems:
+            problems[0].more = problems[1:]
+            raise problems[0]
+        return self
 
 
 DISTRIBUTIONS = ("normal", "uniform", "triangular")
@@ -121,25 +139,74 @@ _PLUS_MINUS = re.compile(r"\s*(?:±|\+/-|\+-)\s*")
 _MAPPING_KEYS = {"nominal", "tolerance", "plus", "minus", "distribution", "sigma_level"}
 
 
+@dataclass(frozen=True)
+class Plausible:
+    """The magnitudes a quantity field takes in real machines. Far outside them a unit
+    slip (MPa typed for GPa, m for mm) is likelier than a design, so the value is
+    refused with the unit that would bring it in range."""
+
+    low: float                 # smallest magnitude other than zero [SI]
+    high: float                # largest magnitude [SI]
+    shown: str                 # the range in engineering units, for the message
+    suggest: tuple[str, ...]   # units to try on the written number, in order
+
+    def check(self, si: float, written: Any, dimension: Dimension) -> None:
+        if si == 0 or self.low <= abs(si) <= self.high:
+            return
+        text = str(written).strip()
+        message = f"{text} is outside the range of real machine elements ({self.shown})"
+        match = _NUMBER_AND_UNIT.match(text)
+        for unit in self.suggest if match else ():
+            if unit == match["unit"]:
+                continue
+            guess = f"{match['number']} {unit}"
+            if self.low <= abs(parse_quantity(guess, dimension)) <= self.high:
+                raise ValueError(f"{message}: did you mean {guess}?")
+        raise ValueError(message)
+
+
+_NUMBER_AND_UNIT = re.compile(r"(?P<number>[-+]?[0-9.]+(?:[eE][-+]?[0-9]+)?)\s*(?P<unit>.+)")
+
+#: Real lengths of machine elements: above a micrometre (a surface's roughness) and
+#: below 100 m. Positions may be zero, so they have no lower end.
+PLAUSIBLE_LENGTH = Plausible(1e-6, 100.0, "1 µm to 100 m", ("mm", "m", "µm"))
+PLAUSIBLE_POSITION = Plausible(0.0, 100.0, "up to 100 m", ("mm", "m"))
+#: Loads up to 10⁹ N (10⁶ kN, the largest slewing bearings carry a few 10⁷ N).
+PLAUSIBLE_FORCE = Plausible(0.0, 1e9, "up to 10⁶ kN", ("N", "kN"))
+#: Speeds up to 10⁶ rpm (turbomachinery and dental drills stay well below).
+PLAUSIBLE_SPEED = Plausible(0.0, 1e6 * math.pi / 30.0, "up to 10⁶ rpm", ("rpm",))
+#: Kinematic viscosities up to 10⁶ mm²/s (heavy gear oils are near 10⁴ mm²/s cold).
+PLAUSIBLE_VISCOSITY = Plausible(0.0, 1.0, "up to 10⁶ mm²/s", ("mm^2/s",))
+#: Young's moduli of engineering solids, from polymers (~1 GPa) to diamond (~1000 GPa).
+PLAUSIBLE_MODULUS = Plausible(1e9, 1e12, "1 GPa to 1000 GPa", ("GPa", "MPa"))
+
+
 class _Quantity:
-    """Validator turning a quantity (with an optional tolerance) into SI, with a sign check."""
+    """Validator turning a quantity (with an optional tolerance) into SI, with a sign check
+    and, where given, a check of its plausible magnitude."""
 
     def __init__(self, dimension: Dimension, sign: str | None,
-                 bounds: tuple[float, float] | None = None) -> None:
+                 bounds: tuple[float, float] | None = None,
+                 plausible: Plausible | None = None) -> None:
         self.dimension = dimension
         self.sign = sign
         self.bounds = bounds  # open interval every value of the band must lie in
+        self.plausible = plausible
 
     def __call__(self, value: Any) -> float:
         if isinstance(value, dict):
             tolerance = self._mapping(value)
+            written = value["nominal"]
         elif isinstance(value, str) and _PLUS_MINUS.search(value):
             tolerance = self._plus_minus(value)
+            written = _PLUS_MINUS.split(value, maxsplit=1)[0]
         else:
             nominal = parse_quantity(value, self.dimension)
             self._check_sign(nominal, f"'{value}'")
+            self._check_plausible(nominal, value)
             return nominal
         self._check_sign(tolerance.nominal, "the nominal value")
+        self._check_plausible(tolerance.nominal, written)
         unit = "" if self.dimension.si_unit == "1" else f" {self.dimension.si_unit}"
         self._check_sign(tolerance.low, f"the band's low end ({tolerance.low:g}{unit})")
         self._check_sign(tolerance.high, f"the band's high end ({tolerance.high:g}{unit})")
@@ -153,6 +220,10 @@ class _Quantity:
             raise ValueError(f"must be greater than zero, got {what}")
         if self.sign == "non-negative" and not si >= 0:
             raise ValueError(f"must not be negative, got {what}")
+
+    def _check_plausible(self, si: float, written: Any) -> None:
+        if self.plausible is not None:
+            self.plausible.check(si, written, self.dimension)
 
     def _plus_minus(self, text: str) -> Tolerance:
         nominal_text, tolerance_text = _PLUS_MINUS.split(text, maxsplit=1)
@@ -213,10 +284,12 @@ def _has_unit(text: str) -> bool:
 
 
 def quantity(dimension: Dimension, sign: str | None = None,
-             bounds: tuple[float, float] | None = None) -> Any:
+             bounds: tuple[float, float] | None = None,
+             plausible: Plausible | None = None) -> Any:
     """Annotated float type of a quantity field of ``dimension``.
 
-    ``sign`` is None (any finite value), "positive" or "non-negative". The value
+    ``sign`` is None (any finite value), "positive" or "non-negative"; ``plausible``
+    refuses magnitudes no machine element has (see :class:`Plausible`). The value
     may carry a tolerance (``"12.7 mm ± 0.005 mm"`` or a mapping, see
     :class:`Tolerance`), and then arrives as a :class:`Measured`.
     """
@@ -251,7 +324,7 @@ def quantity(dimension: Dimension, sign: str | None = None,
         schema["anyOf"].insert(0, number)
         for key in ("nominal", "tolerance", "plus", "minus"):
             mapping_form["properties"][key] = {"anyOf": [{"type": "number"}, text_schema]}
-    return Annotated[float, PlainValidator(_Quantity(dimension, sign, bounds),
+    return Annotated[float, PlainValidator(_Quantity(dimension, sign, bounds, plausible),
                                            json_schema_input_type=str),
                      WithJsonSchema(schema)]
 
@@ -300,16 +373,17 @@ def _plain_number(value: Any) -> float:
     return number
 
 
-Length = quantity(LENGTH)
-PositiveLength = quantity(LENGTH, "positive")
+Length = quantity(LENGTH, plausible=PLAUSIBLE_POSITION)
+PositiveLength = quantity(LENGTH, "positive", plausible=PLAUSIBLE_LENGTH)
 Angle = quantity(ANGLE)
-AngularSpeed = quantity(ANGULAR_SPEED)
+AngularSpeed = quantity(ANGULAR_SPEED, plausible=PLAUSIBLE_SPEED)
 AngularAccel = quantity(ANGULAR_ACCEL)
-Force = quantity(FORCE, "non-negative")
-PositiveForce = quantity(FORCE, "positive")
+Force = quantity(FORCE, "non-negative", plausible=PLAUSIBLE_FORCE)
+PositiveForce = quantity(FORCE, "positive", plausible=PLAUSIBLE_FORCE)
 PositiveStress = quantity(STRESS, "positive")
+ElasticModulus = quantity(STRESS, "positive", plausible=PLAUSIBLE_MODULUS)
 PositiveTime = quantity(TIME, "positive")
-PositiveViscosity = quantity(KINEMATIC_VISCOSITY, "positive")
+PositiveViscosity = quantity(KINEMATIC_VISCOSITY, "positive", plausible=PLAUSIBLE_VISCOSITY)
 Temperature = quantity(TEMPERATURE, "positive")
 PositiveDensity = quantity(DENSITY, "positive")
 PositivePower = quantity(POWER, "positive")
@@ -410,7 +484,7 @@ STEEL_MODULUS, STEEL_POISSON, STEEL_DENSITY = 207.5e9, 0.3, 7850.0
 class ElasticMaterial(SpecModel):
     """The elastic constants of ball and races (the same material for both)."""
 
-    elastic_modulus: PositiveStress = Field(STEEL_MODULUS, description="Young's modulus E")
+    elastic_modulus: ElasticModulus = Field(STEEL_MODULUS, description="Young's modulus E")
     poisson_ratio: PoissonRatio = Field(STEEL_POISSON, description="Poisson's ratio ν")
 
 

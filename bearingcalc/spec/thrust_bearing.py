@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any, Literal
 
-from pydantic import Field, model_validator
+from pydantic import Field
 
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.spec.fields import (
@@ -18,6 +18,7 @@ from bearingcalc.spec.fields import (
     Ratio,
     SpecModel,
 )
+from bearingcalc.spec.rules import rule
 
 _GEOMETRY = ("ball size", "contact_angle", "pitch_radius")
 
@@ -48,23 +49,31 @@ class ThrustBearingSpec(SpecModel):
     material: BallMaterial = BallMaterial()
     limits: ThrustBearingLimits = ThrustBearingLimits()
 
-    @model_validator(mode="after")
-    def _one_unknown_at_most(self) -> ThrustBearingSpec:
+    @rule
+    def _one_ball_size(self) -> SpecFieldError | None:
         if self.ball_diameter is not None and self.ball_radius is not None:
-            raise SpecFieldError("ball_radius", "give ball_diameter or ball_radius, not both")
+            return SpecFieldError("ball_radius", "give ball_diameter or ball_radius, not both")
+        return None
+
+    @rule
+    def _one_unknown_at_most(self) -> SpecFieldError | None:
         given = (self.ball_size is not None, self.contact_angle is not None,
                  self.pitch_radius is not None)
         if given.count(False) > 1:
             missing = " and ".join(n for n, g in zip(_GEOMETRY, given, strict=True) if not g)
-            raise SpecFieldError(
+            return SpecFieldError(
                 "contact_angle" if not given[1] else "pitch_radius",
                 f"{missing} are all missing; give at least two of ball_diameter (or "
                 "ball_radius), contact_angle and pitch_radius (the third is solved for pure "
                 "rolling)")
+        return None
+
+    @rule
+    def _load_shared(self) -> SpecFieldError | None:
         if self.axial_load is not None and self.ball_count is None:
-            raise SpecFieldError("axial_load", "the axial load is shared by the balls: give "
-                                 "ball_count too")
-        return self
+            return SpecFieldError("axial_load", "the axial load is shared by the balls: give "
+                                  "ball_count too")
+        return None
 
     @property
     def ball_size(self) -> float | None:

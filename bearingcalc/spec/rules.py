@@ -1,0 +1,127 @@
+"""Cross-field rules of spec models, collected so that one run reports them all.
+
+A rule is a method of a spec model marked with :func:`rule`. It reads the model's
+fields and returns the problem it finds (a :class:`SpecFieldError` naming the field
+at fault, relative to the model), a list of them, or None. Rules are independent of each other, so
+every problem of a spec is found at once, not one per run.
+
+When some fields of a spec are invalid, the rules that read none of them still run
+(:func:`problems_despite`): their problems are reported beside the field errors.
+"""
+
+from __future__ import annotations
+
+import functools
+import inspect
+import types
+from collections.abc import Callable, Collection, Iterator
+from typing import Any
+
+from pydantic import BaseModel
+
+from bearingcalc.errors import SpecFieldError
+
+#: A rule returns the problem it finds, a list of them, or None.
+Rule = Callable[[Any], "SpecFieldError | list[SpecFieldError] | None"]
+_RULE_MARK = "_is_spec_rule"
+
+
+def rule(method: Rule) -> Rule:
+    """Mark a model method as a cross-field rule (run in definition order)."""
+    setattr(method, _RULE_MARK, True)
+    return method
+
+
+@functools.cache
+def rules_of(model: type[BaseModel]) -> tuple[Rule, ...]:
+    """The rules of a model class, its bases' first, each once."""
+    found: dict[str, Rule] = {}
+    for klass in reversed(model.__mro__):
+        for name, attribute in vars(klass).items():
+            if getattr(attribute, _RULE_MARK, False):
+                found.pop(name, None)
+                found[name] = attribute
+    return tuple(found.values())
+
+
+def problems_of(model: BaseModel) -> list[SpecFieldError]:
+    """Every problem the rules find in ``model`` and the models it holds (field names
+    relative to ``model``; list items numbered from 1), nested models first."""
+    return list(_problems(model, frozenset()))
+
+
+def problems_despite(model: BaseModel, invalid: Collection[str]) -> list[SpecFieldError]:
+    """The problems of the rules that read none of the ``invalid`` top-level fields of
+    ``model`` (whose values there are stand-ins, not what the spec says)."""
+    return list(_problems(model, frozenset(invalid)))
+
+
+def _problems(model: BaseModel, invalid: frozenset[str]) -> Iterator[SpecFieldError]:
+    for name, value in _held_models(model):
+        if name.split(".", 1)[0] in invalid:
+            continue
+        for problem in _problems(value, frozenset()):
+            yield _within(name, problem)
+    for check in rules_of(type(model)):
+        if not invalid:
+            problem = check(model)
+        else:
+            reads: set[str] = set()
+            try:
+                problem = check(_ReadRecorder(model, reads))
+            except (TypeError, ValueError, AttributeError, ArithmeticError):
+                continue  # a stand-in value the rule cannot use: its fields are invalid
+            if reads & invalid:
+                continue
+        yield from _as_list(problem)
+
+
+def _held_models(model: BaseModel) -> Iterator[tuple[str, BaseModel]]:
+    """(dotted name, model) of every spec model a field of ``model`` holds."""
+    for name in type(model).model_fields:
+        value = getattr(model, name)
+        if isinstance(value, BaseModel):
+            yield name, value
+        elif isinstance(value, list):
+            for index, item in enumerate(value, 1):
+                if isinstance(item, BaseModel):
+                    yield f"{name}.{index}", item
+
+
+def own_problems(model: BaseModel) -> list[SpecFieldError]:
+    """The problems of ``model``'s own rules, without those of the models it holds."""
+    return [problem for check in rules_of(type(model)) for problem in _as_list(check(model))]
+
+
+def _as_list(found: SpecFieldError | list[SpecFieldError] | None) -> list[SpecFieldError]:
+    return [] if found is None else found if isinstance(found, list) else [found]
+
+
+def _within(prefix: str, problem: SpecFieldError) -> SpecFieldError:
+    def joined(name: str | None) -> str | None:
+        return None if name is None else f"{prefix}.{name}" if name else prefix
+
+    return SpecFieldError(joined(problem.field) or prefix, problem.message,
+                          at=joined(problem.at))
+
+
+class _ReadRecorder:
+    """Stands for a model while a rule runs, and records which of its fields the rule
+    reads. Properties and methods of the model run with the recorder as ``self``, so
+    what they read is recorded too."""
+
+    def __init__(self, model: BaseModel, reads: set[str]) -> None:
+        object.__setattr__(self, "_model", model)
+        object.__setattr__(self, "_reads", reads)
+
+    def __getattr__(self, name: str) -> Any:
+        model = self._model
+        if name in type(model).model_fields:
+            self._reads.add(name)
+            return getattr(model, name)
+        attribute = inspect.getattr_static(type(model), name, None)
+        if isinstance(attribute, property) and attribute.fget is not None:
+            return attribute.fget(self)
+        if inspect.isfunction(attribute):
+            return types.MethodType(attribute, self)
+        return getattr(model, name)
