@@ -52,6 +52,15 @@ class Kind:
         return getattr(importlib.import_module(module), name)  # type: ignore[no-any-return]
 
     @property
+    def limit_fields(self) -> list[str]:
+        """The fields of the spec's ``limits`` block, which set the margins (or none)."""
+        from bearingcalc.spec.fields import nested_model
+
+        limits = self.model.model_fields.get("limits")
+        held = nested_model(limits) if limits is not None else None
+        return list(held.model_fields) if held is not None else []
+
+    @property
     def solver(self) -> ModuleType:
         """The kind's solver module (``RESULTS``, ``STATUS_REASONS``, ``evaluate``)."""
         return importlib.import_module(self.solver_path)

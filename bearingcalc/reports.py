@@ -20,6 +20,7 @@ from bearingcalc.wording import plural, printable
 if TYPE_CHECKING:  # the report types only; their modules load with their commands
     from bearingcalc.batch import CheckRecord
     from bearingcalc.evaluation import Evaluation
+    from bearingcalc.kinds import Kind
     from bearingcalc.sweep import Sweep
     from bearingcalc.tolerance import StudyReport
 
@@ -130,7 +131,7 @@ def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
         for heading, (rows, columns) in kind.matrices.items():
             _print_matrix(out, evaluation, heading, rows, columns)
         if not evaluation.margins:
-            out.print("[bold green]PASS[/]: no limits apply to this kind")
+            out.print(f"[bold green]PASS[/]: {_text(_no_margins(kind))}")
         elif evaluation.within_limits:
             out.print("[bold green]PASS[/]: within limits")
         else:
@@ -138,6 +139,15 @@ def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
         for warning in evaluation.warnings:
             out.print(f"[yellow]warning[/]: {_text(warning)}")
         out.print()
+
+
+def _no_margins(kind: Kind) -> str:
+    """Why a design with no margins passes: its kind has no limits, or none were given."""
+    fields = kind.limit_fields
+    if not fields:
+        return "this kind has no limits"
+    named = ", ".join(f"limits.{name}" for name in fields[:-1]) + f" or limits.{fields[-1]}"
+    return f"no limits judged: none given that applies to this design; the spec can set {named}"
 
 
 def _print_matrix(out: Any, evaluation: Evaluation, heading: str, rows: Sequence[str],
@@ -243,7 +253,7 @@ def print_check_table(records: Sequence[CheckRecord], *, show_all: bool,
             if record.status == "invalid":
                 detail = _first(record.messages)
             elif governing is None:
-                detail = "no limits apply"
+                detail = "no limits judged"
             else:
                 detail = f"{governing[0]} = {format_number(governing[1])}"
             table.add_row(f"[{colours[record.status]}]{record.status.upper()}[/]",

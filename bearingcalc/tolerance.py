@@ -186,8 +186,7 @@ class Study:
         """
         low, width = self.box()
         unit = self.search_points()
-        results, status = self.evaluate(low + unit * width)
-        self.box_impossible = self._impossible_part(unit, status, low, width)
+        results, _ = self.scan_box(unit)
         rises = self._differences(unit, low, width)
         searches: list[_ExtremeSearch] = []
         starts: list[NDArray] = []
@@ -223,6 +222,15 @@ class Study:
                 item.name: float(low[i] + search.point[i] * width[i])
                 for i, item in enumerate(self.inputs)}
         return out
+
+    def scan_box(self, unit: NDArray | None = None) -> tuple[dict[str, NDArray], NDArray]:
+        """Results and status at the box's ``search_points`` (or ``unit``); records in
+        ``box_impossible`` how much of the box is impossible designs."""
+        low, width = self.box()
+        unit = self.search_points() if unit is None else unit
+        results, status = self.evaluate(low + unit * width)
+        self.box_impossible = self._impossible_part(unit, status, low, width)
+        return results, status
 
     def box(self) -> tuple[NDArray, NDArray]:
         """(low, width) of the tolerance box, input by input. [SI]"""
@@ -373,7 +381,11 @@ class Study:
         results, _ = self.evaluate(points)
         out: dict[str, dict[str, Any]] = {}
         for key in self.keys:
-            values = results[key]
+            values = np.asarray(results[key])
+            if not np.isfinite(values).all():
+                # A result unbounded or impossible near the centre has no first-order spread.
+                out[key] = {"mean": None, "std": None, "contributions": {}}
+                continue
             derivatives = np.zeros(d)
             for i in range(d):
                 if step[i] == 0:
@@ -907,15 +919,21 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
     if "worst-case" in methods:
         for key, entry in study.worst_case().items():
             record["results"][key]["worst_case"] = entry
-        if study.box_impossible is not None:
-            box = study.box_impossible
-            record["impossible_in_box"] = box
-            at = ", ".join("{} = {:.6g} {}".format(name, *to_display(value, record["units"][name]))
-                           for name, value in box["inputs"].items())
-            record["warnings"].append(
-                f"{100 * box['fraction']:.3g} % of the worst-case search of the tolerance box "
-                f"are impossible designs, e.g. at {at} ({box['reason']}); worst case covers "
-                "only the possible part, and the study fails")
+    else:
+        # Every method must know when the box crosses a validity edge, not only the
+        # worst case: RSS at the centre and a lucky sample would otherwise pass it.
+        study.scan_box()
+    if study.box_impossible is not None:
+        box = study.box_impossible
+        record["impossible_in_box"] = box
+        at = ", ".join("{} = {:.6g} {}".format(name, *to_display(value, record["units"][name]))
+                       for name, value in box["inputs"].items())
+        covers = ("worst case covers only the possible part, and " if "worst-case" in methods
+                  else "")
+        record["warnings"].append(
+            f"{100 * box['fraction']:.3g} % of the worst-case search of the tolerance box "
+            f"are impossible designs, e.g. at {at} ({box['reason']}); {covers}the study "
+            "fails")
     if "rss" in methods:
         for key, entry in study.rss().items():
             record["results"][key]["rss"] = entry

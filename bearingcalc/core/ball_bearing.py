@@ -164,6 +164,10 @@ WARNINGS: dict[str, str] = {
 }
 
 FEASIBLE = 0
+_CONTACT_TOO_LARGE = ("the most heavily loaded ball's contact ellipse is not small against "
+                      "the ball (its semi-major axis exceeds Dw/2), so Hertz theory does not "
+                      "hold: lower the load, or check the groove conformities (near 0.5 the "
+                      "ellipse grows long)")
 STATUS_REASONS: dict[int, tuple[str, str]] = {
     1: ("ball_diameter", "the ball must be smaller than the pitch diameter (Dw < Dpw)"),
     2: ("ball_count", "the balls do not fit on the pitch circle: Z·asin(Dw/Dpw) must be "
@@ -181,6 +185,15 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
                        "viscosity_40 and viscosity_100 (ν40 must exceed ν100)"),
     10: ("inner_groove_conformity", "must exceed 0.5: the ball would not fit its groove"),
     11: ("outer_groove_conformity", "must exceed 0.5: the ball would not fit its groove"),
+    12: ("load_factors.y", "the equivalent load P = X·Fr + Y·Fa is zero: the load factors "
+                           "leave out the load the bearing carries; give the catalogue's X "
+                           "and Y, above 0"),
+    13: ("lubrication.temperature", "Walther's viscosity–temperature relation (ASTM D341) "
+                                    "gives a viscosity above 10⁶ mm²/s here, a solid far "
+                                    "below the oil's pour point: give a warmer operating "
+                                    "temperature, or the viscosity itself"),
+    14: ("radial_load", _CONTACT_TOO_LARGE),
+    15: ("axial_load", _CONTACT_TOO_LARGE),
 }
 
 
@@ -447,6 +460,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
         with np.errstate(divide="ignore", invalid="ignore"):
             combined = (fa > 0) & ~(fa / fr <= e)
         p = np.where(combined, x * fr + y * fa, fr)
+        bad_checks.append((12, ~(p > 0) & ((fr > 0) | (fa > 0))))
         if not np.isnan(np.asarray(e)).all():
             out["radial_factor"] = np.where(combined, x, 1.0)
             out["axial_factor"] = np.where(combined, y, 0.0)
@@ -467,6 +481,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
                                    inputs["temperature"])
             bad_checks.append((9, ~(np.asarray(inputs["viscosity_40"], dtype=float)
                                     > np.asarray(inputs["viscosity_100"], dtype=float))))
+            bad_checks.append((13, ~(nu <= MAX_OPERATING_VISCOSITY)))
         nu = np.asarray(nu, dtype=float)
         nu1 = reference_viscosity(speed, mean_diameter)
         kappa_raw = nu / nu1
@@ -529,9 +544,13 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
         fi = np.asarray(inputs["inner_groove_conformity"], dtype=float)
         fo = np.asarray(inputs["outer_groove_conformity"], dtype=float)
         bad_checks += [(10, ~(fi > 0.5)), (11, ~(fo > 0.5))]
-        out.update(ball_contacts(z, dw, dpw, alpha, thrust, p0, fi, fo,
+        contacts = ball_contacts(z, dw, dpw, alpha, thrust, p0, fi, fo,
                                  inputs["elastic_modulus"], inputs["poisson_ratio"],
-                                 inputs["max_contact_pressure"]))
+                                 inputs["max_contact_pressure"])
+        out.update(contacts)
+        largest = np.maximum(contacts["inner_contact_semi_major"],
+                             contacts["outer_contact_semi_major"])
+        bad_checks.append((15 if thrust else 14, ~(largest <= np.asarray(dw) / 2.0)))
 
     shape = np.broadcast_shapes(*(np.shape(v) for v in (*out.values(), *flags.values())))
     status = first_failure(bad_checks, shape)

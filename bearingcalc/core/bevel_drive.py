@@ -64,17 +64,27 @@ WARNINGS: dict[str, str] = {
        for name in _bearing_names()},
 }
 
-#: Status codes: the pair's (1-8), then each bearing's code from ball_bearing at an offset.
-BEARING_CODE_OFFSETS = {name: 30 + 15 * i for i, name in enumerate(_bearing_names())}
-_TOP_LEVEL = {"lubrication": "lubrication", "speed": "input_speed", "radial_load": "torque"}
+#: Status codes: the pair's (1-8), the shafts' own, then each bearing's code from
+#: ball_bearing at an offset.
+COINCIDING_BEARINGS = {"pinion": 20, "gear": 21}
+_BEARING_CODES = max(ball_bearing.STATUS_REASONS) + 1
+BEARING_CODE_OFFSETS = {name: 30 + _BEARING_CODES * i for i, name in enumerate(_bearing_names())}
+#: A bearing's fields that the drive sets from its own: the drive's field is at fault.
+_DRIVE_FIELDS = {"lubrication": "lubrication", "speed": "input_speed", "radial_load": "torque",
+                 "axial_load": "torque"}
 
 
 def _status_reasons() -> dict[int, tuple[str, str]]:
     reasons = dict(bevel_gears.STATUS_REASONS)
+    for shaft, code in COINCIDING_BEARINGS.items():
+        reasons[code] = (f"{shaft}_bearings.2.position", "two bearings at the same position "
+                         "cannot carry the shaft's moment")
     for name, offset in BEARING_CODE_OFFSETS.items():
         shaft, _, index = name.rpartition("_bearing_")
         for code, (field, why) in ball_bearing.STATUS_REASONS.items():
-            where = _TOP_LEVEL.get(field, f"{shaft}_bearings.{index}.{field}")
+            root = field.split(".", 1)[0]
+            where = (field if root == "lubrication" else _DRIVE_FIELDS[root]
+                     ) if root in _DRIVE_FIELDS else f"{shaft}_bearings.{index}.{field}"
             reasons[offset + code] = (where, why)
     return reasons
 
@@ -147,8 +157,11 @@ def evaluate(inputs: Mapping[str, Any],
             continue
         radial_force = pair[f"gear_{gear}_radial_force"]
         axial_force = pair[f"gear_{gear}_axial_force"]
+        positions = (inputs[f"{shaft}_bearing_1.position"], inputs[f"{shaft}_bearing_2.position"])
+        coinciding = np.asarray(positions[0]) == np.asarray(positions[1])
+        checks.append((0, np.where(coinciding, np.int8(COINCIDING_BEARINGS[shaft]), np.int8(0))))
         loads = shaft_reactions(
-            (inputs[f"{shaft}_bearing_1.position"], inputs[f"{shaft}_bearing_2.position"]),
+            positions,
             mean_cone * np.cos(delta), mean_cone * np.sin(delta), pair["tangential_force"],
             radial_force, axial_force)
         for i, radial in enumerate(loads, 1):

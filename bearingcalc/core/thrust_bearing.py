@@ -68,7 +68,12 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
     4: ("pitch_radius", "the shaft contact radius d = b − r·cosθ must be positive"),
     5: ("ball_count", "the balls do not fit on the pitch circle: Z·asin(r/b) must be <= π"),
     6: ("pitch_radius", "a pure-rolling contact angle exists only for b > r"),
+    7: ("axial_load", "a ball's contact ellipse is not small against the ball (its "
+                      "semi-major axis exceeds the ball radius), so Hertz theory does not hold: "
+                      "lower the axial load, or use more or larger balls"),
 }
+#: The status of a design whose contact ellipse is too large for Hertz theory.
+CONTACT_TOO_LARGE = 7
 
 
 def pure_rolling_pitch_radius(ball_radius: ArrayLike, contact_angle: ArrayLike) -> NDArray:
@@ -466,6 +471,9 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
             r, theta, b, results["cage_speed"], inputs["ball_count"], inputs["axial_load"],
             inputs["elastic_modulus"], inputs["poisson_ratio"], inputs["density"],
             inputs["max_contact_pressure"]))
+        largest = results.pop("_largest_semi_major")
+        status = np.where((status == FEASIBLE) & ~(largest <= r), np.int8(CONTACT_TOO_LARGE),
+                          status)
         results = broadcast_all(results)
     return results, status
 
@@ -524,6 +532,9 @@ def ball_contact_loads(ball_radius: ArrayLike, contact_angle: ArrayLike,
         "race_axial_contact_pressure": floor["max_pressure"],
         "max_contact_pressure": peak,
         "contact_pressure_margin": 1.0 - peak / np.asarray(max_contact_pressure),
+        # Not a result: evaluate() judges Hertz theory's validity by it.
+        "_largest_semi_major": np.maximum(np.maximum(shaft["semi_major"], wall["semi_major"]),
+                                          floor["semi_major"]),
     }
 
 
