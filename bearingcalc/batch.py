@@ -11,9 +11,7 @@ import fnmatch
 import glob
 import os
 from collections.abc import Callable, Iterable, Sequence
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
-from multiprocessing import get_all_start_methods, get_context
 from pathlib import Path
 
 from bearingcalc.errors import SpecError
@@ -95,10 +93,29 @@ def _document_path(raw: str) -> Path | None:
     return Path(head) if sep and head and index and Path(head).is_file() else None
 
 
+def spec_file(spec: str | Path) -> Path:
+    """The file a spec argument reads: ``file.yaml`` for ``file.yaml#N`` (unless a file
+    has that very name), else the argument itself, as ``evaluation.load_selected`` reads."""
+    head, sep, _ = str(spec).rpartition("#")
+    if sep and head and not Path(spec).exists() and Path(head).is_file():
+        return Path(head)
+    return spec if isinstance(spec, Path) else Path(spec)
+
+
+def files_read(entries: Iterable[Path | CheckRecord]) -> list[Path]:
+    """The files that checking ``entries`` (from ``discover``) reads."""
+    return [spec_file(entry) for entry in entries if isinstance(entry, Path)]
+
+
 def check_paths(paths: Sequence[str | Path], jobs: int = 1,
                 progress: Callable[[int], None] | None = None) -> list[CheckRecord]:
     """Records for everything ``paths`` name, in the order they name it."""
-    entries = discover(paths)
+    return check_entries(discover(paths), jobs, progress)
+
+
+def check_entries(entries: Sequence[Path | CheckRecord], jobs: int = 1,
+                  progress: Callable[[int], None] | None = None) -> list[CheckRecord]:
+    """Records for the entries ``discover`` found, in their order."""
     files = [entry for entry in entries if isinstance(entry, Path)]
     checked = iter(check_files(files, jobs, progress))
     records: list[CheckRecord] = []
@@ -177,6 +194,11 @@ def check_files(files: Sequence[Path], jobs: int = 1,
             if progress:
                 progress(len(chunk))
         return records
+    # Loaded here, not with the module: most runs (sweep, tolerance, small checks) start
+    # no pool and would pay for these imports at every start.
+    from concurrent.futures import ProcessPoolExecutor
+    from multiprocessing import get_all_start_methods, get_context
+
     chunk_size = max(50, min(500, len(files) // (jobs * 4)))
     # fork shares the loaded modules with the workers: no second start-up per worker.
     context = get_context("fork") if "fork" in get_all_start_methods() else None

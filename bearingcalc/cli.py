@@ -21,6 +21,7 @@ os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
 import typer
 
 from bearingcalc.errors import SpecError
+from bearingcalc.output import StagedFiles, Target, check_targets, reason
 from bearingcalc.wording import printable
 
 T = TypeVar("T")
@@ -44,18 +45,20 @@ class SolveFormat(str, Enum):
 
 
 DebugOption = Annotated[bool, typer.Option("--debug", help="Show tracebacks of internal errors.")]
+# Folders are refused by check_targets, in one line like every other unwritable target.
 OutputOption = Annotated[Path | None, typer.Option(
     "--output", "-o", help="Write to this file instead of stdout (atomically: a failed run "
-    "leaves an existing file as it was).", dir_okay=False)]
+    "leaves an existing file as it was; never one of the specs the run reads).")]
 PlotOption = Annotated[Path | None, typer.Option(
-    "--plot", help="Draw a chart to this .png or .svg file.", dir_okay=False)]
+    "--plot", help="Draw a chart to this .png or .svg file.")]
 
 
 def _print_version(value: bool) -> None:
     if value:
         from bearingcalc import __version__
 
-        print(f"bearingcalc {__version__}")
+        with _errors_as_exit(debug=False):
+            _write_stdout(lambda stream: stream.write(f"bearingcalc {__version__}\n"))
         raise typer.Exit(EXIT_OK)
 
 
@@ -113,7 +116,7 @@ def solve(
             else:
                 reports.print_tables(evaluations, KINDS, stream)
 
-        _emit(write, None)
+        _write_stdout(write)
         if invalid:
             raise typer.Exit(EXIT_INVALID)
         if not all(evaluation.within_limits for evaluation in evaluations):
@@ -150,7 +153,10 @@ def check(
         from bearingcalc import batch, reports
 
         workers = _workers(jobs)
-        records = _with_progress(lambda tick: batch.check_paths(paths, workers, tick))
+        entries = batch.discover(paths)
+        report = _output_target(output, "report", _CHECK_SUFFIXES[output_format])
+        _refuse_unwritable("check", batch.files_read(entries), report)
+        records = _with_progress(lambda tick: batch.check_entries(entries, workers, tick))
 
         def write(stream: TextIO) -> None:
             if output_format is CheckFormat.json:
@@ -160,7 +166,8 @@ def check(
             else:
                 reports.print_check_table(records, show_all=show_all, stream=stream)
 
-        _emit(write, output)
+        with StagedFiles() as files:
+            _emit(write, report, files)
         raise typer.Exit(batch.exit_status(records))
 
 
@@ -179,7 +186,9 @@ def schema(
         print(f"error: --kind: unknown kind {kind!r}; known kinds: {', '.join(KINDS)}",
               file=sys.stderr)
         raise typer.Exit(EXIT_INVALID)
-    print(json.dumps(spec_schema(kind), indent=2, ensure_ascii=False))
+    text = json.dumps(spec_schema(kind), indent=2, ensure_ascii=False) + "\n"
+    with _errors_as_exit(debug=False):
+        _write_stdout(lambda stream: stream.write(text))
 
 
 @app.command()
@@ -194,16 +203,17 @@ def new(
     from bearingcalc.kinds import KINDS
 
     if list_kinds or kind is None:
-        for name, entry in KINDS.items():
-            print(f"{name:16} {entry.summary}")
-        if kind is None and not list_kinds:
-            raise typer.Exit(EXIT_INVALID)
-        return
-    if kind not in KINDS:
+        text = "".join(f"{name:16} {entry.summary}\n" for name, entry in KINDS.items())
+    elif kind in KINDS:
+        text = resources.files("bearingcalc.templates").joinpath(f"{kind}.yaml").read_text(
+            "utf-8")
+    else:
         print(f"error: unknown kind {kind!r}; known kinds: {', '.join(KINDS)}", file=sys.stderr)
         raise typer.Exit(EXIT_INVALID)
-    print(resources.files("bearingcalc.templates").joinpath(f"{kind}.yaml").read_text("utf-8"),
-          end="")
+    with _errors_as_exit(debug=False):
+        _write_stdout(lambda stream: stream.write(text))
+    if kind is None and not list_kinds:
+        raise typer.Exit(EXIT_INVALID)
 
 
 class StudyFormat(str, Enum):
@@ -243,7 +253,7 @@ def tolerance(
     run); 1 they can be exceeded; 2 the spec or the options are invalid.
     """
     with _errors_as_exit(debug):
-        from bearingcalc import reports
+        from bearingcalc import batch, reports
         from bearingcalc.evaluation import evaluate_document, load_one_spec
         from bearingcalc.tolerance import StudyError, run_study
 
@@ -252,6 +262,10 @@ def tolerance(
         if plot is not None and "monte-carlo" not in methods:
             raise SpecError("--plot draws the Monte Carlo histogram: add monte-carlo to "
                             "--method", source=str(plot))
+        table_or_json = _output_target(
+            output, "report", ".json" if output_format is StudyFormat.json else ".txt")
+        histogram = _plot_target(plot)
+        _refuse_unwritable("tolerance", [batch.spec_file(spec_path)], table_or_json, histogram)
         kind, spec, document = load_one_spec(spec_path)
         evaluate_document(document)  # a nominal design that solve refuses is refused here too
         threads = _workers(jobs)
@@ -273,12 +287,13 @@ def tolerance(
             else:
                 reports.print_tolerance_table(report, stream)
 
-        if plot is not None and report.governing:
-            from bearingcalc.plots import tolerance_histogram
+        with StagedFiles() as files:
+            if histogram is not None and report.governing:
+                from bearingcalc.plots import tolerance_histogram
 
-            _save_plot(plot, lambda f, fmt: tolerance_histogram(report, report.governing[0], f,
-                                                                fmt=fmt))
-        _emit(write, output)
+                _stage_plot(files, histogram, lambda f, fmt: tolerance_histogram(
+                    report, report.governing[0], f, fmt=fmt))
+            _emit(write, table_or_json, files)
         raise typer.Exit(EXIT_LIMIT if report.within_limits is False else EXIT_OK)
 
 
@@ -311,11 +326,19 @@ def sweep(
 ) -> None:
     """Solve the spec over a line or grid of one or two inputs; impossible points are gaps."""
     with _errors_as_exit(debug):
-        from bearingcalc import reports
+        from bearingcalc import batch, reports
         from bearingcalc import sweep as sweeps
         from bearingcalc.evaluation import load_one_spec
 
         _check_plot_name(plot)
+        chosen = output_format or _format_for(output)
+        if chosen is SweepFormat.parquet:
+            _check_parquet(spec_path, output)
+        # Without --format, the suggested file is CSV, which holds every result.
+        suffix = _SWEEP_SUFFIXES.get(chosen, ".txt" if output_format else ".csv")
+        results_file = _output_target(output, "results", suffix)
+        chart = _plot_target(plot)
+        _refuse_unwritable("sweep", [batch.spec_file(spec_path)], results_file, chart)
         kind, spec, document = load_one_spec(spec_path)
         try:
             axes = [sweeps.parse_axis(text, spec) for text in vary]
@@ -328,7 +351,6 @@ def sweep(
         if unknown:
             raise SpecError(f"--result {unknown[0]!r} is not a result of this {kind.name} spec;"
                             f" choose from {', '.join(solved.results)}", source=document.source)
-        chosen = output_format or _format_for(output)
 
         def write(stream: TextIO) -> None:
             if chosen is SweepFormat.csv:
@@ -338,14 +360,16 @@ def sweep(
             else:
                 reports.print_sweep_table(solved, keys, stream)
 
-        if plot is not None:
-            from bearingcalc.plots import sweep_plot
+        with StagedFiles() as files:
+            if chart is not None:
+                from bearingcalc.plots import sweep_plot
 
-            _save_plot(plot, lambda f, fmt: sweep_plot(solved, keys, f, fmt=fmt))
-        if chosen is SweepFormat.parquet:
-            _write_parquet(solved, output, document.source)
-            return
-        _emit(write, output)
+                _stage_plot(files, chart, lambda f, fmt: sweep_plot(solved, keys, f, fmt=fmt))
+            if chosen is SweepFormat.parquet and results_file is not None:
+                files.add(results_file, lambda stream: reports.write_sweep_parquet(
+                    solved, stream), binary=True)  # type: ignore[arg-type]
+            else:
+                _emit(write, results_file, files)
 
 
 def _workers(jobs: int | None) -> int:
@@ -367,25 +391,17 @@ def _format_for(output: Path | None) -> SweepFormat:
             ".parquet": SweepFormat.parquet}.get(suffix, SweepFormat.table)
 
 
-def _write_parquet(solved: object, output: Path | None, source: str) -> None:
-    """The sweep as a Parquet file, atomically; pyarrow is the optional extra."""
+def _check_parquet(spec_path: Path, output: Path | None) -> None:
+    """Refuse Parquet output without a file to write or without pyarrow, the optional
+    extra that writes it."""
     if output is None:
         raise SpecError("--format parquet writes a file: give --output grid.parquet",
-                        source=source)
+                        source=str(spec_path))
     try:
         import pyarrow  # noqa: F401
     except ImportError:
         raise SpecError("Parquet output needs pyarrow, the optional extra: pip install "
                         "'bearingcalc[parquet]'", source=str(output)) from None
-    from bearingcalc import reports
-    from bearingcalc.output import atomic_write
-
-    try:
-        atomic_write(output, lambda stream: reports.write_sweep_parquet(solved, stream),  # type: ignore[arg-type]
-                     binary=True)
-    except OSError as exc:
-        raise SpecError(f"cannot write the report: {exc.strerror or exc}",
-                        source=str(output)) from None
 
 
 def _with_progress(work: Callable[[Callable[[int], None] | None], T], total: int | None = None,
@@ -418,41 +434,65 @@ def _check_plot_name(plot: Path | None) -> None:
         raise SpecError("--plot: give a .png or .svg file name", source=str(plot))
 
 
-def _save_plot(plot: Path, draw: Callable[[BinaryIO, str], None]) -> None:
-    """Draw a picture into ``plot`` atomically, in the format its suffix names."""
-    from bearingcalc.output import atomic_write
-
-    try:
-        atomic_write(plot, lambda stream: draw(stream, plot.suffix[1:].lower()), binary=True)
-    except OSError as exc:
-        raise SpecError(f"cannot write the plot: {exc.strerror or exc}",
-                        source=str(plot)) from None
+_CHECK_SUFFIXES = {CheckFormat.table: ".txt", CheckFormat.json: ".jsonl",
+                   CheckFormat.junit: ".xml"}
+_SWEEP_SUFFIXES = {SweepFormat.csv: ".csv", SweepFormat.json: ".jsonl",
+                   SweepFormat.parquet: ".parquet"}
 
 
-def _emit(write: Callable[[TextIO], None], output: Path | None) -> None:
-    """Write a report to ``output`` atomically, or to stdout."""
+def _output_target(output: Path | None, holds: str, suffix: str) -> Target | None:
+    return None if output is None else Target(output, "--output", holds, suffix)
+
+
+def _plot_target(plot: Path | None) -> Target | None:
+    return None if plot is None else Target(plot, "--plot", "plot", plot.suffix.lower())
+
+
+def _refuse_unwritable(command: str, inputs: list[Path], *targets: Target | None) -> None:
+    """Refuse, before any work, an output that cannot be written or would replace an input."""
+    check_targets([target for target in targets if target is not None], inputs, command)
+
+
+def _stage_plot(files: StagedFiles, plot: Target, draw: Callable[[BinaryIO, str], None]
+                ) -> None:
+    """Draw a picture into ``plot`` among ``files``, in the format its suffix names."""
+    files.add(plot, lambda stream: draw(stream, plot.path.suffix[1:].lower()), binary=True)
+
+
+class StdoutError(Exception):
+    """Standard output could not be written (a full disk, a failing device)."""
+
+
+def _emit(write: Callable[[TextIO], None], output: Target | None, files: StagedFiles) -> None:
+    """Write a report to ``output`` among ``files``, or to stdout."""
     if output is None:
-        try:
-            write(sys.stdout)
-            sys.stdout.flush()
-        except BrokenPipeError:
-            # The reader left (| head): stop writing, but keep the run's exit status,
-            # which says whether the specs passed.
-            _silence_stdout()
-        return
-    from bearingcalc.output import atomic_write
+        _write_stdout(write)
+    else:
+        files.add(output, write)
 
+
+def _write_stdout(write: Callable[[TextIO], None]) -> None:
+    """Write a report to stdout; a write error other than a closed pipe is the run's error."""
     try:
-        atomic_write(output, write)
-    except OSError as exc:
-        raise SpecError(f"cannot write the report: {exc.strerror or exc}",
-                        source=str(output)) from None
+        write(sys.stdout)
+        sys.stdout.flush()
+    except BrokenPipeError:
+        # The reader left (| head): stop writing, but keep the run's exit status,
+        # which says whether the specs passed.
+        _silence_stdout()
+    except OSError as error:
+        _silence_stdout()
+        raise StdoutError(reason(error)) from None
 
 
 def _silence_stdout() -> None:
     """Point stdout at /dev/null, so the flush at exit does not fail a second time."""
+    try:
+        stdout = sys.stdout.fileno()
+    except (OSError, ValueError):
+        return  # not a file descriptor (a captured stream): nothing is flushed to it at exit
     devnull = os.open(os.devnull, os.O_WRONLY)
-    os.dup2(devnull, sys.stdout.fileno())
+    os.dup2(devnull, stdout)
     os.close(devnull)
 
 
@@ -481,6 +521,9 @@ class _errors_as_exit:
         if isinstance(exc, BrokenPipeError):
             _silence_stdout()
             raise typer.Exit(EXIT_BROKEN_PIPE)
+        if isinstance(exc, StdoutError):
+            print(f"cannot write the output: {exc}", file=sys.stderr)
+            raise typer.Exit(EXIT_INVALID)
         if self.debug:
             traceback.print_exception(exc)
         if isinstance(exc, SpecError):

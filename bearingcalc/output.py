@@ -1,50 +1,221 @@
-"""Writing output files atomically, so a failed run never leaves half a report."""
+"""Output files: refused when they would replace a file the run reads, written all or none.
+
+``check_targets`` decides, before any work, whether each file a run will write can
+be written; ``StagedFiles`` writes them so that a failed run leaves every one of
+them as it was.
+"""
 
 from __future__ import annotations
 
 import contextlib
 import os
+import stat
 import tempfile
-from collections.abc import Callable
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import IO, Any
 
+from bearingcalc.errors import SpecError
 
-def atomic_write(path: str | Path, write: Callable[[IO[Any]], None], *,
-                 binary: bool = False) -> None:
-    """Call ``write`` on a temporary file beside ``path``, then rename it over ``path``.
 
-    ``binary`` opens the file for bytes (pictures) instead of UTF-8 text.
+@dataclass(frozen=True)
+class Target:
+    """A file a run writes, as the user named it."""
 
-    If ``write`` raises (or the process is interrupted) the temporary file is
-    removed and an existing ``path`` is left exactly as it was.
+    path: Path
+    #: The option that names it, like ``--output``.
+    option: str
+    #: What it holds, in messages: ``report``, ``results``, ``plot``.
+    holds: str
+    #: The suffix of a file name suggested instead of a refused one, like ``.csv``.
+    suffix: str
+
+    def error(self, message: str) -> SpecError:
+        return SpecError(message, source=str(self.path), field=self.option)
+
+    def cannot_write(self, reason: str) -> SpecError:
+        return self.error(f"cannot write the {self.holds}: {reason}")
+
+
+def reason(error: OSError) -> str:
+    """The OS's words for ``error``, as the rest of a sentence: 'no space left on device'."""
+    return (error.strerror or str(error)).lower()
+
+
+def check_targets(targets: Sequence[Target], inputs: Iterable[str | Path], command: str) -> None:
+    """Refuse, before any work, a target that cannot be written or would replace an input.
+
+    ``inputs`` are the files the run reads. A target is the same file as an input, or
+    as another target, when both resolve to the same real path or the same device
+    and inode (``..``, symbolic links, hard links); a target that does not exist yet
+    replaces nothing. Devices and FIFOs are written directly and never replace a
+    file. ``command`` names the suggested file (``drive-sweep.csv``). Raises SpecError.
     """
-    # Write through a symbolic link to the file it names: replacing the link with a
-    # file would cut whatever the link was there for.
-    target = Path(os.path.realpath(path))
-    mode, encoding, newline = _mode(binary)
-    if target.exists() and not target.is_file():
-        if target.is_dir():
-            raise IsADirectoryError(21, "is a folder", str(path))
-        # /dev/null, /dev/stdout, a FIFO: nothing to protect, and nothing to rename over.
-        with open(target, mode, encoding=encoding, newline=newline) as stream:
-            write(stream)
+    files = [_FileId.of(target.path) for target in targets]
+    for index, (target, file) in enumerate(zip(targets, files, strict=True)):
+        if not file.replaceable:
+            continue
+        problem = _unwritable(target, file)
+        if problem:
+            raise target.cannot_write(problem)
+        for earlier, earlier_file in zip(targets[:index], files[:index], strict=True):
+            if file.same_as(earlier_file):
+                raise target.error(f"names the same file as {earlier.option}; give each "
+                                   "its own file")
+    existing = [(target, file) for target, file in zip(targets, files, strict=True)
+                if file.replaceable and file.key is not None]
+    if not existing:
         return
-    handle = tempfile.NamedTemporaryFile(  # noqa: SIM115 - closed below, renamed on success
-        mode, encoding=encoding, newline=newline, dir=target.parent or ".",
+    for path in inputs:
+        # The same inode is the same file, and one stat per input finds it; the real path
+        # costs a stat per folder of the path, so it is compared only without an inode.
+        try:
+            status = os.stat(path)
+            read = _FileId(None, (status.st_dev, status.st_ino), status.st_mode)
+        except OSError:
+            read = _FileId(os.path.realpath(path), None, None)
+        for target, file in existing:
+            if file.same_as(read):
+                instead = f"{Path(path).stem}-{command}{target.suffix}"
+                raise target.error(f"would replace the spec {path} that this run reads; "
+                                   f"write the {target.holds} to another file, like {instead}")
+
+
+@dataclass(frozen=True)
+class _FileId:
+    """Where a path leads: its real path, and its device and inode when it exists."""
+
+    real: str | None
+    key: tuple[int, int] | None
+    mode: int | None
+
+    @classmethod
+    def of(cls, path: Path) -> _FileId:
+        real = os.path.realpath(path)
+        try:
+            status = os.stat(real)
+        except OSError:
+            return cls(real, None, None)
+        return cls(real, (status.st_dev, status.st_ino), status.st_mode)
+
+    @property
+    def replaceable(self) -> bool:
+        """A regular file, a folder or nothing yet: anything but a device or a FIFO."""
+        return self.mode is None or stat.S_ISREG(self.mode) or stat.S_ISDIR(self.mode)
+
+    def same_as(self, other: _FileId) -> bool:
+        return ((self.real is not None and self.real == other.real)
+                or (self.key is not None and self.key == other.key))
+
+
+def _unwritable(target: Target, file: _FileId) -> str | None:
+    """Why ``target`` cannot be written, or None."""
+    if file.mode is not None and stat.S_ISDIR(file.mode):
+        example = target.path / f"{target.holds}{target.suffix}"
+        return f"it is a folder; name a file in it, like {example}"
+    # Name the folder as the user wrote it, unless a link leads elsewhere.
+    folder = Path(file.real).parent
+    shown = folder if os.path.islink(target.path) else target.path.parent
+    try:
+        mode = os.stat(folder).st_mode
+    except FileNotFoundError:
+        return f"the folder {shown} does not exist; create it first or choose another"
+    except OSError as error:
+        return f"{shown}: {reason(error)}"
+    if not stat.S_ISDIR(mode):
+        return f"{shown} is a file, not a folder"
+    if not os.access(folder, os.W_OK | os.X_OK):
+        return f"the folder {shown} does not allow new files (permission denied)"
+    return None
+
+
+class StagedFiles:
+    """Output files written all or none.
+
+    ``add`` writes each file to a temporary file beside it; when the ``with`` block
+    ends without an error every one is renamed into place, and on any error every
+    temporary file is removed and every target is left as it was. A link is written
+    through: the file it names is replaced and the link stays. Devices and FIFOs
+    (/dev/null, /dev/stdout, a pipe) have nothing to protect or to rename over: they
+    are written directly, once every file has been staged.
+    """
+
+    def __init__(self) -> None:
+        self._staged: list[tuple[Target, str, Path]] = []
+        self._direct: list[tuple[Target, Path, Callable[[IO[Any]], None], bool]] = []
+
+    def __enter__(self) -> StagedFiles:
+        return self
+
+    def __exit__(self, exc_type: type[BaseException] | None, exc: BaseException | None,
+                 tb: object) -> None:
+        if exc is None:
+            self._commit()
+        else:
+            self._discard()
+
+    def add(self, target: Target, write: Callable[[IO[Any]], None], *,
+            binary: bool = False) -> None:
+        """Call ``write`` on the file that will become ``target`` (bytes when ``binary``,
+        else UTF-8 text); raises SpecError when it cannot be written."""
+        real = Path(os.path.realpath(target.path))
+        if not _FileId.of(real).replaceable:
+            self._direct.append((target, real, write, binary))
+            return
+        try:
+            temporary = _write_temporary(real, write, binary)
+        except OSError as error:
+            raise target.cannot_write(reason(error)) from None
+        self._staged.append((target, temporary, real))
+
+    def _commit(self) -> None:
+        try:
+            for target, real, write, binary in self._direct:
+                mode, encoding, newline = _mode(binary)
+                try:
+                    with open(real, mode, encoding=encoding, newline=newline) as stream:
+                        write(stream)
+                except OSError as error:
+                    raise target.cannot_write(reason(error)) from None
+            while self._staged:
+                target, temporary, real = self._staged[0]
+                try:
+                    # Temporary files are private (0600); give the file the mode a new
+                    # file gets, or the mode of the file it replaces.
+                    os.chmod(temporary, _new_file_mode(real))
+                    os.replace(temporary, real)
+                except OSError as error:
+                    raise target.cannot_write(reason(error)) from None
+                self._staged.pop(0)
+        finally:
+            self._discard()
+
+    def _discard(self) -> None:
+        for _, temporary, _ in self._staged:
+            with contextlib.suppress(OSError):
+                os.unlink(temporary)
+        self._staged.clear()
+        self._direct.clear()
+
+
+def _write_temporary(target: Path, write: Callable[[IO[Any]], None], binary: bool) -> str:
+    """The name of a temporary file beside ``target`` holding what ``write`` wrote;
+    nothing is left behind when ``write`` fails or the run is interrupted."""
+    mode, encoding, newline = _mode(binary)
+    handle = tempfile.NamedTemporaryFile(  # noqa: SIM115 - closed below, renamed on commit
+        mode, encoding=encoding, newline=newline, dir=target.parent,
         prefix=f".{target.name}.", suffix=".tmp", delete=False)
     try:
         with handle:
             write(handle)
             handle.flush()
             os.fsync(handle.fileno())
-        # Temporary files are private (0600); give the report the mode a new file gets.
-        os.chmod(handle.name, _new_file_mode(target))
-        os.replace(handle.name, target)
     except BaseException:
         with contextlib.suppress(OSError):
             os.unlink(handle.name)
         raise
+    return handle.name
 
 
 def _mode(binary: bool) -> tuple[str, str | None, str | None]:
