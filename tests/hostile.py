@@ -31,6 +31,8 @@ KINDS = {
     "ball-bearing": ("ball-bearing.yaml",
                      ("dynamic_load_rating", "radial_load", "speed", "pitch_diameter"),
                      "radial_load=1kN:5kN:3"),
+    "bevel-drive": ("bevel-drive.yaml", ("module", "face_width", "input_speed", "torque"),
+                    "torque=50N*m:70N*m:3"),
 }
 
 #: Quantity strings (written quoted) that must each be refused.
@@ -41,6 +43,10 @@ BAD_QUANTITY_TEXT = [
     "12 furlongz", "25 Hz", "12 N*m", "3 kg", "12.7 mm mm mm mm" + " mm" * 40, "7 mm\x00",
     "7 mm\x1b[31m", "7 mm\nkind: x", "7 m" * 300, "1e-400", "12..7 mm", "--3 mm", "3 mm ± -1 mm",
     "3 mm ± 1 mm ± 1 mm", "3 mm ± 1 kg", "3 ± mm", "0x1F mm", "1_000 mm", "∞ mm", "12 mm#x",
+    # A percent sign is a unit of its own, never a factor of another.
+    "20 deg%", "3 %*mm", "3 mm/%", "5 % rpm",
+    # Magnitudes no machine element has: a unit slip, refused with a hint.
+    "2e10 N", "3e7 rpm", "0.5 um", "500 m", "-200 m", "2e7 mm^2/s",
 ]
 #: Raw YAML values (written unquoted) that must each be refused for a quantity field.
 BAD_QUANTITY_YAML = [
@@ -106,7 +112,47 @@ def _physics_cases() -> dict[str, str]:
     ball = (SPECS / "ball-bearing.yaml").read_text()
     drive = (SPECS / "bevel-drive.yaml").read_text()
     sizing = (SPECS / "bevel-gears-sizing.yaml").read_text()
+    geometry = (SPECS / "ball-bearing-geometry.yaml").read_text()
+    loaded = (SPECS / "thrust-bearing-loaded.yaml").read_text()
+    oil = "lubrication: {viscosity_40: 68 mm^2/s, viscosity_100: 8.7 mm^2/s, temperature: %s}"
     return {
+        # Contradictory geometry: every size valid, together impossible.
+        "ball-pitch-outside-rings.yaml": _mutate(ball, "pitch_diameter", "150 mm")
+        + "bore_diameter: 45 mm\noutside_diameter: 100 mm\n",
+        "ball-pitch-inside-bore.yaml": _mutate(ball, "pitch_diameter", "40 mm")
+        + "bore_diameter: 45 mm\noutside_diameter: 100 mm\n",
+        "ball-larger-than-section.yaml": _mutate(geometry, "ball_diameter", "14 mm")
+        + "bore_diameter: 25 mm\noutside_diameter: 52 mm\n",
+        "ball-rings-swapped.yaml": geometry + "bore_diameter: 52 mm\noutside_diameter: 25 mm\n",
+        "drive-pitch-outside-rings.yaml": drive.replace(
+            "bore_diameter: 25 mm, outside_diameter: 62 mm}",
+            "bore_diameter: 25 mm, outside_diameter: 62 mm, pitch_diameter: 70 mm}", 1),
+        # Quantities of the wrong order: MPa typed for GPa, and the contact it would give.
+        "ball-modulus-mpa.yaml": geometry + "material: {elastic_modulus: 207.5 MPa}\n",
+        "thrust-modulus-kpa.yaml": loaded.replace("207.5 GPa", "207.5 kPa"),
+        "thrust-modulus-tpa.yaml": loaded.replace("207.5 GPa", "207.5 TPa"),
+        "thrust-contact-too-wide.yaml": _mutate(loaded, "axial_load", "5e8 N"),
+        "ball-contact-too-wide.yaml": _mutate(_mutate(geometry, "radial_load", "900 kN"),
+                                              "axial_load", "0 kN"),
+        "ball-viscosity-huge.yaml": _mutate(ball, "viscosity", "2e7 mm^2/s"),
+        # Causes that once ended at the generic overflow status.
+        "ball-load-factors-zero.yaml": ball.replace("axial_load: 0 kN", "axial_load: 1 kN")
+        + "load_factors: {x: 0, y: 0, e: 0}\n",
+        "ball-load-factor-y-zero.yaml": _mutate(_mutate(ball, "radial_load", "0 kN"),
+                                                "axial_load", "3 kN")
+        + "load_factors: {x: 0.56, y: 0, e: 0.3}\n",
+        "ball-oil-frozen.yaml": re.sub(r"lubrication:\n  viscosity: .*", oil % "-200 degC", ball),
+        "ball-oil-cold.yaml": re.sub(r"lubrication:\n  viscosity: .*", oil % "-150 degC", ball),
+        "ball-oil-thickens.yaml": re.sub(r"lubrication:\n  viscosity: .*", oil % "80 degC", ball)
+        .replace("8.7 mm^2/s", "90 mm^2/s"),
+        "drive-oil-frozen.yaml": drive.replace("lubrication: {viscosity: 68 mm^2/s}",
+                                               oil % "-180 degC"),
+        # Several problems at once: every one is listed.
+        "ball-many-problems.yaml": _mutate(_mutate(_mutate(ball, "radial_load", "10 kNx"),
+                                                   "speed", "3000 rpmm"),
+                                           "reliability", "120 %")
+        .replace("static_factor: 13", "").replace("contamination_factor: 0.5", "")
+        .replace("axial_load: 0 kN", "axial_load: 2 kN"),
         "thrust-angle-50.yaml": _mutate(tb, "contact_angle", "50 deg"),
         "thrust-angle-0.yaml": _mutate(tb, "contact_angle", "0 deg"),
         "thrust-angle-50-solved.yaml": _mutate(tb, "contact_angle", "50 deg").replace(

@@ -159,9 +159,9 @@ BAD = [
     (("{position: 20 mm, type: deep-groove", "{position: 20 mm, type: thrust"), None,
      "a thrust ball bearing takes no radial load"),
     (("{position: 20 mm, type: deep-groove", "{position: 20 mm, radial_load: 1 kN, type: "
-      "deep-groove"), None, "takes no load or speed"),
+      "deep-groove"), None, "a drive's bearing takes no"),
     (("{position: 20 mm, type: deep-groove", "{position: 20 mm, speed: 10 rpm, type: "
-      "deep-groove"), None, "takes no load or speed"),
+      "deep-groove"), None, "a drive's bearing takes no"),
     (("static_factor: 12, bore", "static_factor: 12, ball_diameter: -3 mm, bore"), None,
      "must be greater than zero"),
     (("module: 3 mm", "module: 3 mm\nface_width: 40 mm"), None, "duplicate key"),

@@ -9,14 +9,50 @@ from __future__ import annotations
 
 import json
 import shutil
+import subprocess
+import sys
 
 import pytest
 
+from bearingcalc.evaluation import evaluate_file
+from bearingcalc.kinds import KINDS, OUT_OF_RANGE_REASON
 from tests.conftest import ROOT
+from tests.hostile import KINDS as CORPUS_KINDS
 from tests.hostile import PHYSICS_PREFIX, hostile_corpus, sweep_option
 
 CORPUS = hostile_corpus()
 GOOD = sorted((ROOT / "specs").glob("*.yaml"))
+
+# A warning from numpy or Python is a failure here: none may reach a user's terminal.
+pytestmark = pytest.mark.filterwarnings("error")
+
+
+def test_the_corpus_covers_every_kind():
+    assert set(CORPUS_KINDS) == set(KINDS)
+
+
+def test_no_case_ends_at_the_generic_overflow_status(corpus_dir):
+    """Every impossible design has a status of its own naming its field; the generic
+    'out of the range of double precision' is only a last guard."""
+    generic = OUT_OF_RANGE_REASON[1]
+    reached = []
+    for name in CORPUS:
+        for outcome in evaluate_file(corpus_dir / name):
+            lines = outcome.lines() if hasattr(outcome, "lines") else []
+            reached += [line for line in lines if generic in line]
+            assert lines, f"{name} was accepted"
+    assert not reached, reached
+
+
+def test_a_sample_run_with_warnings_as_errors_prints_only_its_error_lines(corpus_dir):
+    names = [name for name in CORPUS if name.startswith(PHYSICS_PREFIX)][::3]
+    run = subprocess.run([sys.executable, "-W", "error", "-m", "bearingcalc", "solve",
+                          *(str(corpus_dir / name) for name in names)],
+                         capture_output=True, text=True, timeout=120, check=False)
+    assert run.returncode == 2
+    assert run.stdout == ""
+    for line in run.stderr.splitlines():
+        assert line.startswith(str(corpus_dir)), line
 
 
 def test_the_corpus_is_large_and_every_class_is_in_it():

@@ -85,7 +85,9 @@ class Lubrication(SpecModel):
         if None in (self.viscosity_40, self.viscosity_100, self.temperature) or not (
                 self.viscosity_40 > self.viscosity_100):  # type: ignore[operator]
             return None
-        nu = float(walther_viscosity(self.viscosity_40, self.viscosity_100, self.temperature))
+        with np.errstate(over="ignore"):  # far below the pour point ν overflows: refused below
+            nu = float(walther_viscosity(self.viscosity_40, self.viscosity_100,
+                                         self.temperature))
         if nu <= MAX_OPERATING_VISCOSITY:
             return None
         coldest = float(walther_temperature(self.viscosity_40, self.viscosity_100,

@@ -44,8 +44,8 @@ class DriveBearing(BearingFields):
         if isinstance(data, dict):
             given = [key for key in _DRIVE_SETS if key in data]
             if given:
-                raise ValueError(f"{given[0]}: a drive's bearing takes no load or speed: the "
-                                 "drive finds them from the gear forces and input_speed")
+                raise ValueError(f"a drive's bearing takes no {given[0]}: the drive finds its "
+                                 "loads and speeds from the gear forces and input_speed")
         return data
 
 
