@@ -11,7 +11,6 @@ import copy
 import dataclasses
 import itertools
 import re
-import typing
 from dataclasses import dataclass
 from typing import Any
 
@@ -21,9 +20,10 @@ from pydantic import BaseModel
 
 from bearingcalc.errors import BearingcalcError, SpecError
 from bearingcalc.kinds import Kind
-from bearingcalc.spec.fields import SpecModel, field_parser, nested_model
-from bearingcalc.spec.yaml_loader import Document
-from bearingcalc.variation import evaluate_with, field_value
+from bearingcalc.spec.fields import SpecModel, field_parser
+from bearingcalc.spec.yaml_loader import Document, field_key_path
+from bearingcalc.variation import NOT_INPUTS, FieldPathError, evaluate_with, resolve_field
+from bearingcalc.wording import plural
 
 MAX_POINTS = 4_000_000
 
@@ -74,7 +74,9 @@ class Sweep:
         return tuple(len(axis.values) for axis in self.axes)
 
 
-_VARY = re.compile(r"^\s*(?P<name>[A-Za-z_][\w.]*)\s*=\s*(?P<start>[^:]+):(?P<stop>[^:]+):"
+#: The name is any text without spaces, so that a misspelt one is explained by
+#: :func:`bearingcalc.variation.resolve_field` rather than refused as a whole.
+_VARY = re.compile(r"^\s*(?P<name>[^\s=:]+)\s*=\s*(?P<start>[^:]+):(?P<stop>[^:]+):"
                    r"(?P<count>\s*[0-9]{1,12}\s*)$")
 
 
@@ -90,18 +92,7 @@ def parse_axis(text: str, spec: SpecModel) -> Axis:
     if count > MAX_POINTS:  # before any array of that size is built
         raise SweepError(f"--vary {name}: N = {count} is more than the {MAX_POINTS} points "
                          "a sweep may have; use fewer")
-    parser = _parser_at(type(spec), name)
-    try:
-        current = field_value(spec, name)
-    except AttributeError:
-        current = None
-    if current is None:
-        raise SweepError(f"--vary {name}: the spec leaves {name} out (it is solved, or "
-                         "optional and not given); give it a value in the spec to sweep it")
-    if isinstance(current, BaseModel):
-        raise SweepError(f"--vary {name}: {name} is a group of fields; vary one of them, "
-                         f"like {name}.{next(iter(type(current).model_fields))}")
-    kind_of_field, converter, unit = parser
+    name, (kind_of_field, converter, unit) = _number_field(spec, name)
     try:
         start, stop = converter(match["start"].strip()), converter(match["stop"].strip())
     except ValueError as exc:
@@ -115,37 +106,48 @@ def parse_axis(text: str, spec: SpecModel) -> Axis:
     return Axis(name, np.linspace(start, stop, count), unit)
 
 
-def _parser_at(model: type[BaseModel], path: str) -> tuple[str, Any, str]:
-    current: type[BaseModel] = model
-    parts = path.split(".")
-    in_list = False
-    for i, part in enumerate(parts):
-        if in_list:
-            in_list = False
-            if not part.isdigit():
-                raise SweepError(f"--vary {path}: name an item of {'.'.join(parts[:i])} by its "
-                                 f"number, like {'.'.join(parts[:i])}.1")
-            continue  # an item of the list named before it: the same model
-        if part not in current.model_fields or part in ("kind", "name"):
-            known = ", ".join(f for f in current.model_fields if f not in ("kind", "name"))
-            where = ".".join(parts[:i]) or "the spec"
-            raise SweepError(f"--vary {path}: {where} has no input '{part}'; inputs: {known}")
-        info = current.model_fields[part]
-        if _is_list(info) and (i == len(parts) - 1 or not parts[i + 1].isdigit()):
-            raise SweepError(f"--vary {path}: {'.'.join(parts[:i + 1])} is a list; name an "
-                             f"item by its number, like {'.'.join(parts[:i + 1])}.1."
-                             f"{parts[i + 1] if i + 1 < len(parts) else '...'}")
-        if i == len(parts) - 1:
-            parser = field_parser(info)
-            if parser is None:
-                raise SweepError(f"--vary {path}: {path} is not a number that can be swept")
-            return parser
-        nested = nested_model(info)
-        if nested is None:
-            raise SweepError(f"--vary {path}: {'.'.join(parts[:i + 1])} has no fields")
-        current = nested
-        in_list = _is_list(info)
-    raise AssertionError("unreachable")
+def _number_field(spec: SpecModel, path: str) -> tuple[str, tuple[str, Any, str]]:
+    """The name (as :func:`resolve_field` writes it) and parser (see ``field_parser``)
+    of the field ``path`` names, if it is a number the spec gives; else a SweepError
+    that says what it is and what to vary instead."""
+    try:
+        found = resolve_field(spec, path)
+    except FieldPathError as error:
+        raise SweepError(f"--vary {path}: {error}") from None
+    name = found.name
+    if found.is_list:
+        count = "" if found.value is None else f" of {plural(len(found.value), 'item')}"
+        example = _example_field(found.group, None)
+        raise SweepError(f"--vary {name}: {name} is a list{count}, not a number: vary a field "
+                         f"of one item, like {name}.1.{example}")
+    if found.group is not None:
+        what = (f"an item of {found.parent}" if found.in_list else "a group of fields")
+        inputs = [f for f in found.group.model_fields if f not in NOT_INPUTS]
+        example = _example_field(found.group, found.value)
+        raise SweepError(f"--vary {name}: {name} is {what}, not a number: vary one of its "
+                         f"fields, like {name}.{example}; its fields are {', '.join(inputs)}")
+    parser = field_parser(found.info) if found.info is not None else None
+    if parser is None:
+        raise SweepError(f"--vary {name}: {name} is not a number that can be swept")
+    if found.left_out is not None and found.left_out != name:
+        raise SweepError(f"--vary {name}: the spec leaves {found.left_out} out (it is "
+                         f"optional and not given); give {found.left_out} in the spec to "
+                         f"sweep {name}")
+    if found.value is None:
+        raise SweepError(f"--vary {name}: the spec leaves {name} out (it is solved, or "
+                         "optional and not given); give it a value in the spec to sweep it")
+    return name, parser
+
+
+def _example_field(model: type[BaseModel] | None, value: BaseModel | None) -> str:
+    """A field of ``model`` to name in an example: the first number the spec gives (of
+    ``value``), else the first number, else the first field."""
+    if model is None:
+        return "..."
+    inputs = {f: info for f, info in model.model_fields.items() if f not in NOT_INPUTS}
+    numbers = [f for f, info in inputs.items() if field_parser(info) is not None]
+    given = [f for f in numbers if value is not None and getattr(value, f) is not None]
+    return next(iter(given or numbers or list(inputs) or ["..."]))
 
 
 def check_axes(document: Document, axes: list[Axis]) -> None:
@@ -177,23 +179,12 @@ def _as_written(axis: Axis, value: Any) -> Any:
 
 
 def _set_dotted(data: Any, dotted: str, value: Any) -> None:
-    """Set a dotted field of document data (list items 1-based)."""
-    *parents, last = dotted.split(".")
-    for part in parents:
-        data = data[int(part) - 1] if isinstance(data, list) else data.setdefault(part, {})
-    if isinstance(data, list):
-        data[int(last) - 1] = value
-    else:
-        data[last] = value
-
-
-def _is_list(info: Any) -> bool:
-    """Whether a model field holds a list (of nested models)."""
-    if info is None:
-        return False
-    annotation = info.annotation
-    return typing.get_origin(annotation) in (list, tuple) or any(
-        typing.get_origin(arg) in (list, tuple) for arg in typing.get_args(annotation))
+    """Set a dotted field of document data (list items 1-based) that ``resolve_field``
+    has found in the spec, so every list and item it names is there."""
+    *parents, last = field_key_path(dotted)
+    for key in parents:
+        data = data[key] if isinstance(key, int) else data.setdefault(key, {})
+    data[last] = value
 
 
 def run_sweep(kind: Kind, spec: SpecModel, source: str, axes: list[Axis]) -> Sweep:

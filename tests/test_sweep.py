@@ -106,13 +106,30 @@ def test_integer_fields_step_by_integers(cli):
     ("thrust-bearing", "contact_angle:5deg:40deg", "write NAME=START:STOP:N"),
     ("thrust-bearing", "ball_radius=1mm:5mm:5", "leaves ball_radius out"),
     ("bevel-gears", "gear_a.pitch_angle=10deg:20deg:3", "leaves gear_a.pitch_angle out"),
-    ("bevel-gears", "gear_a=1:2:3", "not a number that can be swept"),
+    ("bevel-gears", "gear_a=1:2:3", "gear_a is a group of fields, not a number: vary one of "
+     "its fields, like gear_a.teeth; its fields are teeth, pitch_radius, pitch_angle"),
+    ("thrust-bearing", "shaft_speed=25Hz:50Hz:3", "'Hz' is not a unit of angular speed (it is "
+     "a frequency"),
+    ("thrust-bearing", "contact_angle=5deg%:40deg%:3", "percent is a unit on its own"),
     ("bevel-gears", "gear_a.teeth=10:12:5", "only 3 distinct values"),
 ])
 def test_bad_vary_options_are_one_line_and_exit_2(cli, spec, vary, fragment):
     run = cli("sweep", SPECS / f"{spec}.yaml", "--vary", vary)
     assert run.code == 2
     assert fragment in run.err and run.err.count("\n") == 1, run.err
+
+
+@pytest.mark.parametrize("speeds", ["1000r/min:2000r/min:3", "1000 1/min:2000 1/min:3",
+                                    "1000min^-1:2000 min⁻¹:3", "1000RPM:2000 rev/min:3"])
+def test_speed_notations_sweep_exactly_as_rpm(cli, speeds):
+    rpm = cli("sweep", SPECS / "thrust-bearing.yaml", "--vary", "shaft_speed=1000rpm:2000rpm:3",
+              "-f", "csv")
+    other = cli("sweep", SPECS / "thrust-bearing.yaml", "--vary", f"shaft_speed={speeds}",
+                "-f", "csv")
+    assert other.code == rpm.code == 0, other.err
+    assert other.out == rpm.out
+    speeds_si = [float(r["input.shaft_speed [rad/s]"]) for r in csv_rows(other.out)]
+    assert speeds_si[0] == 1000 * (2 * math.pi / 60) and speeds_si[-1] == 2000 * (2 * math.pi / 60)
 
 
 def test_a_field_left_out_to_be_solved_cannot_be_swept(cli, spec_file):

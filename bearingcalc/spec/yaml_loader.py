@@ -90,10 +90,18 @@ class Document:
         return SpecError(message, source=self.source, line=self.line_of(key_path), field=field)
 
 
+def list_index(part: str) -> int | None:
+    """The 0-based list index that a part of a dotted field name names (``"2"`` -> 1),
+    or None when the part is not a whole number in ASCII digits. Items count from 1,
+    so ``"0"`` gives -1, which is no item."""
+    return int(part) - 1 if part.isascii() and part.isdigit() else None
+
+
 def field_key_path(dotted: str) -> KeyPath:
     """The key path of a dotted field name; list items are named by their 1-based index
     (``pinion_bearings.1.position`` is item 0 of the list)."""
-    return tuple(int(part) - 1 if part.isdigit() else part for part in dotted.split("."))
+    return tuple(part if (index := list_index(part)) is None else index
+                 for part in dotted.split("."))
 
 
 def dotted_name(key_path: tuple[Any, ...]) -> str:
