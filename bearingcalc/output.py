@@ -34,8 +34,8 @@ class Target:
     def error(self, message: str) -> SpecError:
         return SpecError(message, source=str(self.path), field=self.option)
 
-    def cannot_write(self, reason: str) -> SpecError:
-        return self.error(f"cannot write the {self.holds}: {reason}")
+    def cannot_write(self, why: str) -> SpecError:
+        return self.error(f"cannot write the {self.holds}: {why}")
 
 
 def reason(error: OSError) -> str:
@@ -134,11 +134,11 @@ class StagedFiles:
     """Output files written all or none.
 
     ``add`` writes each file to a temporary file beside it; when the ``with`` block
-    ends without an error every one is renamed into place, and on any error every
-    temporary file is removed and every target is left as it was. A link is written
-    through: the file it names is replaced and the link stays. Devices and FIFOs
-    (/dev/null, /dev/stdout, a pipe) have nothing to protect or to rename over: they
-    are written directly, once every file has been staged.
+    ends without an error every one is renamed into place, and on any error (even
+    while renaming) every temporary file is removed and every target is left as it
+    was. A link is written through: the file it names is replaced and the link stays.
+    Devices and FIFOs (/dev/null, /dev/stdout, a pipe) have nothing to protect or to
+    rename over: they are written directly, once every file has been staged.
     """
 
     def __init__(self) -> None:
@@ -178,8 +178,23 @@ class StagedFiles:
                         write(stream)
                 except OSError as error:
                     raise target.cannot_write(reason(error)) from None
+            self._rename_all()
+        finally:
+            self._discard()
+
+    def _rename_all(self) -> None:
+        """Rename every staged file into place. A file about to be replaced is first kept
+        under a second name beside it (a hard link), so that when a later rename fails,
+        the files already renamed are put back (or removed, where there was none)."""
+        kept: list[str] = []
+        undo: list[tuple[Path, str | None]] = []  # a renamed target and its former file
+        try:
             while self._staged:
                 target, temporary, real = self._staged[0]
+                existed = real.exists()
+                former = _keep_aside(real, temporary) if existed else None
+                if former is not None:
+                    kept.append(former)
                 try:
                     # Temporary files are private (0600); give the file the mode a new
                     # file gets, or the mode of the file it replaces.
@@ -188,13 +203,23 @@ class StagedFiles:
                 except OSError as error:
                     raise target.cannot_write(reason(error)) from None
                 self._staged.pop(0)
+                if former is not None or not existed:
+                    undo.append((real, former))
+        except BaseException:
+            for real, former in reversed(undo):
+                with contextlib.suppress(OSError):
+                    if former is None:
+                        os.unlink(real)
+                    else:
+                        os.replace(former, real)
+            raise
         finally:
-            self._discard()
+            for former in kept:
+                _remove(former)
 
     def _discard(self) -> None:
         for _, temporary, _ in self._staged:
-            with contextlib.suppress(OSError):
-                os.unlink(temporary)
+            _remove(temporary)
         self._staged.clear()
         self._direct.clear()
 
@@ -216,6 +241,22 @@ def _write_temporary(target: Path, write: Callable[[IO[Any]], None], binary: boo
             os.unlink(handle.name)
         raise
     return handle.name
+
+
+def _keep_aside(target: Path, temporary: str) -> str | None:
+    """A second name for ``target``, beside it, or None where hard links cannot be made
+    (then the file cannot be put back)."""
+    aside = temporary.removesuffix(".tmp") + ".old"
+    try:
+        os.link(target, aside)
+    except OSError:
+        return None
+    return aside
+
+
+def _remove(path: str) -> None:
+    with contextlib.suppress(OSError):
+        os.unlink(path)
 
 
 def _mode(binary: bool) -> tuple[str, str | None, str | None]:

@@ -254,6 +254,32 @@ def test_a_plot_failing_while_drawn_leaves_the_output_alone(cli, tmp_path, monke
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted([plot.name, output.name])
 
 
+@pytest.mark.parametrize("existing", [True, False])
+@pytest.mark.parametrize(("command", "report"), MULTI)
+def test_an_output_failing_while_renamed_puts_the_plot_back(cli, tmp_path, monkeypatch,
+                                                            existing, command, report):
+    plot, output = tmp_path / "chart.png", tmp_path / report
+    if existing:
+        plot.write_bytes(b"earlier chart")
+        output.write_text("earlier results\n")
+        before = fingerprint(plot), fingerprint(output)
+    rename = os.replace
+
+    def replace(source, destination):
+        if Path(destination).name == report and Path(source).name.endswith(".tmp"):
+            raise OSError(errno.EBUSY, os.strerror(errno.EBUSY))
+        rename(source, destination)
+
+    monkeypatch.setattr(os, "replace", replace)
+    run = cli(*command_args(command, TOLERANCED), "--plot", plot, "--output", output)
+    if existing:
+        assert (fingerprint(plot), fingerprint(output)) == before
+        assert sorted(p.name for p in tmp_path.iterdir()) == sorted([plot.name, output.name])
+    else:
+        assert list(tmp_path.iterdir()) == []
+    assert_refused(run, "--output")
+
+
 @pytest.mark.parametrize(("command", "report"), MULTI)
 def test_a_successful_run_writes_both(cli, tmp_path, command, report):
     plot, output = tmp_path / "chart.png", tmp_path / report
