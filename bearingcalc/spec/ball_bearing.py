@@ -301,7 +301,7 @@ class BallBearingSpec(BearingFields):
         if self.lubrication is not None and self.contamination_factor is None:
             return SpecFieldError("contamination_factor", "lubrication needs the "
                                   "contamination factor eC (0 to 1, like 0.5; see the "
-                                  "cleanliness classes in docs/physics.md §5)",
+                                  "cleanliness classes in the README)",
                                   at="lubrication")
         if self.lubrication is None and self.contamination_factor is not None:
             return SpecFieldError("contamination_factor", "applies with lubrication only: "
