@@ -22,7 +22,7 @@ import typer
 
 from bearingcalc.errors import SpecError
 from bearingcalc.output import StagedFiles, Target, check_targets, reason
-from bearingcalc.wording import printable
+from bearingcalc.wording import did_you_mean, printable
 
 T = TypeVar("T")
 
@@ -183,7 +183,8 @@ def schema(
     from bearingcalc.schema import spec_schema
 
     if kind is not None and kind not in KINDS:
-        print(f"error: --kind: unknown kind {kind!r}; known kinds: {', '.join(KINDS)}",
+        print(f"error: --kind: unknown kind {kind!r}{did_you_mean(kind, KINDS)}; known kinds: "
+              f"{', '.join(KINDS)}",
               file=sys.stderr)
         raise typer.Exit(EXIT_INVALID)
     text = json.dumps(spec_schema(kind), indent=2, ensure_ascii=False) + "\n"
@@ -208,7 +209,8 @@ def new(
         text = resources.files("bearingcalc.templates").joinpath(f"{kind}.yaml").read_text(
             "utf-8")
     else:
-        print(f"error: unknown kind {kind!r}; known kinds: {', '.join(KINDS)}", file=sys.stderr)
+        print(f"error: unknown kind {kind!r}{did_you_mean(kind, KINDS)}; known kinds: "
+              f"{', '.join(KINDS)}", file=sys.stderr)
         raise typer.Exit(EXIT_INVALID)
     with _errors_as_exit(debug=False):
         _write_stdout(lambda stream: stream.write(text))

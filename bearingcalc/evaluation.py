@@ -7,7 +7,6 @@ its limits. Errors come out as :class:`SpecError` with file, line and field.
 
 from __future__ import annotations
 
-import difflib
 import functools
 import math
 import re
@@ -29,7 +28,7 @@ from bearingcalc.spec.yaml_loader import (
     field_key_path,
     load_documents,
 )
-from bearingcalc.wording import plural
+from bearingcalc.wording import did_you_mean, plural
 
 
 @dataclass
@@ -65,7 +64,7 @@ def parse_document(document: Document) -> tuple[Kind, SpecModel]:
         raise document.error(f"missing key 'kind': one of {', '.join(KINDS)}", field="kind")
     kind = KINDS.get(kind_name) if isinstance(kind_name, str) else None
     if kind is None:
-        raise document.error(f"unknown kind {kind_name!r}{_did_you_mean(str(kind_name), KINDS)}; "
+        raise document.error(f"unknown kind {kind_name!r}{did_you_mean(str(kind_name), KINDS)}; "
                              f"known kinds: {', '.join(KINDS)}", field="kind")
     try:
         spec = kind.model.model_validate(data)
@@ -269,11 +268,6 @@ def _default_name(document: Document) -> str:
     return stem if document.source == document.path else f"{stem}#{document.index}"
 
 
-def _did_you_mean(word: str, choices: Any) -> str:
-    close = difflib.get_close_matches(word, list(choices), n=1, cutoff=0.6)
-    return f" (did you mean '{close[0]}'?)" if close else ""
-
-
 def _one_problem(document: Document, model: type[SpecModel], error: Any) -> SpecError:
     key_path = tuple(error["loc"])
     loc = tuple(str(part) for part in key_path)
@@ -282,8 +276,8 @@ def _one_problem(document: Document, model: type[SpecModel], error: Any) -> Spec
     if kind == "extra_forbidden":
         parent = _model_at(model, loc[:-1])
         known = list(parent.model_fields) if parent else []
-        message = f"unknown key '{loc[-1]}'{_did_you_mean(loc[-1], known)}"
-        if not _did_you_mean(loc[-1], known):
+        message = f"unknown key '{loc[-1]}'{did_you_mean(loc[-1], known)}"
+        if not did_you_mean(loc[-1], known):
             message += f"; allowed keys: {', '.join(k for k in known if k != 'kind')}"
     elif kind == "missing":
         example = _example(model, loc)

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import difflib
 import re
+from collections.abc import Iterable
 
 _CONTROL = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029]")
 
@@ -27,3 +29,13 @@ def printable(text: str) -> str:
     'TB\\n\\x1b[32mPASS'
     """
     return _CONTROL.sub(lambda m: repr(m.group())[1:-1], text)
+
+
+def did_you_mean(word: str, choices: Iterable[str]) -> str:
+    """" (did you mean 'x'?)" for the closest of ``choices`` to a mistyped word, or "".
+
+    >>> did_you_mean("ball-bearings", ["ball-bearing", "bevel-gears"])
+    " (did you mean 'ball-bearing'?)"
+    """
+    close = difflib.get_close_matches(word, list(choices), n=1, cutoff=0.6)
+    return f" (did you mean '{close[0]}'?)" if close else ""

@@ -265,3 +265,10 @@ def test_a_design_with_no_margins_names_the_limits_it_could_set(cli, spec_file):
     assert "limits.min_rating_life" in run.out and "no limits apply" not in run.out
     assert "PASS: this kind has no limits" in cli("solve", ROOT / "specs" /
                                                   "cone-on-plane.yaml").out
+
+
+@pytest.mark.parametrize("command", [("new", "ball-bearings"), ("schema", "--kind", "bevel-gear")])
+def test_a_mistyped_kind_gets_a_suggestion(cli, command):
+    run = cli(*command)
+    assert run.code == 2
+    assert "(did you mean '" in run.err and run.err.count("\n") == 1

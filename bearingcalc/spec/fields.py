@@ -50,7 +50,7 @@ from bearingcalc.units import (
 #: ("12.7 mm", "12.7 mm ± 0.005 mm", "12.7 +/- 0.005 mm"). Units themselves are
 #: checked by ``bearingcalc check``.
 QUANTITY_PATTERN = (r"^\s*[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?\s*"
-                    r"([A-Za-z_°µμ%Ω]|(±|\+/-|\+-)\s*[0-9.]).*$")
+                    r"([A-Za-z_°µμ%Ω]|\s1\s*/|(±|\+/-|\+-)\s*[0-9.]).*$")
 
 
 class SpecModel(BaseModel):

@@ -140,6 +140,16 @@ def read_spec_text(path: str | os.PathLike[str]) -> str:
                         "save the file as UTF-8", source=label) from None
 
 
+_TOO_DEEP = f"nested too deeply: specs nest at most {MAX_DEPTH} levels"
+
+
+def _flow_depth(text: str, end: int) -> int:
+    """How many flow collections ([ or {) are open at ``end`` of ``text`` (quotes and
+    comments aside: an estimate that is exact for the nesting attacks it is for)."""
+    head = text[:end]
+    return head.count("[") + head.count("{") - head.count("]") - head.count("}")
+
+
 def load_documents(path: str | os.PathLike[str], text: str | None = None) -> list[Document]:
     """Every YAML document of a spec file, in order.
 
@@ -157,6 +167,9 @@ def load_documents(path: str | os.PathLike[str], text: str | None = None) -> lis
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         line = mark.line + 1 if mark is not None else None
+        if mark is not None and _flow_depth(text, mark.index) > MAX_DEPTH:
+            # Newer YAML parsers stop deep nesting themselves, in words of their own.
+            raise SpecError(_TOO_DEEP, source=label, line=line) from None
         problem = exc.problem or exc.context or "malformed YAML"
         raise SpecError(f"malformed YAML: {problem}", source=label, line=line) from None
     except yaml.YAMLError as exc:
@@ -254,7 +267,7 @@ class _Builder:
                                  "(YAML aliases count as copies)", event)
             if isinstance(event, (yaml.MappingStartEvent, yaml.SequenceStartEvent)):
                 if len(stack) >= MAX_DEPTH:
-                    raise self._fail(f"nested too deeply: specs nest at most {MAX_DEPTH} levels",
+                    raise self._fail(_TOO_DEEP,
                                      event)
                 key_path = self._child_path(stack, parent_path)
                 self._attach(stack, value, event, lines)
