@@ -59,3 +59,18 @@ def spec_file(tmp_path):
         return path
 
     return write
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _example_specs_stay_untouched():
+    """No test may change an input: the example specs are byte for byte the same after
+    the whole run as before it."""
+    def snapshot() -> dict[str, bytes]:
+        return {str(path): path.read_bytes()
+                for path in sorted((ROOT / "specs").rglob("*")) if path.is_file()}
+
+    before = snapshot()
+    yield
+    after = snapshot()
+    changed = sorted(set(before) ^ set(after) | {p for p in before if before[p] != after.get(p)})
+    assert not changed, f"tests changed these example specs: {changed}"
