@@ -16,7 +16,7 @@ from pathlib import Path
 
 from bearingcalc.errors import SpecError
 from bearingcalc.evaluation import Evaluation, evaluate_documents, load_selected
-from bearingcalc.spec.yaml_loader import Document, is_spec_file
+from bearingcalc.models.yaml_loader import Document, is_spec_file
 
 PASS, FAIL, INVALID = "pass", "fail", "invalid"
 #: Below this many files a worker pool costs more than it saves.

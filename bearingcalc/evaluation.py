@@ -20,9 +20,9 @@ from pydantic import BaseModel, ValidationError
 
 from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind
-from bearingcalc.spec.fields import SpecModel, nested_model
-from bearingcalc.spec.rules import problems_despite
-from bearingcalc.spec.yaml_loader import (
+from bearingcalc.models.fields import SpecModel, nested_model
+from bearingcalc.models.rules import problems_despite
+from bearingcalc.models.yaml_loader import (
     Document,
     dotted_name,
     field_key_path,

@@ -1,7 +1,7 @@
 """The registry of spec kinds: one entry per rolling system.
 
 Adding a kind takes a solver module in ``core/`` (with ``RESULTS``,
-``STATUS_REASONS`` and ``evaluate``), a spec model in ``spec/`` (with
+``STATUS_REASONS`` and ``evaluate``), a spec model in ``models/`` (with
 ``solver_inputs``) and one entry here; every command picks it up. A solver may
 also give ``GROUPS`` (table headings), ``MATRICES`` (per-member sub-tables),
 ``DISPLAY`` (table units of its own) and ``WARNINGS`` (flags it returns as
@@ -20,7 +20,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 if TYPE_CHECKING:
-    from bearingcalc.spec.fields import SpecModel
+    from bearingcalc.models.fields import SpecModel
 
 #: Status of a design whose inputs are valid but whose results overflow double precision.
 OUT_OF_RANGE = 99
@@ -54,7 +54,7 @@ class Kind:
     @property
     def limit_fields(self) -> list[str]:
         """The fields of the spec's ``limits`` block, which set the margins (or none)."""
-        from bearingcalc.spec.fields import nested_model
+        from bearingcalc.models.fields import nested_model
 
         limits = self.model.model_fields.get("limits")
         held = nested_model(limits) if limits is not None else None
@@ -142,34 +142,34 @@ KINDS: dict[str, Kind] = {
     kind.name: kind
     for kind in (
         Kind("thrust-bearing", "balls between a fixed race and a turning shaft",
-             "bearingcalc.spec.thrust_bearing:ThrustBearingSpec",
+             "bearingcalc.models.thrust_bearing:ThrustBearingSpec",
              "bearingcalc.core.thrust_bearing",
              margins=("slip_margin", "contact_pressure_margin"),
              governing=("slip_margin", "spin_to_roll"),
              limits={"spin_to_roll": "max_spin_to_roll"},
              unbounded=("pitch_radius_max",)),
         Kind("disk-on-circle", "a disk rolling on a fixed or turning circle, outside or inside",
-             "bearingcalc.spec.disk_on_circle:DiskOnCircleSpec",
+             "bearingcalc.models.disk_on_circle:DiskOnCircleSpec",
              "bearingcalc.core.disk_on_circle", margins=(),
              governing=("contact_point_accel", "center_speed")),
         Kind("cone-on-plane", "a cone rolling on a plane about its fixed apex",
-             "bearingcalc.spec.cone_on_plane:ConeOnPlaneSpec",
+             "bearingcalc.models.cone_on_plane:ConeOnPlaneSpec",
              "bearingcalc.core.cone_on_plane", margins=(),
              governing=("precession_speed",)),
         Kind("bevel-gears", "an epicyclic bevel pair: gear B on a shaft, gear A on an arm",
-             "bearingcalc.spec.bevel_gears:BevelGearsSpec", "bearingcalc.core.bevel_gears",
+             "bearingcalc.models.bevel_gears:BevelGearsSpec", "bearingcalc.core.bevel_gears",
              margins=("slip_margin", "face_width_margin", "bending_safety_margin",
                       "contact_safety_margin"),
              governing=("apex_mismatch", "slip_margin"),
              limits={"apex_mismatch": "max_apex_mismatch"}),
         Kind("ball-bearing", "a rolling ball bearing: ISO 281 rating life, ISO 76 static safety",
-             "bearingcalc.spec.ball_bearing:BallBearingSpec",
+             "bearingcalc.models.ball_bearing:BallBearingSpec",
              "bearingcalc.core.ball_bearing",
              margins=("life_margin", "static_safety_margin", "contact_pressure_margin",
                       "spin_to_roll_margin"),
              governing=("life_margin", "modified_rating_life", "static_safety_factor")),
         Kind("bevel-drive", "a bevel pair on two shafts, each on two ball bearings: every "
-             "bearing's life", "bearingcalc.spec.bevel_drive:BevelDriveSpec",
+             "bearing's life", "bearingcalc.models.bevel_drive:BevelDriveSpec",
              "bearingcalc.core.bevel_drive",
              margins=("slip_margin", "face_width_margin", "bending_safety_margin",
                       "contact_safety_margin", "life_margin", "static_safety_margin"),

@@ -2,7 +2,7 @@
 
 Every method evaluates whole arrays of designs per solver call, never a Python
 loop per sample. Inputs are the spec fields that carry a tolerance (see
-:class:`bearingcalc.spec.fields.Tolerance` for the distributions).
+:class:`bearingcalc.models.fields.Tolerance` for the distributions).
 
 Monte Carlo streams: samples are drawn and solved in chunks, and only running
 statistics are kept, so memory does not grow with the number of samples. The
@@ -30,7 +30,7 @@ from numpy.typing import NDArray
 
 from bearingcalc.errors import BearingcalcError
 from bearingcalc.kinds import Kind
-from bearingcalc.spec.fields import SpecModel, Tolerance
+from bearingcalc.models.fields import SpecModel, Tolerance
 from bearingcalc.units import to_display
 from bearingcalc.variation import evaluate_with, field_value, toleranced_fields
 

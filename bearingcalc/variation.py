@@ -19,8 +19,8 @@ from pydantic import BaseModel
 from pydantic.fields import FieldInfo
 
 from bearingcalc.kinds import Kind
-from bearingcalc.spec.fields import Measured, SpecModel, Tolerance, nested_model
-from bearingcalc.spec.yaml_loader import list_index
+from bearingcalc.models.fields import Measured, SpecModel, Tolerance, nested_model
+from bearingcalc.models.yaml_loader import list_index
 from bearingcalc.wording import plural
 
 #: Fields of a spec that are not inputs: what it is and what it is called.

@@ -17,7 +17,7 @@ from xml.etree import ElementTree
 import numpy as np
 import pytest
 
-from bearingcalc.spec.yaml_loader import load_documents
+from bearingcalc.models.yaml_loader import load_documents
 from bearingcalc.units import LENGTH, UnitError, parse_quantity
 from tests.conftest import ROOT
 

@@ -10,7 +10,7 @@ import re
 import pytest
 
 from bearingcalc.evaluation import load_one_spec
-from bearingcalc.spec.yaml_loader import dotted_name, field_key_path, list_index
+from bearingcalc.models.yaml_loader import dotted_name, field_key_path, list_index
 from bearingcalc.variation import FieldPathError, field_value, resolve_field
 from tests.conftest import ROOT
 

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from bearingcalc.evaluation import evaluate_document
-from bearingcalc.spec.yaml_loader import load_documents
+from bearingcalc.models.yaml_loader import load_documents
 from tests.conftest import ROOT
 
 SPECS = ROOT / "specs"

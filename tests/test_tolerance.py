@@ -12,7 +12,7 @@ from scipy.stats import norm
 
 from bearingcalc.core.thrust_bearing import solve_thrust_bearing
 from bearingcalc.evaluation import parse_document
-from bearingcalc.spec.yaml_loader import load_documents
+from bearingcalc.models.yaml_loader import load_documents
 from bearingcalc.tolerance import BLOCK, HISTOGRAM_BINS, Study
 from tests.conftest import ROOT
 

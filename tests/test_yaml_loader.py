@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from bearingcalc.errors import SpecError
-from bearingcalc.spec.yaml_loader import MAX_FILE_BYTES, load_documents
+from bearingcalc.models.yaml_loader import MAX_FILE_BYTES, load_documents
 
 
 def write(tmp_path, text, name="spec.yaml"):

@@ -397,7 +397,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
              wanted: Collection[str] | None = None) -> tuple[dict[str, NDArray], NDArray]:
     """Registry entry point: results, warning flags and status codes from SI inputs.
 
-    ``inputs`` (see :meth:`bearingcalc.spec.ball_bearing.BallBearingSpec.solver_inputs`)
+    ``inputs`` (see :meth:`bearingcalc.models.ball_bearing.BallBearingSpec.solver_inputs`)
     may leave optional groups out (None): ratings given or geometry, lubrication,
     load factors, limits. Which results exist depends only on which inputs are
     given, so specs stacked into one call share their result keys.

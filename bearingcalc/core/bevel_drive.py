@@ -140,7 +140,7 @@ def system_life(lives: list[NDArray]) -> NDArray:
 def evaluate(inputs: Mapping[str, Any],
              wanted: Collection[str] | None = None) -> tuple[dict[str, NDArray], NDArray]:
     """Registry entry point: the pair, each shaft's statics, each bearing's life and the
-    system's, with status codes (see :mod:`bearingcalc.spec.bevel_drive`)."""
+    system's, with status codes (see :mod:`bearingcalc.models.bevel_drive`)."""
     pair, status = bevel_gears.evaluate(inputs)
     out: dict[str, ArrayLike] = dict(pair)
     input_speed = np.abs(np.asarray(inputs["input_speed"], dtype=float))

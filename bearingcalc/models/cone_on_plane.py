@@ -6,7 +6,7 @@ from typing import Any, Literal
 
 from pydantic import Field
 
-from bearingcalc.spec.fields import Angle, AngularAccel, AngularSpeed, PositiveLength, SpecModel
+from bearingcalc.models.fields import Angle, AngularAccel, AngularSpeed, PositiveLength, SpecModel
 
 
 class ConeOnPlaneSpec(SpecModel):

@@ -8,7 +8,7 @@ from typing import Any, Literal
 from pydantic import Field, model_validator
 
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.spec.ball_bearing import (
+from bearingcalc.models.ball_bearing import (
     BallBearingLimits,
     BallBearingSpec,
     BearingFields,
@@ -16,14 +16,14 @@ from bearingcalc.spec.ball_bearing import (
     Reliability,
     UnitFraction,
 )
-from bearingcalc.spec.bevel_gears import BevelGearsLimits, BevelPair
-from bearingcalc.spec.fields import (
+from bearingcalc.models.bevel_gears import BevelGearsLimits, BevelPair
+from bearingcalc.models.fields import (
     AngularSpeed,
     Length,
     PositiveTime,
     Ratio,
 )
-from bearingcalc.spec.rules import own_problems, rule
+from bearingcalc.models.rules import own_problems, rule
 
 #: Keys of a ball-bearing spec that the drive sets for every bearing itself.
 _DRIVE_SETS = ("radial_load", "axial_load", "speed", "inner_speed", "outer_speed")

@@ -7,7 +7,7 @@ from typing import Any, Literal
 from pydantic import Field
 
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.spec.fields import (
+from bearingcalc.models.fields import (
     Angle,
     AngularSpeed,
     BallCount,
@@ -18,7 +18,7 @@ from bearingcalc.spec.fields import (
     Ratio,
     SpecModel,
 )
-from bearingcalc.spec.rules import rule
+from bearingcalc.models.rules import rule
 
 _GEOMETRY = ("ball size", "contact_angle", "pitch_radius")
 

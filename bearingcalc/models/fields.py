@@ -26,7 +26,7 @@ from pydantic import (
 )
 from pydantic.fields import FieldInfo
 
-from bearingcalc.spec.rules import problems_of
+from bearingcalc.models.rules import problems_of
 from bearingcalc.units import (
     ANGLE,
     ANGULAR_ACCEL,

@@ -9,7 +9,7 @@ from typing import Annotated, Any, Literal
 from pydantic import BeforeValidator, Field, WithJsonSchema
 
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.spec.fields import (
+from bearingcalc.models.fields import (
     Angle,
     AngularSpeed,
     PositiveLength,
@@ -21,7 +21,7 @@ from bearingcalc.spec.fields import (
     ranged_number,
     reliability,
 )
-from bearingcalc.spec.rules import rule
+from bearingcalc.models.rules import rule
 
 MOUNTING_FACTOR = {"both-straddle": 1.00, "one-straddle": 1.10, "neither-straddle": 1.25}
 

@@ -15,7 +15,7 @@ from bearingcalc.core.ball_bearing import (
     walther_viscosity,
 )
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.spec.fields import (
+from bearingcalc.models.fields import (
     Angle,
     AngularSpeed,
     BallCount,
@@ -33,7 +33,7 @@ from bearingcalc.spec.fields import (
     ranged_number,
     reliability,
 )
-from bearingcalc.spec.rules import rule
+from bearingcalc.models.rules import rule
 
 RELIABILITY_RANGE = (0.90, 0.9995)
 #: ISO 76:2006 6.1: the contact pressure at C0 of a ball bearing. [Pa]
