@@ -20,7 +20,7 @@ from pydantic import BaseModel, ValidationError
 
 from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind
-from bearingcalc.models.fields import SpecModel, nested_model
+from bearingcalc.models.base import SpecModel, nested_model
 from bearingcalc.models.rules import problems_despite
 from bearingcalc.models.yaml_loader import (
     Document,

@@ -20,7 +20,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 if TYPE_CHECKING:
-    from bearingcalc.models.fields import SpecModel
+    from bearingcalc.models.base import SpecModel
 
 #: Status of a design whose inputs are valid but whose results overflow double precision.
 OUT_OF_RANGE = 99
@@ -54,7 +54,7 @@ class Kind:
     @property
     def limit_fields(self) -> list[str]:
         """The fields of the spec's ``limits`` block, which set the margins (or none)."""
-        from bearingcalc.models.fields import nested_model
+        from bearingcalc.models.base import nested_model
 
         limits = self.model.model_fields.get("limits")
         held = nested_model(limits) if limits is not None else None

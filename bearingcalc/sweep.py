@@ -20,7 +20,7 @@ from pydantic import BaseModel
 
 from bearingcalc.errors import BearingcalcError, SpecError
 from bearingcalc.kinds import Kind
-from bearingcalc.models.fields import SpecModel, field_parser
+from bearingcalc.models.base import SpecModel, field_parser
 from bearingcalc.models.yaml_loader import Document, field_key_path
 from bearingcalc.variation import NOT_INPUTS, FieldPathError, evaluate_with, resolve_field
 from bearingcalc.wording import plural

@@ -25,6 +25,7 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
+from bearingcalc.number_grammar import DECIMAL, NUMBER
 from bearingcalc.wording import article
 
 
@@ -152,7 +153,7 @@ DISPLAY_UNITS: dict[str, tuple[str, float]] = {
 #: A number in plain ASCII digits (full-width digits and the like are refused, as the
 #: JSON Schema refuses them), then the unit text.
 _QUANTITY = re.compile(
-    r"^\s*(?P<number>[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*(?P<unit>\S.*?)?\s*$",
+    rf"^\s*(?P<number>{NUMBER})\s*(?P<unit>\S.*?)?\s*$",
     re.ASCII)
 #: A unit is words (with optional small whole exponents, ``^-1`` or ``⁻¹``) joined by
 #: *, / or spaces, the first of which may be a 1 over the rest (``1/min``); or ``%`` on
@@ -253,13 +254,13 @@ def _number_before_one(number: str, unit: str) -> str | None:
     if not unit.startswith("/") or not number.endswith("1"):
         return None
     rest = number[:-1]
-    return rest if re.fullmatch(r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)", rest, re.ASCII) else None
+    return rest if re.fullmatch(DECIMAL, rest, re.ASCII) else None
 
 
 def _plain_number(text: Any) -> float:
     """A plain number, as a YAML number or a string of one (with no unit)."""
     if isinstance(text, str) and len(text) <= MAX_QUANTITY_CHARS and re.fullmatch(
-            r"\s*[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?\s*", text, re.ASCII):
+            rf"\s*{NUMBER}\s*", text, re.ASCII):
         value = float(text)
     elif isinstance(text, (int, float)) and not isinstance(text, bool):
         value = float(text) if abs(text) < 1e300 else math.inf

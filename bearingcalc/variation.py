@@ -19,7 +19,8 @@ from pydantic import BaseModel
 from pydantic.fields import FieldInfo
 
 from bearingcalc.kinds import Kind
-from bearingcalc.models.fields import Measured, SpecModel, Tolerance, nested_model
+from bearingcalc.models.base import SpecModel, nested_model
+from bearingcalc.models.quantities import Measured, Tolerance
 from bearingcalc.models.yaml_loader import list_index
 from bearingcalc.wording import plural
 

@@ -74,7 +74,7 @@ def test_speed_notations_give_exactly_the_value_of_rpm(text):
 def test_speed_notations_in_tolerance_bands(text):
     from pydantic import TypeAdapter
 
-    from bearingcalc.models.fields import AngularSpeed
+    from bearingcalc.models.quantities import AngularSpeed
 
     value = TypeAdapter(AngularSpeed).validate_python(text)
     assert value == RPM_1500

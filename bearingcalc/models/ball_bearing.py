@@ -15,23 +15,20 @@ from bearingcalc.core.ball_bearing import (
     walther_viscosity,
 )
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.models.fields import (
+from bearingcalc.models.base import SpecModel
+from bearingcalc.models.materials import ElasticMaterial
+from bearingcalc.models.plain_numbers import BallCount, Ratio, ranged_number, reliability
+from bearingcalc.models.quantities import (
     Angle,
     AngularSpeed,
-    BallCount,
     Conformity,
-    ElasticMaterial,
     Force,
     PositiveForce,
     PositiveLength,
     PositiveStress,
     PositiveTime,
     PositiveViscosity,
-    Ratio,
-    SpecModel,
     Temperature,
-    ranged_number,
-    reliability,
 )
 from bearingcalc.models.rules import rule
 

@@ -17,12 +17,8 @@ from bearingcalc.models.ball_bearing import (
     UnitFraction,
 )
 from bearingcalc.models.bevel_gears import BevelGearsLimits, BevelPair
-from bearingcalc.models.fields import (
-    AngularSpeed,
-    Length,
-    PositiveTime,
-    Ratio,
-)
+from bearingcalc.models.plain_numbers import Ratio
+from bearingcalc.models.quantities import AngularSpeed, Length, PositiveTime
 from bearingcalc.models.rules import own_problems, rule
 
 #: Keys of a ball-bearing spec that the drive sets for every bearing itself.

@@ -9,26 +9,18 @@ from typing import Annotated, Any, Literal
 from pydantic import BeforeValidator, Field, WithJsonSchema
 
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.models.fields import (
-    Angle,
-    AngularSpeed,
-    PositiveLength,
-    PositivePower,
-    Ratio,
-    SpecModel,
-    ToothCount,
-    Torque,
-    ranged_number,
-    reliability,
-)
+from bearingcalc.models.base import SpecModel
+from bearingcalc.models.plain_numbers import Ratio, ToothCount, ranged_number, reliability
+from bearingcalc.models.quantities import Angle, AngularSpeed, PositiveLength, PositivePower, Torque
 from bearingcalc.models.rules import rule
+from bearingcalc.number_grammar import UNSIGNED_DECIMAL
 
 MOUNTING_FACTOR = {"both-straddle": 1.00, "one-straddle": 1.10, "neither-straddle": 1.25}
 
 
 def _hardness(value: Any) -> float:
     if isinstance(value, str):
-        match = re.fullmatch(r"\s*([0-9]+(?:\.[0-9]*)?)\s*(?:HB|HBW|BHN)\s*", value, re.ASCII)
+        match = re.fullmatch(rf"\s*({UNSIGNED_DECIMAL})\s*(?:HB|HBW|BHN)\s*", value, re.ASCII)
         if match is None:
             raise ValueError(f"write the Brinell hardness like '180 HB', got {value!r}")
         value = float(match[1])
@@ -41,7 +33,7 @@ def _hardness(value: Any) -> float:
 
 
 Hardness = Annotated[float, BeforeValidator(_hardness), WithJsonSchema({"anyOf": [
-    {"type": "string", "pattern": r"^\s*[0-9]+(\.[0-9]*)?\s*(HB|HBW|BHN)\s*$"},
+    {"type": "string", "pattern": rf"^\s*{UNSIGNED_DECIMAL}\s*(HB|HBW|BHN)\s*$"},
     {"type": "number", "minimum": 180, "maximum": 400}]})]
 RatingReliability = reliability(0.9, 0.9999, "AGMA 2003's K_R")
 

@@ -6,7 +6,8 @@ from typing import Any, Literal
 
 from pydantic import Field
 
-from bearingcalc.models.fields import Angle, AngularAccel, AngularSpeed, PositiveLength, SpecModel
+from bearingcalc.models.base import SpecModel
+from bearingcalc.models.quantities import Angle, AngularAccel, AngularSpeed, PositiveLength
 
 
 class ConeOnPlaneSpec(SpecModel):

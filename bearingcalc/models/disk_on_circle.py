@@ -6,7 +6,8 @@ from typing import Any, Literal
 
 from pydantic import Field
 
-from bearingcalc.models.fields import AngularAccel, AngularSpeed, PositiveLength, SpecModel
+from bearingcalc.models.base import SpecModel
+from bearingcalc.models.quantities import AngularAccel, AngularSpeed, PositiveLength
 
 
 class DiskOnCircleSpec(SpecModel):

@@ -7,17 +7,10 @@ from typing import Any, Literal
 from pydantic import Field
 
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.models.fields import (
-    Angle,
-    AngularSpeed,
-    BallCount,
-    BallMaterial,
-    Force,
-    PositiveLength,
-    PositiveStress,
-    Ratio,
-    SpecModel,
-)
+from bearingcalc.models.base import SpecModel
+from bearingcalc.models.materials import BallMaterial
+from bearingcalc.models.plain_numbers import BallCount, Ratio
+from bearingcalc.models.quantities import Angle, AngularSpeed, Force, PositiveLength, PositiveStress
 from bearingcalc.models.rules import rule
 
 _GEOMETRY = ("ball size", "contact_angle", "pitch_radius")

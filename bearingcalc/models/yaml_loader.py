@@ -21,6 +21,7 @@ from typing import Any, ClassVar
 import yaml
 
 from bearingcalc.errors import SpecError
+from bearingcalc.number_grammar import NUMBER
 
 MAX_FILE_BYTES = 1024 * 1024
 MAX_NODES = 10_000
@@ -47,8 +48,7 @@ _CORE_SCHEMA = {
     "tag:yaml.org,2002:int": (r"^(?:[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+)$",
                               list("-+0123456789")),
     "tag:yaml.org,2002:float": (
-        r"^(?:[-+]?(?:\.[0-9]+|[0-9]+(?:\.[0-9]*)?)(?:[eE][-+]?[0-9]+)?"
-        r"|[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN))$", list("-+.0123456789")),
+        rf"^(?:{NUMBER}|[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN))$", list("-+.0123456789")),
 }
 for _tag, (_pattern, _first) in _CORE_SCHEMA.items():
     _Yaml12Loader.add_implicit_resolver(_tag, re.compile(_pattern), _first)
@@ -355,7 +355,7 @@ def _core_value(tag: str, text: str) -> Any:
     special = {".inf": math.inf, "+.inf": math.inf, "-.inf": -math.inf, ".nan": math.nan}
     if text.lower() in special:
         return special[text.lower()]
-    if not re.fullmatch(r"[-+]?(?:\.[0-9]+|[0-9]+(?:\.[0-9]*)?)(?:[eE][-+]?[0-9]+)?", text):
+    if not re.fullmatch(NUMBER, text):
         raise ValueError(text)
     return float(text)
 

@@ -1,0 +1,96 @@
+"""The base of every spec model, and what the commands ask of a model's fields."""
+
+from __future__ import annotations
+
+import functools
+import math
+import typing
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict, ValidationInfo, model_validator
+from pydantic.fields import FieldInfo
+
+from bearingcalc.models.plain_numbers import _Count, _plain_number, _RangedNumber, _Reliability
+from bearingcalc.models.quantities import _Quantity
+from bearingcalc.models.rules import problems_of
+from bearingcalc.units import Dimension, parse_quantity
+
+
+class SpecModel(BaseModel):
+    """Base of spec models: unknown keys and non-finite numbers are refused.
+
+    A spec (a model with a ``kind``) checks its cross-field rules, and those of every
+    model it holds, once its fields are valid; it raises the first problem with the
+    others in its ``more``. Validating with ``context={"rules": False}`` skips them.
+    """
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, frozen=True,
+                              validate_default=False)
+
+    @model_validator(mode="after")
+    def _cross_field_rules(self, info: ValidationInfo) -> SpecModel:
+        if "kind" not in type(self).model_fields or (info.context or {}).get("rules") is False:
+            return self
+        problems = problems_of(self)
+        if problems:
+            problems[0].more = problems[1:]
+            raise problems[0]
+        return self
+
+
+def nested_model(info: FieldInfo) -> type[BaseModel] | None:
+    """The spec model a field holds (``gear_a`` -> Gear), or None for a plain value."""
+    return _model_in(info.annotation)
+
+
+def _model_in(annotation: Any) -> type[BaseModel] | None:
+    """The first pydantic model in a type annotation (``Gear``, ``list[Bearing] | None``)."""
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation
+    for arg in typing.get_args(annotation):
+        found = _model_in(arg)
+        if found is not None:
+            return found
+    return None
+
+
+def field_parser(info: FieldInfo) -> tuple[str, Any, str] | None:
+    """How to read a value of a spec field from text, for sweeps.
+
+    Returns ("quantity", text -> SI float, SI unit), ("integer", text -> int, "1"),
+    ("number", text -> float, "1"), or None for fields that are not numbers.
+    """
+    metadata = list(info.metadata)
+    for arg in typing.get_args(info.annotation):
+        metadata.extend(typing.get_args(arg)[1:])
+    for item in metadata:
+        func = getattr(item, "func", None)
+        if isinstance(func, _Quantity):
+            return ("quantity", functools.partial(_parse_as, dimension=func.dimension),
+                    func.dimension.si_unit)
+        if isinstance(func, _Count):
+            return "integer", _whole_number, "1"
+        if func is _plain_number or isinstance(func, (_RangedNumber, _Reliability)):
+            return "number", _finite_number, "1"
+    return None
+
+
+def _parse_as(text: str, dimension: Dimension) -> float:
+    return parse_quantity(text, dimension)
+
+
+def _whole_number(text: str) -> int:
+    try:
+        return int(text)
+    except ValueError:
+        raise ValueError(f"'{text}' is not a whole number") from None
+
+
+def _finite_number(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise ValueError(f"'{text}' is not a number") from None
+    if not math.isfinite(value):
+        raise ValueError(f"'{text}' is not a finite number")
+    return value
