@@ -1,4 +1,4 @@
-"""bearingcalc.sobol draws scipy.stats.qmc.Sobol's scrambled points bit for bit."""
+"""bearingcalc.tolerance.sobol draws scipy.stats.qmc.Sobol's scrambled points bit for bit."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from scipy.stats import qmc
 
-from bearingcalc.sobol import SobolStream, _lowest_zero_bits
+from bearingcalc.tolerance.sobol import SobolStream, _lowest_zero_bits
 
 
 @pytest.mark.parametrize("d", [1, 2, 3, 5, 14, 40])

@@ -240,7 +240,7 @@ class Study:
     def search_points(self) -> NDArray:
         """Where the worst case starts, in unit coordinates of the box: all 2^d corners
         (d <= MAX_CORNER_INPUTS), INTERIOR_POINTS scrambled Sobol' points, the centre."""
-        from bearingcalc.sobol import SobolStream
+        from bearingcalc.tolerance.sobol import SobolStream
 
         d = len(self.inputs)
         if d <= MAX_CORNER_INPUTS:
@@ -583,14 +583,14 @@ class SampleStream:
     """A uniform sample stream on (0, 1)^d from ``start`` on, drawn in pieces.
 
     ``sobol``: scrambled Sobol points, those of scipy.stats.qmc.Sobol bit for bit
-    (:mod:`bearingcalc.sobol`), from ``start`` on; ``random``: numpy's PCG64 advanced
+    (:mod:`bearingcalc.tolerance.sobol`), from ``start`` on; ``random``: numpy's PCG64 advanced
     to ``start``. Either way the points are those of one sequence, however it is cut.
     """
 
     def __init__(self, d: int, seed: int, sampler: str, start: int = 0) -> None:
         self.d = d
         if sampler == "sobol":
-            from bearingcalc.sobol import SobolStream
+            from bearingcalc.tolerance.sobol import SobolStream
 
             # scipy.stats.qmc.Sobol's points bit for bit, without importing scipy.stats.
             self.engine = SobolStream(d, seed, start)
@@ -615,7 +615,7 @@ class SampleStream:
 
 
 #: Normal draws in a study above which scipy.special.ndtri is worth its import (about
-#: 0.3 s); below it, bearingcalc.normal.ndtri, whose tails run per element in Python.
+#: 0.3 s); below it, bearingcalc.tolerance.normal.ndtri, whose tails run per element in Python.
 #: Both give the same bits, so the choice never shows in a result.
 SCIPY_NDTRI_ABOVE = 1 << 21
 
@@ -627,7 +627,7 @@ def normal_quantile_function(draws: int) -> Callable[..., NDArray]:
         from scipy.special import ndtri
 
         return ndtri  # type: ignore[no-any-return]
-    from bearingcalc.normal import ndtri as light_ndtri
+    from bearingcalc.tolerance.normal import ndtri as light_ndtri
 
     return light_ndtri
 
