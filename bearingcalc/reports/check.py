@@ -1,0 +1,97 @@
+"""The reports of ``check``: a verdict per spec as a table, JSON Lines or JUnit XML."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Iterable, Sequence
+from typing import IO, TYPE_CHECKING, Any
+
+from bearingcalc.reports.formatting import console, format_number, safe_text
+from bearingcalc.wording import plural, printable
+
+if TYPE_CHECKING:  # the report type only; its module loads with the command
+    from bearingcalc.batch import CheckRecord
+
+
+def check_record_json(record: CheckRecord) -> dict[str, Any]:
+    """The JSON object of one check verdict."""
+    return {"spec": record.spec, "kind": record.kind, "name": record.name,
+            "status": record.status, "messages": record.messages, "margins": record.margins}
+
+
+def write_check_json_lines(records: Iterable[CheckRecord], stream: IO[str]) -> None:
+    """One JSON object per verdict per line; non-finite numbers are refused."""
+    for record in records:
+        stream.write(json.dumps(check_record_json(record), allow_nan=False,
+                                ensure_ascii=False) + "\n")
+
+
+def write_junit(records: Sequence[CheckRecord], stream: IO[str]) -> None:
+    """JUnit XML: one testcase per spec; ``fail`` as failure, ``invalid`` as error."""
+    from xml.etree import ElementTree
+
+    failures = sum(r.status == "fail" for r in records)
+    errors = sum(r.status == "invalid" for r in records)
+    suites = ElementTree.Element("testsuites", name="bearingcalc check", tests=str(len(records)),
+                                 failures=str(failures), errors=str(errors))
+    suite = ElementTree.SubElement(suites, "testsuite", name="bearingcalc check",
+                                   tests=str(len(records)), failures=str(failures),
+                                   errors=str(errors), skipped="0")
+    for record in records:
+        case = ElementTree.SubElement(suite, "testcase", classname=record.kind or "spec",
+                                      name=printable(record.spec),
+                                      file=printable(record.spec.split("#")[0]))
+        text = "\n".join(printable(message) for message in record.messages)
+        if record.status == "fail":
+            ElementTree.SubElement(case, "failure", message=printable(_first(record.messages)),
+                                   type="limit").text = text
+        elif record.status == "invalid":
+            ElementTree.SubElement(case, "error", message=printable(_first(record.messages)),
+                                   type="invalid").text = text
+    ElementTree.indent(suites)
+    stream.write('<?xml version="1.0" encoding="UTF-8"?>\n')
+    stream.write(ElementTree.tostring(suites, encoding="unicode") + "\n")
+
+
+def print_check_table(records: Sequence[CheckRecord], *, show_all: bool,
+                      stream: IO[str] | None = None, many: int = 50) -> None:
+    """One row per spec (only fail/invalid rows past ``many`` specs unless ``show_all``),
+    then a summary line with the counts."""
+    from rich.table import Table
+
+    out = console(stream)
+    shown = records if show_all or len(records) <= many else [
+        r for r in records if r.status != "pass"]
+    if shown:
+        table = Table(show_edge=False)
+        for column in ("status", "file", "name", "kind", "governing margin / problem"):
+            table.add_column(column, overflow="fold")
+        colours = {"pass": "green", "fail": "red", "invalid": "magenta"}
+        for record in shown:
+            governing = record.governing_margin
+            if record.status == "invalid":
+                detail = _first(record.messages)
+            elif governing is None:
+                detail = "no limits judged"
+            else:
+                detail = f"{governing[0]} = {format_number(governing[1])}"
+            table.add_row(f"[{colours[record.status]}]{record.status.upper()}[/]",
+                          safe_text(record.spec), safe_text(record.name or ""),
+                          record.kind or "", safe_text(_without_source(detail, record.spec)))
+        out.print(table)
+    counts = {status: sum(r.status == status for r in records)
+              for status in ("pass", "fail", "invalid")}
+    hidden = len(records) - len(shown)
+    note = f" ({hidden} passing not shown; --all shows them)" if hidden else ""
+    out.print(f"{plural(len(records), 'spec')}: [green]{counts['pass']} pass[/], "
+              f"[red]{counts['fail']} fail[/], "
+              f"[magenta]{counts['invalid']} invalid[/]{note}")
+
+
+def _without_source(message: str, source: str) -> str:
+    """A problem without its leading 'file:' (the file column says it), keeping ':line:'."""
+    return message[len(source):].lstrip(":") if message.startswith(source + ":") else message
+
+
+def _first(messages: Sequence[str]) -> str:
+    return messages[0] if messages else ""

@@ -1,0 +1,153 @@
+"""The reports of ``solve``: a table per evaluation (engineering units), JSON Lines and
+CSV (SI)."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+from collections.abc import Iterable, Mapping, Sequence
+from typing import IO, TYPE_CHECKING, Any
+
+from bearingcalc.reports.formatting import console, format_number, safe_text
+from bearingcalc.units import to_display
+from bearingcalc.wording import printable
+
+if TYPE_CHECKING:  # the report types only; their modules load with their commands
+    from bearingcalc.evaluation import Evaluation
+    from bearingcalc.kinds import Kind
+
+
+def evaluation_record(evaluation: Evaluation) -> dict[str, Any]:
+    """The JSON object of one evaluation (SI values)."""
+    return {
+        "spec": evaluation.source,
+        "kind": evaluation.kind,
+        "name": evaluation.name,
+        "results": evaluation.results,
+        "units": evaluation.units,
+        "within_limits": evaluation.within_limits,
+        "warnings": evaluation.warnings,
+    }
+
+
+def write_json_lines(evaluations: Iterable[Evaluation], stream: IO[str]) -> None:
+    """One JSON object per evaluation per line; non-finite numbers are refused."""
+    for evaluation in evaluations:
+        stream.write(json.dumps(evaluation_record(evaluation), allow_nan=False,
+                                ensure_ascii=False) + "\n")
+
+
+def write_csv(evaluations: Sequence[Evaluation], stream: IO[str]) -> None:
+    """One row per evaluation, SI units in the header; columns are the union of keys."""
+    columns: dict[str, str] = {}
+    for evaluation in evaluations:
+        for key, unit in evaluation.units.items():
+            columns.setdefault(key, unit)
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(["spec", "kind", "name", "within_limits",
+                     *(f"{key} [{unit}]" for key, unit in columns.items())])
+    for evaluation in evaluations:
+        values = [evaluation.results.get(key) for key in columns]
+        writer.writerow([printable(evaluation.source), evaluation.kind,
+                         printable(evaluation.name),
+                         str(evaluation.within_limits).lower(),
+                         *("" if value is None else repr(value) for value in values)])
+    stream.write(buffer.getvalue())
+
+
+def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
+                 stream: IO[str] | None = None) -> None:
+    """A table per evaluation in engineering units, with a PASS/FAIL verdict.
+
+    ``kinds`` maps a kind's name to its registry entry, which gives each result's
+    meaning, the headings that group a long table and any table units of its own.
+    The verdict is written in words, so the table reads the same without colour.
+    """
+    from rich.table import Table
+
+    out = console(stream)
+    for evaluation in evaluations:
+        kind = kinds[evaluation.kind]
+        table = Table(title=safe_text(f"{evaluation.name}  ({evaluation.kind}, "
+                                      f"{evaluation.source})"),
+                      title_justify="left")
+        table.add_column("result")
+        table.add_column("value", justify="right")
+        table.add_column("unit")
+        table.add_column("meaning", style="dim")
+        in_matrices = {f"{row}_{column}" for rows, columns in kind.matrices.values()
+                       for row in rows for column in columns}
+        shown = {key: value for key, value in evaluation.results.items()
+                 if key not in in_matrices}
+        for heading, keys in _grouped(shown, kind.groups):
+            if heading:
+                table.add_row(f"[bold]{heading}[/]", end_section=False)
+            for key in keys:
+                value = evaluation.results[key]
+                unit, factor = kind.display.get(key) or to_display(1.0, evaluation.units[key])[::-1]
+                shown = "unbounded" if value is None else format_number(value * factor)
+                style = "bold" if key in evaluation.margins else None
+                table.add_row(key, shown, unit, kind.results[key][1], style=style)
+            if heading:
+                table.add_section()
+        out.print(table)
+        for heading, (rows, columns) in kind.matrices.items():
+            _print_matrix(out, evaluation, heading, rows, columns)
+        if not evaluation.margins:
+            out.print(f"[bold green]PASS[/]: {safe_text(_no_margins(kind))}")
+        elif evaluation.within_limits:
+            out.print("[bold green]PASS[/]: within limits")
+        else:
+            out.print(f"[bold red]FAIL[/]: {safe_text('; '.join(evaluation.violations))}")
+        for warning in evaluation.warnings:
+            out.print(f"[yellow]warning[/]: {safe_text(warning)}")
+        out.print()
+
+
+def _no_margins(kind: Kind) -> str:
+    """Why a design with no margins passes: its kind has no limits, or none were given."""
+    fields = kind.limit_fields
+    if not fields:
+        return "this kind has no limits"
+    named = ", ".join(f"limits.{name}" for name in fields[:-1]) + f" or limits.{fields[-1]}"
+    return f"no limits judged: none given that applies to this design; the spec can set {named}"
+
+
+def _print_matrix(out: Any, evaluation: Evaluation, heading: str, rows: Sequence[str],
+                  columns: Sequence[str]) -> None:
+    """Results named ``{row}_{column}`` as a table with a row per member; nothing when the
+    evaluation has none of them."""
+    from rich.table import Table
+
+    present = [row for row in rows if any(f"{row}_{c}" in evaluation.results for c in columns)]
+    if not present:
+        return
+    table = Table(title=heading, title_justify="left")
+    table.add_column("")
+    for column in columns:
+        unit = to_display(1.0, evaluation.units.get(f"{present[0]}_{column}", "1"))[1]
+        table.add_column(safe_text(f"{column} [{unit}]" if unit else column), justify="right")
+    for row in present:
+        cells = []
+        for column in columns:
+            value = evaluation.results.get(f"{row}_{column}")
+            key = f"{row}_{column}"
+            cells.append("" if value is None else format_number(
+                to_display(value, evaluation.units[key])[0]))
+        table.add_row(row, *cells)
+    out.print(table)
+
+
+def _grouped(results: Mapping[str, Any], groups: Mapping[str, Sequence[str]]
+             ) -> list[tuple[str, list[str]]]:
+    """(heading, keys) in table order: each group's results that are present, then the
+    rest under no heading; one unnamed group when the kind has no headings."""
+    if not groups:
+        return [("", list(results))]
+    placed = [(heading, [key for key in keys if key in results])
+              for heading, keys in groups.items()]
+    grouped = {key for _, keys in placed for key in keys}
+    rest = [key for key in results if key not in grouped]
+    return [(heading, keys) for heading, keys in placed if keys] + ([("", rest)] if rest else [])

@@ -1,0 +1,139 @@
+"""The report of ``tolerance``: worst case, RSS and Monte Carlo side by side in a table
+(engineering units), or the study's record as JSON (SI)."""
+
+from __future__ import annotations
+
+import json
+from typing import IO, TYPE_CHECKING, Any
+
+from bearingcalc.reports.formatting import console, format_number, safe_text
+from bearingcalc.units import to_display
+
+if TYPE_CHECKING:  # the report type only; its module loads with the command
+    from bearingcalc.tolerance import StudyReport
+
+
+def write_tolerance_json(report: StudyReport, stream: IO[str]) -> None:
+    """The study's record as one line of JSON; non-finite numbers are refused."""
+    stream.write(json.dumps(report.record, allow_nan=False, ensure_ascii=False) + "\n")
+
+
+def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) -> None:
+    """Worst case, RSS and Monte Carlo side by side (engineering units), the contribution
+    table of the governing result, the yield and verdict, and a terminal histogram."""
+    from rich import box
+    from rich.markup import escape
+    from rich.table import Table
+
+    record = report.record
+    out = console(stream)
+    units = record["units"]
+    out.print(f"[bold]{safe_text(record['name'] or record['spec'])}[/] ({record['kind']}, "
+              f"{safe_text(record['spec'])})")
+
+    inputs = Table(title="toleranced inputs", title_justify="left")
+    for column in ("input", "nominal", "low", "high", "unit", "distribution", "σ"):
+        inputs.add_column(column, no_wrap=True, justify="left" if column in (
+            "input", "unit", "distribution") else "right")
+    for name, entry in record["inputs"].items():
+        shown = [to_display(entry[k], units[name]) for k in ("nominal", "low", "high", "std")]
+        inputs.add_row(name, *(format_number(v) for v, _ in shown[:3]), shown[0][1],
+                       entry["distribution"], format_number(shown[3][0]))
+    out.print(inputs)
+
+    table = Table(title="results: worst case, RSS and Monte Carlo side by side",
+                  title_justify="left", box=box.SIMPLE_HEAD, pad_edge=False)
+    for column in ("result", "nominal", "worst case\nmin\nmax", "RSS\nmean\nσ",
+                   "Monte\nCarlo\nmean\nσ", "MC\nquantile\n0.135 %\n99.865 %"):
+        table.add_column(column, justify="left" if column == "result" else "right",
+                         no_wrap=True)
+    results = record["results"]
+    for key in report.governing:
+        entry = results[key]
+        unit = to_display(0.0, units[key])[1]
+
+        def cell(*values: float | None, key: str = key) -> str:
+            if any(v is None for v in values):
+                return ""
+            # Four digits keep six columns in 80; the JSON carries every digit.
+            return "\n".join(f"{to_display(v, units[key])[0]:.4g}" for v in values)
+
+        wc, rss, mc = (entry.get(m) or {} for m in ("worst_case", "rss", "monte_carlo"))
+        table.add_row(escape(f"{key}\n[{unit}]") if unit else key, cell(entry["nominal"]),
+                      cell(wc.get("min"), wc.get("max")), cell(rss.get("mean"), rss.get("std")),
+                      cell(mc.get("mean"), mc.get("std")),
+                      cell(mc.get("p00135"), mc.get("p99865")))
+    out.print(table)
+
+    others = [key for key in results if key not in report.governing]
+    if others and _ran(results, "worst_case"):
+        rest = Table(title="other results at worst case (all methods: --format json)",
+                     title_justify="left")
+        for column in ("result", "unit", "nominal", "min", "max"):
+            rest.add_column(column, justify="left" if column in ("result", "unit") else "right",
+                            no_wrap=True)
+        for key in others:
+            wc = results[key].get("worst_case") or {}
+            shown = [to_display(v, units[key]) if v is not None else (None, "")
+                     for v in (results[key]["nominal"], wc.get("min"), wc.get("max"))]
+            rest.add_row(key, to_display(0.0, units[key])[1],
+                         *("" if v is None else format_number(v) for v, _ in shown))
+        out.print(rest)
+
+    lead = report.governing[0] if report.governing else None
+    rss_lead = (results.get(lead) or {}).get("rss") if lead else None
+    if rss_lead and rss_lead.get("contributions"):
+        shares = Table(title=f"which tolerance dominates {lead} (RSS)", title_justify="left")
+        for column in ("input", "share", "∂f/∂x · σ"):
+            shares.add_column(column, justify="left" if column == "input" else "right")
+        ranked = sorted(rss_lead["contributions"].items(), key=lambda kv: -kv[1])
+        for name, share in ranked:
+            effect = rss_lead["sensitivities"][name] * record["inputs"][name]["std"]
+            shares.add_row(name, f"{100 * share:.2f} %", format_number(
+                to_display(effect, units[lead])[0]))
+        out.print(shares)
+
+    if "yield" in record:
+        cpk = "n/a" if record["cpk"] is None else f"{record['cpk']:.3f}"
+        out.print(f"Monte Carlo: {record['samples']} samples ({record['sampler']}, seed "
+                  f"{record['seed']}): yield {100 * record['yield']:.4f} %, "
+                  f"{record['ppm_out']:.1f} ppm out of spec, Cpk {cpk}, "
+                  f"{record['infeasible_samples']} impossible designs")
+    verdict = report.within_limits
+    if verdict is True:
+        out.print("[bold green]PASS[/]: every margin stays within its limit"
+                  + (" at worst case" if _ran(results, "worst_case") else ""))
+    elif verdict is False:
+        reached = [f"{m} reaches {format_number(results[m]['worst_case']['min'])}"
+                   for m in report.margins if (results[m].get("worst_case") or {}).get("min")
+                   is not None and results[m]["worst_case"]["min"] < 0]
+        out.print("[bold red]FAIL[/]: the tolerances can take a margin past its limit"
+                  + (f" ({'; '.join(reached)} at worst case)" if reached else ""))
+    for warning in record["warnings"]:
+        out.print(f"[yellow]warning[/]: {safe_text(warning)}")
+    if lead and lead in report.histograms:
+        _terminal_histogram(out, lead, report, units[lead])
+
+
+def _ran(results: dict[str, Any], method: str) -> bool:
+    return any(method in entry for entry in results.values())
+
+
+def _terminal_histogram(out: Any, key: str, report: StudyReport, si_unit: str,
+                        rows: int = 12, width: int = 40) -> None:
+    """A small sideways histogram of ``key``'s Monte Carlo samples."""
+    from bearingcalc.tolerance import coarse_histogram
+
+    lows, highs, totals = coarse_histogram(*report.histograms[key], rows)
+    if totals.size == 0:
+        return
+    unit = to_display(0.0, si_unit)[1]
+    out.print()
+    out.print(safe_text(f"{key}{f' [{unit}]' if unit else ''}, Monte Carlo histogram:"))
+    peak = int(totals.max()) or 1
+    for low, high, total in zip(lows, highs, totals.tolist(), strict=True):
+        bar = "█" * round(width * total / peak)
+        out.print(f"{format_number(to_display(low, si_unit)[0]):>12} … "
+                  f"{format_number(to_display(high, si_unit)[0]):<12} {bar} {total}")
+
+
