@@ -21,11 +21,10 @@ from pydantic import BaseModel, ValidationError
 from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind
 from bearingcalc.models.base import SpecModel, nested_model
+from bearingcalc.models.field_path import FieldPath
 from bearingcalc.models.rules import problems_despite
 from bearingcalc.models.yaml_loader import (
     Document,
-    dotted_name,
-    field_key_path,
     load_documents,
 )
 from bearingcalc.wording import did_you_mean, plural
@@ -83,9 +82,9 @@ def parse_document(document: Document) -> tuple[Kind, SpecModel]:
 def _rule_error(document: Document, problem: SpecFieldError) -> SpecError:
     """A rule's problem at the line of its field, or of the key it belongs to when the
     field is not in the spec (a missing key)."""
-    key_path = field_key_path(problem.field)
+    key_path = FieldPath.parse(problem.field).parts
     if problem.at is not None and key_path not in document.lines:
-        key_path = field_key_path(problem.at)
+        key_path = FieldPath.parse(problem.at).parts
     return document.error(problem.message, field=problem.field, key_path=key_path)
 
 
@@ -230,7 +229,7 @@ def _judge(document: Document, kind: Kind, spec: SpecModel, raw: dict[str, float
     if code:
         name, reason = kind.status_reasons[code]
         name = getattr(spec, "field_as_written", lambda field: field)(name)
-        written = _value_at(document.data, name)
+        written = FieldPath.parse(name).get(document.data)
         got = f", got {written}" if isinstance(written, (str, int, float)) else ""
         raise document.error(f"{reason}{got}", field=name)
     results: dict[str, float | None] = {}
@@ -251,18 +250,6 @@ def _judge(document: Document, kind: Kind, spec: SpecModel, raw: dict[str, float
     return Evaluation(document.source, kind.name, name, results, units, margins, warnings)
 
 
-def _value_at(data: Any, dotted: str) -> Any:
-    """The value at a dotted field name of a document (list items 1-based), or None."""
-    for key in field_key_path(dotted):
-        if isinstance(key, int) and isinstance(data, list) and 0 <= key < len(data):
-            data = data[key]
-        elif isinstance(key, str) and isinstance(data, dict):
-            data = data.get(key)
-        else:
-            return None
-    return data
-
-
 def _default_name(document: Document) -> str:
     stem = Path(document.path).stem
     return stem if document.source == document.path else f"{stem}#{document.index}"
@@ -271,7 +258,7 @@ def _default_name(document: Document) -> str:
 def _one_problem(document: Document, model: type[SpecModel], error: Any) -> SpecError:
     key_path = tuple(error["loc"])
     loc = tuple(str(part) for part in key_path)
-    dotted = dotted_name(key_path)
+    dotted = str(FieldPath(key_path))
     kind, message = error["type"], str(error["msg"])
     if kind == "extra_forbidden":
         parent = _model_at(model, loc[:-1])

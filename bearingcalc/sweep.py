@@ -21,8 +21,9 @@ from pydantic import BaseModel
 from bearingcalc.errors import BearingcalcError, SpecError
 from bearingcalc.kinds import Kind
 from bearingcalc.models.base import SpecModel, field_parser
-from bearingcalc.models.yaml_loader import Document, field_key_path
-from bearingcalc.variation import NOT_INPUTS, FieldPathError, evaluate_with, resolve_field
+from bearingcalc.models.field_path import NOT_INPUTS, FieldPath, FieldPathError, resolve_field
+from bearingcalc.models.yaml_loader import Document
+from bearingcalc.variation import evaluate_with
 from bearingcalc.wording import plural
 
 MAX_POINTS = 4_000_000
@@ -75,7 +76,7 @@ class Sweep:
 
 
 #: The name is any text without spaces, so that a misspelt one is explained by
-#: :func:`bearingcalc.variation.resolve_field` rather than refused as a whole.
+#: :func:`bearingcalc.models.field_path.resolve_field` rather than refused as a whole.
 _VARY = re.compile(r"^\s*(?P<name>[^\s=:]+)\s*=\s*(?P<start>[^:]+):(?P<stop>[^:]+):"
                    r"(?P<count>\s*[0-9]{1,12}\s*)$")
 
@@ -162,7 +163,7 @@ def check_axes(document: Document, axes: list[Axis]) -> None:
     for corner in itertools.product(*((0, len(axis.values) - 1) for axis in axes)):
         data = copy.deepcopy(document.data)
         for axis, i in zip(axes, corner, strict=True):
-            _set_dotted(data, axis.name, _as_written(axis, axis.values[i]))
+            FieldPath.parse(axis.name).set_in(data, _as_written(axis, axis.values[i]))
         try:
             parse_document(dataclasses.replace(document, data=data))
         except SpecError as error:
@@ -176,15 +177,6 @@ def _as_written(axis: Axis, value: Any) -> Any:
     if axis.integer:
         return int(value)
     return f"{float(value)!r} {axis.unit}" if axis.unit != "1" else float(value)
-
-
-def _set_dotted(data: Any, dotted: str, value: Any) -> None:
-    """Set a dotted field of document data (list items 1-based) that ``resolve_field``
-    has found in the spec, so every list and item it names is there."""
-    *parents, last = field_key_path(dotted)
-    for key in parents:
-        data = data[key] if isinstance(key, int) else data.setdefault(key, {})
-    data[last] = value
 
 
 def run_sweep(kind: Kind, spec: SpecModel, source: str, axes: list[Axis]) -> Sweep:

@@ -3,22 +3,20 @@ byte (see tests/golden/cases.py)."""
 
 from __future__ import annotations
 
-import shutil
-
 import pytest
 
-from tests.golden.cases import HOSTILE_FOLDER, RECORDS, ROOT, cases, run, write_hostile_sample
+from tests.golden.cases import RECORDS, cases, run, stage
 
 CASES = cases()
 
 
 @pytest.fixture(scope="module")
-def at_root():
-    write_hostile_sample(ROOT)
+def at_root(tmp_path_factory):
+    root = tmp_path_factory.mktemp("golden")
+    stage(root)
     with pytest.MonkeyPatch.context() as patch:
-        patch.chdir(ROOT)
+        patch.chdir(root)
         yield
-    shutil.rmtree(ROOT / HOSTILE_FOLDER)
 
 
 def test_every_case_has_a_record_and_every_record_a_case():

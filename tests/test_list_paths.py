@@ -10,8 +10,8 @@ import re
 import pytest
 
 from bearingcalc.evaluation import load_one_spec
-from bearingcalc.models.yaml_loader import dotted_name, field_key_path, list_index
-from bearingcalc.variation import FieldPathError, field_value, resolve_field
+from bearingcalc.models.field_path import FieldPath, FieldPathError, list_index, resolve_field
+from bearingcalc.variation import field_value
 from tests.conftest import ROOT
 
 DRIVE = ROOT / "specs" / "bevel-drive.yaml"
@@ -133,9 +133,10 @@ def test_resolve_field_names_items_from_one_and_reports_what_is_left_out(spec_fi
 def test_only_ascii_digits_name_list_items():
     assert [list_index(part) for part in ("1", "02", "0", "２", "²", "-1", "x", "")] == [
         0, 1, -1, None, None, None, None, None]
-    assert field_key_path("pinion_bearings.2.position") == ("pinion_bearings", 1, "position")
-    assert field_key_path("pinion_bearings.².position") == ("pinion_bearings", "²", "position")
-    assert dotted_name(field_key_path("pinion_bearings.02.position")) == (
+    assert FieldPath.parse("pinion_bearings.2.position").parts == ("pinion_bearings", 1, "position")
+    assert FieldPath.parse("pinion_bearings.².position").parts == (
+        "pinion_bearings", "²", "position")
+    assert str(FieldPath.parse("pinion_bearings.02.position")) == (
         "pinion_bearings.2.position")
 
 

@@ -21,6 +21,7 @@ from typing import Any, ClassVar
 import yaml
 
 from bearingcalc.errors import SpecError
+from bearingcalc.models.field_path import FieldPath
 from bearingcalc.number_grammar import NUMBER
 
 MAX_FILE_BYTES = 1024 * 1024
@@ -86,28 +87,8 @@ class Document:
               key_path: KeyPath | None = None) -> SpecError:
         """A SpecError located at ``key_path`` (default: the dotted ``field``)."""
         if key_path is None:
-            key_path = field_key_path(field) if field else ()
+            key_path = FieldPath.parse(field).parts if field else ()
         return SpecError(message, source=self.source, line=self.line_of(key_path), field=field)
-
-
-def list_index(part: str) -> int | None:
-    """The 0-based list index that a part of a dotted field name names (``"2"`` -> 1),
-    or None when the part is not a whole number in ASCII digits. Items count from 1,
-    so ``"0"`` gives -1, which is no item."""
-    return int(part) - 1 if part.isascii() and part.isdigit() else None
-
-
-def field_key_path(dotted: str) -> KeyPath:
-    """The key path of a dotted field name; list items are named by their 1-based index
-    (``pinion_bearings.1.position`` is item 0 of the list)."""
-    return tuple(part if (index := list_index(part)) is None else index
-                 for part in dotted.split("."))
-
-
-def dotted_name(key_path: tuple[Any, ...]) -> str:
-    """The dotted field name of a key path, list items by their 1-based index."""
-    return ".".join(str(part + 1) if isinstance(part, int) else str(part)
-                    for part in key_path)
 
 
 def read_spec_text(path: str | os.PathLike[str]) -> str:

@@ -60,8 +60,13 @@ def _sweep(path: str, stem: str) -> list[str]:
     raise KeyError(stem)
 
 
-def write_hostile_sample(root: Path) -> None:
-    """The sampled hostile files, under ``root / HOSTILE_FOLDER`` (made for each run)."""
+def stage(root: Path) -> None:
+    """A copy of what the cases read, under ``root``: the example specs, the templates and
+    the sampled hostile files (so that runs never write into the repository)."""
+    import shutil
+
+    shutil.copytree(ROOT / "specs", root / "specs")
+    shutil.copytree(ROOT / "bearingcalc" / "templates", root / "bearingcalc" / "templates")
     folder = root / HOSTILE_FOLDER
     folder.mkdir(parents=True, exist_ok=True)
     for name, data in _hostile_sample().items():
@@ -76,18 +81,16 @@ def run(argv: list[str]) -> str:
 
 def record() -> None:
     import os
-    import shutil
+    import tempfile
 
-    os.chdir(ROOT)
-    write_hostile_sample(ROOT)
-    try:
+    with tempfile.TemporaryDirectory() as folder:
+        stage(Path(folder))
+        os.chdir(folder)
         RECORDS.mkdir(exist_ok=True)
         for old in RECORDS.glob("*.txt"):
             old.unlink()
         for name, argv in cases().items():
             (RECORDS / f"{name}.txt").write_text(run(argv), encoding="utf-8")
-    finally:
-        shutil.rmtree(ROOT / HOSTILE_FOLDER)
 
 
 if __name__ == "__main__":
