@@ -259,20 +259,20 @@ def _one_problem(document: Document, model: type[SpecModel], error: Any) -> Spec
     key_path = tuple(error["loc"])
     loc = tuple(str(part) for part in key_path)
     dotted = str(FieldPath(key_path))
-    kind, message = error["type"], str(error["msg"])
-    if kind == "extra_forbidden":
+    error_type, message = error["type"], str(error["msg"])
+    if error_type == "extra_forbidden":
         parent = _model_at(model, loc[:-1])
         known = list(parent.model_fields) if parent else []
         message = f"unknown key '{loc[-1]}'{did_you_mean(loc[-1], known)}"
         if not did_you_mean(loc[-1], known):
             message += f"; allowed keys: {', '.join(k for k in known if k != 'kind')}"
-    elif kind == "missing":
+    elif error_type == "missing":
         example = _example(model, loc)
         message = f"missing required key '{loc[-1]}'" + (f", e.g. {loc[-1]}: {example}"
                                                         if example else "")
-    elif kind in ("model_type", "model_attributes_type", "dict_type"):
+    elif error_type in ("model_type", "model_attributes_type", "dict_type"):
         message = f"must be a mapping of keys, got {error.get('input')!r}"
-    elif kind == "literal_error":
+    elif error_type == "literal_error":
         message = f"{message}, got {error.get('input')!r}"
     else:
         message = message.removeprefix("Value error, ")

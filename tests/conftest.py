@@ -35,10 +35,13 @@ def csv_column(text: str, header: str) -> list[float]:
 
 
 def solve_json(cli, path) -> list[dict]:
-    """The JSON records of `bearingcalc solve PATH --format json` (exit 0 or 1)."""
+    """The JSON records of `bearingcalc solve PATH --format json`, whose exit status
+    must be 1 exactly when a record is outside its limits."""
     run = cli("solve", path, "--format", "json")
-    assert run.code in (0, 1), run.err
-    return [json.loads(line) for line in run.out.splitlines()]
+    records = [json.loads(line) for line in run.out.splitlines()]
+    assert records, run.err
+    assert run.code == (0 if all(r["within_limits"] for r in records) else 1), run.err
+    return records
 
 
 @pytest.fixture

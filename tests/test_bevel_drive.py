@@ -141,7 +141,7 @@ def test_sweep_of_the_bearing_spacing(cli, tmp_path):
 def test_tolerance_gives_the_system_life_yield(cli):
     run = cli("tolerance", ROOT / "specs" / "tolerances" / "bevel-drive.yaml", "-n", "4096",
               "-r", "system_modified_rating_life", "-f", "json")
-    assert run.code in (0, 1), run.err
+    assert run.code == 1, run.err  # the yield is below 1: some samples fail the life
     record = json.loads(run.out)
     assert 0 < record["yield"] < 1
     assert set(record["inputs"]) == {"torque", "pinion_bearings.2.position"}
