@@ -1,4 +1,5 @@
-"""Every hostile case of the generated corpus through every command (issue: hardening).
+"""Every hostile case of the generated corpus, through the evaluation API and (a sample)
+through every command.
 
 solve, check, tolerance and sweep must each refuse each case with lines that name
 the file (and the line, where the document could be read), exit status 2, no

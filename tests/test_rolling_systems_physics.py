@@ -152,7 +152,7 @@ def test_cone_on_plane_matches_symbolic_differentiation_of_a_rotation_matrix():
 
 
 def test_bevel_pitch_angle_of_a_12_24_pair_at_90_degrees():
-    # Golden value (issue 3): arctan(12/24) = 26.565°.
+    # The pitch angle of a 12/24 pair at 90°: arctan(12/24) = 26.565°.
     alpha, beta = pitch_angles(12, 24, np.radians(90.0))
     assert_allclose(np.degrees(alpha), 26.565, atol=5e-4)
     assert_allclose(np.degrees(alpha), np.degrees(np.arctan(0.5)), rtol=1e-14)
