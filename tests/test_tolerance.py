@@ -1,7 +1,8 @@
-"""Tolerance studies against independent computations (issue: tolerance studies)."""
+"""Tolerance studies against independent computations."""
 
 from __future__ import annotations
 
+import importlib
 import json
 import math
 
@@ -14,6 +15,11 @@ from bearingcalc.core.thrust_bearing import solve_thrust_bearing
 from bearingcalc.evaluation import parse_document
 from bearingcalc.models.yaml_loader import load_documents
 from bearingcalc.tolerance import BLOCK, HISTOGRAM_BINS, Study
+from bearingcalc.tolerance.monte_carlo import monte_carlo
+from bearingcalc.tolerance.rss import rss
+from bearingcalc.tolerance.sampling import draw
+from bearingcalc.tolerance.sensitivity import sobol_indices
+from bearingcalc.tolerance.worst_case import refine_with_lbfgsb, worst_case
 from tests.conftest import ROOT
 
 TB = """kind: thrust-bearing
@@ -48,7 +54,7 @@ def linear_disk(spec_file, disk="600 rad/s ± 6 rad/s", ring="-100 rad/s ± 3 ra
 
 def test_worst_case_bounds_a_dense_grid_and_finds_the_interior_maximum(spec_file):
     study = study_of(spec_file, TB)
-    wc = study.worst_case()
+    wc = worst_case(study)
     d, theta, b = np.meshgrid(np.linspace(0.012695, 0.012705, 31),
                               np.radians(np.linspace(29.75, 30.25, 31)),
                               np.linspace(0.02597, 0.02603, 31), indexing="ij")
@@ -88,15 +94,15 @@ def lbfgsb_worst_case(study: Study) -> dict[str, dict[str, float]]:
     for key in study.keys:
         for sense, sign in (("min", 1.0), ("max", -1.0)):
             start = unit[np.nanargmin(sign * results[key])]
-            found.setdefault(key, {})[sense] = sign * study._refine(key, sign, start, low,
-                                                                    width)[1]
+            found.setdefault(key, {})[sense] = sign * refine_with_lbfgsb(study, key, sign,
+                                                                         start, low, width)[1]
     return found
 
 
 @pytest.mark.parametrize("path", EXAMPLE_STUDIES, ids=lambda p: p.stem)
 def test_worst_case_is_as_extreme_as_lbfgsb_on_every_example(path):
     study = example_study(path)
-    ours, reference = study.worst_case(), lbfgsb_worst_case(study)
+    ours, reference = worst_case(study), lbfgsb_worst_case(study)
     for key, entry in reference.items():
         for sense in ("min", "max"):
             scale = max(abs(entry[sense]), abs(ours[key][sense]), 1e-300)
@@ -110,7 +116,7 @@ def test_worst_case_is_as_extreme_as_lbfgsb_on_every_example(path):
 
 def test_a_monotonic_result_has_its_extremes_at_corners_exactly(spec_file):
     study = linear_disk(spec_file)
-    wc = study.worst_case()["center_speed"]
+    wc = worst_case(study)["center_speed"]
     # center_speed = R·Ω − r·ω falls with ω and rises with Ω.
     assert wc["min"] == R_RING * -103 - R_DISK * 606
     assert wc["max"] == R_RING * -97 - R_DISK * 594
@@ -118,12 +124,19 @@ def test_a_monotonic_result_has_its_extremes_at_corners_exactly(spec_file):
 
 
 def test_extremes_with_many_free_inputs_go_to_lbfgsb(spec_file, monkeypatch):
-    from bearingcalc import tolerance
-
+    search = importlib.import_module("bearingcalc.tolerance.worst_case")
     study = study_of(spec_file, TB)
-    zoomed = study.worst_case()
-    monkeypatch.setattr(tolerance, "GRID_MAX_FREE", 0)
-    refined = study.worst_case()
+    zoomed = worst_case(study)
+    refined_keys = []
+
+    def counted(study, key, *args):
+        refined_keys.append(key)
+        return refine_with_lbfgsb(study, key, *args)
+
+    monkeypatch.setattr(search, "GRID_MAX_FREE", 0)
+    monkeypatch.setattr(search, "refine_with_lbfgsb", counted)
+    refined = worst_case(study)
+    assert "slip_margin" in refined_keys   # its maximum is inside the box: not monotonic
     for key in ("slip_margin", "ball_speed", "spin_to_roll"):
         for sense in ("min", "max"):
             assert_allclose(refined[key][sense], zoomed[key][sense], rtol=1e-12, atol=1e-18)
@@ -152,32 +165,32 @@ def test_histogram_bins_are_the_clipped_floors_on_both_counting_paths():
     accumulator = _Accumulator(5.0, pilot)
     inside = rng.uniform(pilot.min(), pilot.max(), BLOCK)            # the fast path
     outside = np.concatenate([rng.normal(5.0, 9.0, BLOCK - 2),       # both overflow bins
-                              [accumulator.edge, np.nextafter(accumulator.edge, 0.0)]])
+                              [accumulator.bins.edge, np.nextafter(accumulator.bins.edge, 0.0)]])
     scratch = _Scratch()
     for chunk in (inside, outside, np.full(BLOCK, 5.25)):
         accumulator.add(chunk, scratch)
     values = np.concatenate([inside, outside, np.full(BLOCK, 5.25)])
-    index = np.floor((values - accumulator.edge) * (1.0 / accumulator.width))
+    index = np.floor((values - accumulator.bins.edge) * (1.0 / accumulator.bins.width))
     expected = np.bincount((np.clip(index, -1, HISTOGRAM_BINS) + 1).astype(np.int64),
                            minlength=HISTOGRAM_BINS + 2)
-    assert np.array_equal(accumulator.counts, expected)
+    assert np.array_equal(accumulator.bins.counts, expected)
     assert expected[0] > 0 and expected[-1] > 0
 
 
 def test_rss_is_exact_for_a_linear_result(spec_file):
     study = linear_disk(spec_file)
-    rss = study.rss()["center_speed"]
+    spread = rss(study)["center_speed"]
     sigma_disk, sigma_ring = 6 / 3, 3 / 3
     exact = math.hypot(R_RING * sigma_ring, R_DISK * sigma_disk)
-    assert_allclose(rss["std"], exact, rtol=1e-9)
-    assert_allclose(rss["mean"], R_RING * -100 - R_DISK * 600, rtol=1e-12)
-    shares = rss["contributions"]
+    assert_allclose(spread["std"], exact, rtol=1e-9)
+    assert_allclose(spread["mean"], R_RING * -100 - R_DISK * 600, rtol=1e-12)
+    shares = spread["contributions"]
     assert_allclose(shares["surface_speed"], (R_RING * sigma_ring) ** 2 / exact**2, rtol=1e-9)
 
 
 def test_rss_derivatives_match_plain_finite_differences(spec_file):
     study = study_of(spec_file, TB)
-    rss = study.rss()["spin_to_roll"]
+    spread = rss(study)["spin_to_roll"]
     center = {"d": 0.0127, "theta": math.radians(30), "b": 0.026}
     sigma = {"d": 0.005e-3 / 3, "theta": math.radians(0.25) / 3, "b": 0.03e-3 / 3}
 
@@ -191,14 +204,14 @@ def test_rss_derivatives_match_plain_finite_differences(spec_file):
         up[name] += h
         down[name] -= h
         terms.append(((rho(**up) - rho(**down)) / (2 * h) * sigma[name]) ** 2)
-    assert_allclose(rss["std"], math.sqrt(sum(terms)), rtol=1e-6)
+    assert_allclose(spread["std"], math.sqrt(sum(terms)), rtol=1e-6)
 
 
 @pytest.mark.parametrize("distribution", ["normal", "uniform", "triangular"])
 def test_monte_carlo_moments_of_a_linear_result_are_analytic(spec_file, distribution):
     disk = f"{{nominal: 600 rad/s, tolerance: 6 rad/s, distribution: {distribution}}}"
     study = linear_disk(spec_file, disk=disk)
-    mc = study.monte_carlo(1 << 17, keys=["center_speed"])
+    mc = monte_carlo(study, 1 << 17, keys=["center_speed"])
     stats = mc.stats["center_speed"]
     disk_std = {"normal": 2.0, "uniform": 12 / math.sqrt(12), "triangular": 12 / math.sqrt(24)}
     exact_std = math.hypot(R_RING * 1.0, R_DISK * disk_std[distribution])
@@ -211,10 +224,10 @@ def test_monte_carlo_agrees_with_rss_for_small_tolerances(spec_file):
     small = TB.replace("0.005 mm", "0.00005 mm").replace("0.25 deg", "0.0025 deg").replace(
         "0.03 mm", "0.0003 mm")
     study = study_of(spec_file, small)
-    rss = study.rss()["spin_to_roll"]
-    mc = study.monte_carlo(1 << 16, keys=["spin_to_roll"]).stats["spin_to_roll"]
-    assert_allclose(mc["std"], rss["std"], rtol=5e-3)
-    assert abs(mc["mean"] - rss["mean"]) < 1e-2 * rss["std"]
+    spread = rss(study)["spin_to_roll"]
+    mc = monte_carlo(study, 1 << 16, keys=["spin_to_roll"]).stats["spin_to_roll"]
+    assert_allclose(mc["std"], spread["std"], rtol=5e-3)
+    assert abs(mc["mean"] - spread["mean"]) < 1e-2 * spread["std"]
 
 
 def test_yield_matches_the_analytic_probability(spec_file):
@@ -227,7 +240,7 @@ arm_speed: 100 rpm
 limits: {max_apex_mismatch: 0.001}
 """
     study = study_of(spec_file, text)
-    mc = study.monte_carlo(1 << 18, keys=["apex_mismatch"])
+    mc = monte_carlo(study, 1 << 18, keys=["apex_mismatch"])
     c = math.sin(math.radians(30)) / (0.015 * math.sin(math.radians(60)))
     low, high = (1 - 0.001) / c, (1 + 0.001) / c
     sigma = 0.06e-3 / 3
@@ -239,7 +252,7 @@ limits: {max_apex_mismatch: 0.001}
 
 def test_sobol_indices_of_an_additive_function(spec_file):
     study = linear_disk(spec_file)
-    indices = study.sobol(1 << 16)["center_speed"]
+    indices = sobol_indices(study, 1 << 16)["center_speed"]
     variance = (R_RING * 1.0) ** 2 + (R_DISK * 2.0) ** 2
     expected = {"surface_speed": (R_RING * 1.0) ** 2 / variance,
                 "disk_speed": (R_DISK * 2.0) ** 2 / variance}
@@ -252,20 +265,20 @@ def test_sobol_indices_of_an_additive_function(spec_file):
 def test_same_seed_same_answer_whatever_the_chunks_and_threads(spec_file, sampler):
     study = study_of(spec_file, TB)
     samples = 5 * BLOCK + 1234
-    runs = [study.monte_carlo(samples, seed=7, sampler=sampler, chunk=chunk, threads=threads)
+    runs = [monte_carlo(study, samples, seed=7, sampler=sampler, chunk=chunk, threads=threads)
             for chunk, threads in ((BLOCK, 1), (4 * BLOCK, 2), (2 * BLOCK, 3))]
     for run in runs[1:]:
         assert run.stats == runs[0].stats
         assert run.passed == runs[0].passed
-    other_seed = study.monte_carlo(samples, seed=8, sampler=sampler)
+    other_seed = monte_carlo(study, samples, seed=8, sampler=sampler)
     assert other_seed.stats["spin_to_roll"]["mean"] != runs[0].stats["spin_to_roll"]["mean"]
 
 
 def test_quantiles_are_within_one_histogram_bin_of_the_exact_ones(spec_file):
     study = study_of(spec_file, TB)
     samples = 3 * BLOCK
-    mc = study.monte_carlo(samples, keys=["spin_to_roll"])
-    values, _ = study.evaluate(study.draw(0, samples, 0, "sobol"), ["spin_to_roll"])
+    mc = monte_carlo(study, samples, keys=["spin_to_roll"])
+    values, _ = study.evaluate(draw(study.inputs, 0, samples, 0, "sobol"), ["spin_to_roll"])
     exact = values["spin_to_roll"]
     pilot = exact[:BLOCK]
     bin_width = 3 * (pilot.max() - pilot.min()) / HISTOGRAM_BINS
@@ -280,7 +293,7 @@ def test_quantiles_are_within_one_histogram_bin_of_the_exact_ones(spec_file):
 def test_impossible_samples_count_as_out_of_spec_and_never_crash(spec_file):
     text = TB.replace("30 deg ± 0.25 deg", "44 deg ± 3 deg")
     study = study_of(spec_file, text)
-    mc = study.monte_carlo(1 << 16, keys=["spin_to_roll"])
+    mc = monte_carlo(study, 1 << 16, keys=["spin_to_roll"])
     assert 0 < mc.infeasible < mc.samples
     assert mc.passed <= mc.samples - mc.infeasible
     assert all(v is None or math.isfinite(v) for v in mc.stats["spin_to_roll"].values())
@@ -408,9 +421,9 @@ def test_limit_exceeded_at_worst_case_exits_1(cli, spec_file):
 
 def test_sobol_gives_no_numbers_where_designs_are_impossible_or_results_constant(spec_file):
     study = study_of(spec_file, TB.replace("30 deg ± 0.25 deg", "44 deg ± 3 deg"))
-    indices = study.sobol(1 << 12, keys=["spin_to_roll", "shaft_speed"])
+    indices = sobol_indices(study, 1 << 12, keys=["spin_to_roll", "shaft_speed"])
     assert indices["spin_to_roll"] == "impossible designs in the sample"
-    feasible = study_of(spec_file, TB).sobol(1 << 12, keys=["spin_to_roll", "shaft_speed"])
+    feasible = sobol_indices(study_of(spec_file, TB), 1 << 12, keys=["spin_to_roll", "shaft_speed"])
     assert feasible["shaft_speed"] == "does not vary with the tolerances"
     assert abs(sum(feasible["spin_to_roll"]["first_order"].values()) - 1) < 0.05
 

@@ -1,0 +1,147 @@
+"""Monte Carlo: statistics of every result, the yield and the process capability over
+drawn designs, streamed in chunks by parallel threads.
+
+Samples are drawn and solved in chunks, and only running statistics are kept, so
+memory does not grow with the number of samples. The sample stream is one
+sequence, whatever the chunk size or the number of threads: chunk k starts the
+Sobol stream at its first sample, or advances the PCG64 generator, to its first
+sample. Sums are taken per fixed block of ``BLOCK`` samples and added exactly
+(``math.fsum``), and histogram counts are integers, so the statistics do not
+depend on chunking or threads either.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable, Sequence
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from bearingcalc.tolerance.accumulator import BLOCK, _Accumulator, _Scratch
+from bearingcalc.tolerance.sampling import SampleStream, designs_at, normal_quantile_function
+from bearingcalc.tolerance.study import Study, StudyError
+
+
+@dataclass
+class MonteCarloResult:
+    """Monte Carlo statistics of every result, the yield and the process capability."""
+
+    samples: int
+    seed: int
+    sampler: str
+    stats: dict[str, dict[str, float | None]]
+    histograms: dict[str, tuple[NDArray, NDArray]]   # key -> (bin edges, counts)
+    passed: int
+    infeasible: int
+
+    @property
+    def yield_fraction(self) -> float:
+        return self.passed / self.samples
+
+    @property
+    def ppm_out(self) -> float:
+        return 1e6 * (self.samples - self.passed) / self.samples
+
+
+def monte_carlo(study: Study, samples: int, seed: int = 0, sampler: str = "sobol", *,
+                chunk: int = 2 * BLOCK, threads: int = 2, keys: Sequence[str] | None = None,
+                progress: Callable[[int], None] | None = None) -> MonteCarloResult:
+    """Statistics of every result (or of ``keys``) over ``samples`` drawn designs.
+
+    The blocks of the sample stream are shared among ``threads`` workers in
+    contiguous runs; each worker walks its run chunk by chunk with its own
+    sample engine and statistics, and the statistics are merged at the end.
+    numpy and scipy.special release the GIL, so the workers run in parallel.
+    """
+    if samples < 2:
+        raise StudyError("--samples must be at least 2")
+    if chunk % BLOCK:
+        raise StudyError(f"the chunk size must be a multiple of {BLOCK}")
+    keys = list(keys or study.keys)
+    limits = study.limit_values
+    d = len(study.inputs)
+    normal_draws = samples * sum(item.tolerance.distribution == "normal"
+                                 for item in study.inputs)
+    quantile = normal_quantile_function(normal_draws)
+    # The pilot is the stream's first block: it sets the histogram ranges, and its
+    # results are then counted as that block instead of being solved again.
+    pilot_count = min(samples, BLOCK)
+    pilot_uniform = SampleStream(d, seed, sampler, 0).next(pilot_count)
+    pilot, pilot_status = study.evaluate(designs_at(study.inputs, pilot_uniform, quantile),
+                                         keys)
+    template = {key: _Accumulator(study.nominal[key], pilot[key]) for key in keys}
+    blocks = -(-samples // BLOCK)
+    workers = max(1, min(threads, blocks))
+    bounds = [blocks * w // workers for w in range(workers + 1)]
+
+    stop_now = threading.Event()
+
+    def work(first_block: int, end_block: int) -> tuple[dict[str, _Accumulator], int, int]:
+        accumulators = {key: acc.empty_like() for key, acc in template.items()}
+        scratch = _Scratch()
+        passed = infeasible = 0
+        start, stop = first_block * BLOCK, min(end_block * BLOCK, samples)
+
+        def count(results: dict[str, NDArray], status: NDArray, size: int) -> None:
+            nonlocal passed, infeasible
+            ok = study.kind.within_limits(results, status)
+            for key in keys:
+                accumulators[key].add(results[key], scratch)
+            passed += int(np.count_nonzero(ok))
+            infeasible += int(np.count_nonzero(status))
+            if progress:
+                progress(size)
+
+        if start == 0 and start < stop:
+            count(pilot, pilot_status, pilot_count)
+            start = pilot_count
+        stream = SampleStream(d, seed, sampler, start)
+        while start < stop and not stop_now.is_set():
+            size = min(chunk, stop - start)
+            designs = designs_at(study.inputs, stream.next(size), quantile)
+            results, status = study.evaluate(designs, keys)
+            count(results, status, size)
+            start += size
+        return accumulators, passed, infeasible
+
+    pool = ThreadPoolExecutor(max_workers=workers)
+    try:
+        futures = [pool.submit(work, bounds[w], bounds[w + 1]) for w in range(workers)]
+        outcomes = [future.result() for future in futures]
+    except BaseException:
+        # Ctrl-C: the workers stop at their next chunk (a fraction of a second)
+        # instead of running the study to its end.
+        stop_now.set()
+        raise
+    finally:
+        pool.shutdown(wait=False, cancel_futures=True)
+    merged = template
+    passed = sum(outcome[1] for outcome in outcomes)
+    infeasible = sum(outcome[2] for outcome in outcomes)
+    for accumulators, _, _ in outcomes:
+        for key in keys:
+            merged[key].merge(accumulators[key])
+    stats = {key: merged[key].summary() for key in keys}
+    for key, limit in limits.items():
+        if key in stats:
+            stats[key]["cpk"] = _cpk(stats[key], limit)
+    histograms = {key: merged[key].histogram() for key in keys}
+    return MonteCarloResult(samples, seed, sampler, stats, histograms, passed, infeasible)
+
+
+def smallest_cpk(study: Study, mc: MonteCarloResult) -> float | None:
+    """The smallest Cpk over the kind's limits, or None without limits."""
+    values = [mc.stats[key].get("cpk") for key in study.kind.limits if key in mc.stats]
+    finite = [v for v in values if v is not None]
+    return min(finite) if finite else None
+
+
+def _cpk(stats: dict[str, float | None], limit: float) -> float | None:
+    """Cpk = min(L − μ, μ + L) / 3σ of a result held to |x| <= L; None without a spread."""
+    mean, std = stats.get("mean"), stats.get("std")
+    if mean is None or std is None or std <= 0:
+        return None
+    return min(limit - mean, mean + limit) / (3.0 * std)

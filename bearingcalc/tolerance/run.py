@@ -1,0 +1,139 @@
+"""Running a tolerance study: the chosen methods, the record they fill (the JSON
+contract) and its verdict against the spec's limits."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from numpy.typing import NDArray
+
+from bearingcalc.kinds import Kind
+from bearingcalc.models.base import SpecModel
+from bearingcalc.tolerance.monte_carlo import monte_carlo, smallest_cpk
+from bearingcalc.tolerance.rss import rss
+from bearingcalc.tolerance.sampling import SAMPLERS, SOBOL_MAX_SAMPLES
+from bearingcalc.tolerance.sensitivity import sobol_indices
+from bearingcalc.tolerance.study import Study, StudyError
+from bearingcalc.tolerance.worst_case import worst_case
+from bearingcalc.units import to_display
+
+METHODS = ("worst-case", "rss", "monte-carlo")
+
+
+@dataclass
+class StudyReport:
+    """Everything a tolerance run found: the contract's JSON object and the histograms."""
+
+    record: dict[str, Any]
+    histograms: dict[str, tuple[NDArray, NDArray]]
+    governing: list[str]
+    limits: dict[str, float]
+    margins: tuple[str, ...]
+
+    @property
+    def within_limits(self) -> bool | None:
+        """Whether every margin stays >= 0: at worst case if run, else in every sample."""
+        results = self.record["results"]
+        if self.record.get("impossible_in_box") or self.record.get("infeasible_samples"):
+            return False  # a box holding impossible designs never passes
+        if not self.margins:
+            return None
+        worst = [results[m].get("worst_case", {}).get("min") for m in self.margins]
+        if all(w is not None for w in worst):
+            return all(w >= 0 for w in worst)  # type: ignore[operator]
+        if "yield" in self.record:
+            return bool(self.record["yield"] == 1.0)  # Monte Carlo alone: every sample
+        return None
+
+
+def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str],
+              samples: int = 100_000, seed: int = 0, sampler: str = "sobol",
+              sobol: bool = False, results: Sequence[str] = (), threads: int = 2,
+              progress: Callable[[int], None] | None = None) -> StudyReport:
+    """Run the chosen methods and assemble the report (SI units throughout).
+
+    ``results`` narrows Monte Carlo and Sobol to those result keys (and names the
+    governing results); worst case and RSS always cover every result.
+    """
+    if not methods:
+        raise StudyError(f"--method names no method; use one or more of {', '.join(METHODS)}")
+    unknown = [m for m in methods if m not in METHODS]
+    if unknown:
+        raise StudyError(f"unknown method {unknown[0]!r}; use {', '.join(METHODS)}")
+    if sampler not in SAMPLERS:
+        raise StudyError(f"unknown sampler {sampler!r}; use {' or '.join(SAMPLERS)}")
+    if sampler == "sobol" and "monte-carlo" in methods and samples > SOBOL_MAX_SAMPLES:
+        raise StudyError(f"--samples {samples} is more than the {SOBOL_MAX_SAMPLES} distinct "
+                         "Sobol' points of 30 bits; use --sampler random for more")
+    study = Study(kind, spec)
+    missing = [key for key in results if key not in study.keys]
+    if missing:
+        raise StudyError(f"--result {missing[0]!r} is not a result of this {kind.name} spec; "
+                         f"choose from {', '.join(study.keys)}")
+    governing = list(results) or [key for key in kind.governing if key in study.keys]
+    focus = list(results) or study.keys
+    record: dict[str, Any] = {
+        "spec": source, "kind": kind.name, "name": getattr(spec, "name", None),
+        "inputs": study.input_summary(),
+        "results": {key: {"nominal": value} for key, value in study.nominal.items()},
+        "units": {**{key: kind.results[key][0] for key in study.keys},
+                  **{item.name: item.tolerance.unit for item in study.inputs}},
+        "warnings": [],
+    }
+    if "worst-case" in methods:
+        for key, entry in worst_case(study).items():
+            record["results"][key]["worst_case"] = entry
+    else:
+        # Every method must know when the box crosses a validity edge, not only the
+        # worst case: RSS at the centre and a lucky sample would otherwise pass it.
+        study.scan_box()
+    if study.box_impossible is not None:
+        box = study.box_impossible
+        record["impossible_in_box"] = box
+        at = ", ".join("{} = {:.6g} {}".format(name, *to_display(value, record["units"][name]))
+                       for name, value in box["inputs"].items())
+        covers = ("worst case covers only the possible part, and " if "worst-case" in methods
+                  else "")
+        record["warnings"].append(
+            f"{100 * box['fraction']:.3g} % of the worst-case search of the tolerance box "
+            f"are impossible designs, e.g. at {at} ({box['reason']}); {covers}the study "
+            "fails")
+    if "rss" in methods:
+        for key, entry in rss(study).items():
+            record["results"][key]["rss"] = entry
+    histograms: dict[str, tuple[NDArray, NDArray]] = {}
+    if "monte-carlo" in methods:
+        mc = monte_carlo(study, samples, seed, sampler, threads=threads,
+                         keys=list(dict.fromkeys([*focus, *study.margins])),
+                         progress=progress)
+        for key, stats in mc.stats.items():
+            record["results"][key]["monte_carlo"] = stats
+        record.update({"samples": samples, "seed": seed, "sampler": sampler,
+                       "yield": mc.yield_fraction, "ppm_out": mc.ppm_out,
+                       "cpk": smallest_cpk(study, mc), "infeasible_samples": mc.infeasible})
+        if mc.infeasible:
+            record["warnings"].append(f"{mc.infeasible} of {samples} samples are impossible "
+                                      "designs; they count as out of spec")
+        histograms = mc.histograms
+    if sobol:
+        for key, entry in sobol_indices(study, samples, seed, focus).items():
+            if isinstance(entry, str):
+                record["warnings"].append(f"{key}: no Sobol indices, {entry}")
+            else:
+                record["results"][key]["sobol"] = entry
+    return StudyReport(_finite(record), histograms, governing, study.limit_values,
+                       tuple(study.margins))
+
+
+def _finite(value: Any) -> Any:
+    """The record with every non-finite float replaced by None (JSON has no NaN)."""
+    if isinstance(value, dict):
+        return {key: _finite(item) for key, item in value.items()}
+    if isinstance(value, list):
+        return [_finite(item) for item in value]
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value

@@ -1,0 +1,139 @@
+"""A tolerance study of one spec: its toleranced inputs, the tolerance box they span,
+and the evaluation of whole arrays of designs that every method calls."""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from bearingcalc.errors import BearingcalcError
+from bearingcalc.kinds import Kind
+from bearingcalc.models.base import SpecModel
+from bearingcalc.models.quantities import Tolerance
+from bearingcalc.tolerance.sobol import SobolStream
+from bearingcalc.variation import evaluate_with, field_value, toleranced_fields
+
+#: Designs in the interior of the box, besides its corners, that seed the worst-case search.
+INTERIOR_POINTS = 1 << 10
+MAX_CORNER_INPUTS = 14
+
+
+class StudyError(BearingcalcError):
+    """A tolerance study that cannot be run as asked (no tolerances, bad options)."""
+
+
+@dataclass
+class StudyInput:
+    """One toleranced spec field."""
+
+    name: str
+    tolerance: Tolerance
+
+    @property
+    def low(self) -> float:
+        return self.tolerance.low
+
+    @property
+    def high(self) -> float:
+        return self.tolerance.high
+
+
+@dataclass
+class Study:
+    """A tolerance study of one spec."""
+
+    kind: Kind
+    spec: SpecModel
+    inputs: list[StudyInput] = field(init=False)
+    nominal: dict[str, float] = field(init=False)
+    #: impossible designs met by the worst-case search of the box (see worst_case)
+    box_impossible: dict[str, Any] | None = field(init=False, default=None)
+
+    def __post_init__(self) -> None:
+        self.inputs = [StudyInput(name, tol) for name, tol in toleranced_fields(self.spec).items()]
+        if not self.inputs:
+            raise StudyError("the spec has no tolerances: give one on any input with a unit, "
+                             "like 'contact_angle: 20 deg ± 0.25 deg'")
+        results, _ = evaluate_with(self.kind, self.spec, {})
+        self.nominal = {key: float(value) for key, value in results.items()}
+
+    @property
+    def keys(self) -> list[str]:
+        """Every numeric result of the kind that this spec has."""
+        return list(self.nominal)
+
+    @property
+    def limit_values(self) -> dict[str, float]:
+        """Result key -> its symmetric limit value from the spec."""
+        return self.kind.limit_values(self.spec.solver_inputs())  # type: ignore[attr-defined]
+
+    @property
+    def margins(self) -> list[str]:
+        """The kind's margins that this spec has (a margin needs its limit)."""
+        return [key for key in self.kind.margins if key in self.nominal]
+
+    def evaluate(self, columns: NDArray, keys: Sequence[str] | None = None
+                 ) -> tuple[dict[str, NDArray], NDArray]:
+        """Results ``keys`` (default all; NaN where infeasible) and status codes at the
+        designs in the rows of ``columns`` (n, d)."""
+        keys = self.keys if keys is None else keys
+        values = {item.name: columns[:, i] for i, item in enumerate(self.inputs)}
+        wanted = {*keys, *self.margins}
+        results, status = evaluate_with(self.kind, self.spec, values, wanted)
+        bad = status != 0
+        if not bad.any():  # the usual chunk: nothing to blank, no copies
+            shape = np.broadcast_shapes(status.shape, *(np.shape(results[k]) for k in wanted))
+            return {key: np.broadcast_to(results[key], shape) for key in wanted}, status
+        return {key: np.where(bad, np.nan, results[key]) for key in wanted}, status
+
+    def box(self) -> tuple[NDArray, NDArray]:
+        """(low, width) of the tolerance box, input by input. [SI]"""
+        return (np.array([item.low for item in self.inputs]),
+                np.array([item.high - item.low for item in self.inputs]))
+
+    def search_points(self) -> NDArray:
+        """Where the worst case starts, in unit coordinates of the box: all 2^d corners
+        (d <= MAX_CORNER_INPUTS), INTERIOR_POINTS scrambled Sobol' points, the centre."""
+        d = len(self.inputs)
+        if d <= MAX_CORNER_INPUTS:
+            corners = np.array(list(itertools.product((0.0, 1.0), repeat=d)))
+        else:
+            corners = np.empty((0, d))
+        interior = SobolStream(d, 0).next(INTERIOR_POINTS)
+        return np.vstack([corners, interior, np.full((1, d), 0.5)])
+
+    def scan_box(self, unit: NDArray | None = None) -> tuple[dict[str, NDArray], NDArray]:
+        """Results and status at the box's ``search_points`` (or ``unit``); records in
+        ``box_impossible`` how much of the box is impossible designs."""
+        low, width = self.box()
+        unit = self.search_points() if unit is None else unit
+        results, status = self.evaluate(low + unit * width)
+        self.box_impossible = self._impossible_part(unit, status, low, width)
+        return results, status
+
+    def _impossible_part(self, unit: NDArray, status: NDArray, low: NDArray,
+                         width: NDArray) -> dict[str, Any] | None:
+        """How much of the worst-case search of the box hit impossible designs, and one
+        of them (the first corner or point found) with the reason; None when none did."""
+        bad = np.flatnonzero(status != 0)
+        if bad.size == 0:
+            return None
+        first = int(bad[0])
+        field, why = self.kind.status_reasons[int(status[first])]
+        return {"fraction": bad.size / status.size,
+                "inputs": {item.name: float(low[i] + unit[first, i] * width[i])
+                           for i, item in enumerate(self.inputs)},
+                "reason": f"{field}: {why}" if field else why}
+
+    def input_summary(self) -> dict[str, dict[str, Any]]:
+        """The JSON ``inputs`` object: nominal, band, distribution and std of each input."""
+        return {item.name: {"nominal": float(field_value(self.spec, item.name)),
+                            "low": item.low, "high": item.high,
+                            "distribution": item.tolerance.distribution,
+                            "std": item.tolerance.std}
+                for item in self.inputs}
