@@ -8,11 +8,9 @@ from __future__ import annotations
 
 import os
 import sys
-import traceback
-from collections.abc import Callable
 from enum import Enum
 from pathlib import Path
-from typing import Annotated, BinaryIO, TextIO, TypeVar
+from typing import Annotated, TextIO
 
 # pydantic scans installed packages for plugins on its first model; bearingcalc uses
 # none, and the scan costs about 20 ms of every command's start.
@@ -20,19 +18,29 @@ os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
 
 import typer
 
+from bearingcalc.cli_output import (
+    EXIT_INVALID,
+    EXIT_LIMIT,
+    EXIT_OK,
+    check_plot_name,
+    emit,
+    errors_as_exit,
+    output_target,
+    plot_target,
+    print_error,
+    refuse_unwritable,
+    stage_plot,
+    with_progress,
+    write_stdout,
+)
 from bearingcalc.errors import SpecError
-from bearingcalc.output import StagedFiles, Target, check_targets, reason
-from bearingcalc.wording import did_you_mean, printable
-
-T = TypeVar("T")
+from bearingcalc.output import StagedFiles
+from bearingcalc.wording import did_you_mean
 
 app = typer.Typer(add_completion=False, pretty_exceptions_enable=False, no_args_is_help=True,
                   context_settings={"help_option_names": ["-h", "--help"]},
                   help="Rolling-contact machine design: thrust bearings, bevel gears and more.")
 
-EXIT_OK, EXIT_LIMIT, EXIT_INVALID = 0, 1, 2
-#: A closed output pipe whose run's status is unknown: the shell's 128 + SIGPIPE.
-EXIT_BROKEN_PIPE = 141
 MAX_JOBS_PER_CORE = 4
 #: Most Monte Carlo samples: 1e10 takes about half an hour on two cores.
 MAX_SAMPLES = 10**10
@@ -57,8 +65,8 @@ def _print_version(value: bool) -> None:
     if value:
         from bearingcalc import __version__
 
-        with _errors_as_exit(debug=False):
-            _write_stdout(lambda stream: stream.write(f"bearingcalc {__version__}\n"))
+        with errors_as_exit(debug=False):
+            write_stdout(lambda stream: stream.write(f"bearingcalc {__version__}\n"))
         raise typer.Exit(EXIT_OK)
 
 
@@ -92,7 +100,7 @@ def solve(
     debug: DebugOption = False,
 ) -> None:
     """Solve each spec and report every speed, the spin-to-roll ratio and the slip margin."""
-    with _errors_as_exit(debug):
+    with errors_as_exit(debug):
         from bearingcalc import reports
         from bearingcalc.evaluation import Evaluation, evaluate_file
         from bearingcalc.kinds import KINDS
@@ -103,7 +111,7 @@ def solve(
             for outcome in evaluate_file(path):
                 if isinstance(outcome, SpecError):
                     invalid = True
-                    _print_error(outcome)
+                    print_error(outcome)
                 else:
                     evaluations.append(outcome)
 
@@ -116,7 +124,7 @@ def solve(
             else:
                 reports.print_tables(evaluations, KINDS, stream)
 
-        _write_stdout(write)
+        write_stdout(write)
         if invalid:
             raise typer.Exit(EXIT_INVALID)
         if not all(evaluation.within_limits for evaluation in evaluations):
@@ -149,14 +157,14 @@ def check(
 
     Exit status: 0 all pass; 1 some fail and none invalid; 2 any invalid.
     """
-    with _errors_as_exit(debug):
+    with errors_as_exit(debug):
         from bearingcalc import batch, reports
 
         workers = _workers(jobs)
         entries = batch.discover(paths)
-        report = _output_target(output, "report", _CHECK_SUFFIXES[output_format])
-        _refuse_unwritable("check", batch.files_read(entries), report)
-        records = _with_progress(lambda tick: batch.check_entries(entries, workers, tick))
+        report = output_target(output, "report", _CHECK_SUFFIXES[output_format])
+        refuse_unwritable("check", batch.files_read(entries), report)
+        records = with_progress(lambda tick: batch.check_entries(entries, workers, tick))
 
         def write(stream: TextIO) -> None:
             if output_format is CheckFormat.json:
@@ -167,7 +175,7 @@ def check(
                 reports.print_check_table(records, show_all=show_all, stream=stream)
 
         with StagedFiles() as files:
-            _emit(write, report, files)
+            emit(write, report, files)
         raise typer.Exit(batch.exit_status(records))
 
 
@@ -188,8 +196,8 @@ def schema(
               file=sys.stderr)
         raise typer.Exit(EXIT_INVALID)
     text = json.dumps(spec_schema(kind), indent=2, ensure_ascii=False) + "\n"
-    with _errors_as_exit(debug=False):
-        _write_stdout(lambda stream: stream.write(text))
+    with errors_as_exit(debug=False):
+        write_stdout(lambda stream: stream.write(text))
 
 
 @app.command()
@@ -212,8 +220,8 @@ def new(
         print(f"error: unknown kind {kind!r}{did_you_mean(kind, KINDS)}; known kinds: "
               f"{', '.join(KINDS)}", file=sys.stderr)
         raise typer.Exit(EXIT_INVALID)
-    with _errors_as_exit(debug=False):
-        _write_stdout(lambda stream: stream.write(text))
+    with errors_as_exit(debug=False):
+        write_stdout(lambda stream: stream.write(text))
     if kind is None and not list_kinds:
         raise typer.Exit(EXIT_INVALID)
 
@@ -254,25 +262,25 @@ def tolerance(
     Exit status: 0 the margins stay within their limits (at worst case when it is
     run); 1 they can be exceeded; 2 the spec or the options are invalid.
     """
-    with _errors_as_exit(debug):
+    with errors_as_exit(debug):
         from bearingcalc import batch, reports
         from bearingcalc.evaluation import evaluate_document, load_one_spec
         from bearingcalc.tolerance import StudyError, run_study
 
         methods = [m.strip() for m in method.split(",") if m.strip()]
-        _check_plot_name(plot)
+        check_plot_name(plot)
         if plot is not None and "monte-carlo" not in methods:
             raise SpecError("--plot draws the Monte Carlo histogram: add monte-carlo to "
                             "--method", source=str(plot))
-        table_or_json = _output_target(
+        table_or_json = output_target(
             output, "report", ".json" if output_format is StudyFormat.json else ".txt")
-        histogram = _plot_target(plot)
-        _refuse_unwritable("tolerance", [batch.spec_file(spec_path)], table_or_json, histogram)
+        histogram = plot_target(plot)
+        refuse_unwritable("tolerance", [batch.spec_file(spec_path)], table_or_json, histogram)
         kind, spec, document = load_one_spec(spec_path)
         evaluate_document(document)  # a nominal design that solve refuses is refused here too
         threads = _workers(jobs)
         try:
-            report = _with_progress(lambda tick: run_study(
+            report = with_progress(lambda tick: run_study(
                 kind, spec, document.source, methods=methods, samples=samples, seed=seed,
                 sampler=sampler, sobol=sobol, results=result or (), threads=threads,
                 progress=tick), total=samples if "monte-carlo" in methods else None,
@@ -293,9 +301,9 @@ def tolerance(
             if histogram is not None and report.governing:
                 from bearingcalc.plots import tolerance_histogram
 
-                _stage_plot(files, histogram, lambda f, fmt: tolerance_histogram(
+                stage_plot(files, histogram, lambda f, fmt: tolerance_histogram(
                     report, report.governing[0], f, fmt=fmt))
-            _emit(write, table_or_json, files)
+            emit(write, table_or_json, files)
         raise typer.Exit(EXIT_LIMIT if report.within_limits is False else EXIT_OK)
 
 
@@ -327,20 +335,20 @@ def sweep(
     debug: DebugOption = False,
 ) -> None:
     """Solve the spec over a line or grid of one or two inputs; impossible points are gaps."""
-    with _errors_as_exit(debug):
+    with errors_as_exit(debug):
         from bearingcalc import batch, reports
         from bearingcalc import sweep as sweeps
         from bearingcalc.evaluation import load_one_spec
 
-        _check_plot_name(plot)
+        check_plot_name(plot)
         chosen = output_format or _format_for(output)
         if chosen is SweepFormat.parquet:
             _check_parquet(spec_path, output)
         # Without --format, the suggested file is CSV, which holds every result.
         suffix = _SWEEP_SUFFIXES.get(chosen, ".txt" if output_format else ".csv")
-        results_file = _output_target(output, "results", suffix)
-        chart = _plot_target(plot)
-        _refuse_unwritable("sweep", [batch.spec_file(spec_path)], results_file, chart)
+        results_file = output_target(output, "results", suffix)
+        chart = plot_target(plot)
+        refuse_unwritable("sweep", [batch.spec_file(spec_path)], results_file, chart)
         kind, spec, document = load_one_spec(spec_path)
         try:
             axes = [sweeps.parse_axis(text, spec) for text in vary]
@@ -366,12 +374,12 @@ def sweep(
             if chart is not None:
                 from bearingcalc.plots import sweep_plot
 
-                _stage_plot(files, chart, lambda f, fmt: sweep_plot(solved, keys, f, fmt=fmt))
+                stage_plot(files, chart, lambda f, fmt: sweep_plot(solved, keys, f, fmt=fmt))
             if chosen is SweepFormat.parquet and results_file is not None:
                 files.add(results_file, lambda stream: reports.write_sweep_parquet(
-                    solved, stream), binary=True)  # type: ignore[arg-type]
+                    solved, stream), binary=True)
             else:
-                _emit(write, results_file, files)
+                emit(write, results_file, files)
 
 
 def _workers(jobs: int | None) -> int:
@@ -406,132 +414,7 @@ def _check_parquet(spec_path: Path, output: Path | None) -> None:
                         "'bearingcalc[parquet]'", source=str(output)) from None
 
 
-def _with_progress(work: Callable[[Callable[[int], None] | None], T], total: int | None = None,
-                   label: str = "checking") -> T:
-    """Run ``work`` with a progress callback drawing a bar on stderr, when it is a terminal.
-
-    The bar is transient and shows after a second, so quick runs print nothing extra.
-    """
-    if not sys.stderr.isatty():
-        return work(None)
-    import time
-
-    from rich.console import Console
-    from rich.progress import Progress
-
-    started = time.monotonic()
-    with Progress(console=Console(stderr=True), transient=True, auto_refresh=False) as bar:
-        task = bar.add_task(label, total=total)
-
-        def tick(count: int) -> None:
-            bar.advance(task, count)
-            if time.monotonic() - started > 1.0:
-                bar.refresh()
-
-        return work(tick)
-
-
-def _check_plot_name(plot: Path | None) -> None:
-    if plot is not None and plot.suffix.lower() not in (".png", ".svg"):
-        raise SpecError("--plot: give a .png or .svg file name", source=str(plot))
-
-
 _CHECK_SUFFIXES = {CheckFormat.table: ".txt", CheckFormat.json: ".jsonl",
                    CheckFormat.junit: ".xml"}
 _SWEEP_SUFFIXES = {SweepFormat.csv: ".csv", SweepFormat.json: ".jsonl",
                    SweepFormat.parquet: ".parquet"}
-
-
-def _output_target(output: Path | None, holds: str, suffix: str) -> Target | None:
-    return None if output is None else Target(output, "--output", holds, suffix)
-
-
-def _plot_target(plot: Path | None) -> Target | None:
-    return None if plot is None else Target(plot, "--plot", "plot", plot.suffix.lower())
-
-
-def _refuse_unwritable(command: str, inputs: list[Path], *targets: Target | None) -> None:
-    """Refuse, before any work, an output that cannot be written or would replace an input."""
-    check_targets([target for target in targets if target is not None], inputs, command)
-
-
-def _stage_plot(files: StagedFiles, plot: Target, draw: Callable[[BinaryIO, str], None]
-                ) -> None:
-    """Draw a picture into ``plot`` among ``files``, in the format its suffix names."""
-    files.add(plot, lambda stream: draw(stream, plot.path.suffix[1:].lower()), binary=True)
-
-
-class StdoutError(Exception):
-    """Standard output could not be written (a full disk, a failing device)."""
-
-
-def _emit(write: Callable[[TextIO], None], output: Target | None, files: StagedFiles) -> None:
-    """Write a report to ``output`` among ``files``, or to stdout."""
-    if output is None:
-        _write_stdout(write)
-    else:
-        files.add(output, write)
-
-
-def _write_stdout(write: Callable[[TextIO], None]) -> None:
-    """Write a report to stdout; a write error other than a closed pipe is the run's error."""
-    try:
-        write(sys.stdout)
-        sys.stdout.flush()
-    except BrokenPipeError:
-        # The reader left (| head): stop writing, but keep the run's exit status,
-        # which says whether the specs passed.
-        _silence_stdout()
-    except OSError as error:
-        _silence_stdout()
-        raise StdoutError(reason(error)) from None
-
-
-def _silence_stdout() -> None:
-    """Point stdout at /dev/null, so the flush at exit does not fail a second time."""
-    try:
-        stdout = sys.stdout.fileno()
-    except (OSError, ValueError):
-        return  # not a file descriptor (a captured stream): nothing is flushed to it at exit
-    devnull = os.open(os.devnull, os.O_WRONLY)
-    os.dup2(devnull, stdout)
-    os.close(devnull)
-
-
-def _print_error(error: Exception) -> None:
-    lines = error.lines() if isinstance(error, SpecError) else [f"error: {error}"]
-    # Control characters from a spec are shown as escapes, never sent to the terminal.
-    print("\n".join(printable(line) for line in lines), file=sys.stderr)
-
-
-class _errors_as_exit:
-    """Turns any unexpected exception into one line on stderr and exit status 2."""
-
-    def __init__(self, debug: bool) -> None:
-        self.debug = debug
-
-    def __enter__(self) -> None:
-        return None
-
-    def __exit__(self, exc_type: type[BaseException] | None, exc: BaseException | None,
-                 tb: object) -> bool:
-        if exc is None or isinstance(exc, (typer.Exit, typer.Abort, SystemExit)):
-            return False
-        if isinstance(exc, KeyboardInterrupt):
-            print("interrupted", file=sys.stderr)
-            raise typer.Exit(130)
-        if isinstance(exc, BrokenPipeError):
-            _silence_stdout()
-            raise typer.Exit(EXIT_BROKEN_PIPE)
-        if isinstance(exc, StdoutError):
-            print(f"cannot write the output: {exc}", file=sys.stderr)
-            raise typer.Exit(EXIT_INVALID)
-        if self.debug:
-            traceback.print_exception(exc)
-        if isinstance(exc, SpecError):
-            _print_error(exc)
-        else:
-            print(f"internal error: {type(exc).__name__}: {exc} "
-                  "(run again with --debug for the traceback, and please report it)",
-                  file=sys.stderr)
-        raise typer.Exit(EXIT_INVALID)

@@ -1,0 +1,165 @@
+"""Where the command line's output goes: reports to stdout or to files written all or
+none, plots beside them, a progress bar on stderr, and every error as one line on
+stderr with the exit status that goes with it.
+
+The commands in ``bearingcalc.cli`` decide what to write; this module decides how.
+It never imports the CLI.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import traceback
+from collections.abc import Callable, Iterable
+from pathlib import Path
+from typing import IO, Any, BinaryIO, TypeVar
+
+import typer
+
+from bearingcalc.errors import SpecError
+from bearingcalc.output import StagedFiles, Target, check_targets, reason
+from bearingcalc.wording import printable
+
+T = TypeVar("T")
+
+#: Writes one report onto a stream: text, or bytes for a binary format (Parquet).
+Writer = Callable[[IO[Any]], None]
+
+EXIT_OK, EXIT_LIMIT, EXIT_INVALID = 0, 1, 2
+#: Interrupted (Ctrl-C): the shell's 128 + SIGINT.
+EXIT_INTERRUPTED = 130
+#: A closed output pipe whose run's status is unknown: the shell's 128 + SIGPIPE.
+EXIT_BROKEN_PIPE = 141
+
+
+class StdoutError(Exception):
+    """Standard output could not be written (a full disk, a failing device)."""
+
+
+def output_target(output: Path | None, holds: str, suffix: str) -> Target | None:
+    """The file ``--output`` names, holding ``holds`` (like ``report``); ``suffix`` is
+    that of the file name suggested when it is refused."""
+    return None if output is None else Target(output, "--output", holds, suffix)
+
+
+def check_plot_name(plot: Path | None) -> None:
+    """Refuse a ``--plot`` that names neither a PNG nor an SVG file."""
+    if plot is not None and plot.suffix.lower() not in (".png", ".svg"):
+        raise SpecError("--plot: give a .png or .svg file name", source=str(plot))
+
+
+def plot_target(plot: Path | None) -> Target | None:
+    return None if plot is None else Target(plot, "--plot", "plot", plot.suffix.lower())
+
+
+def refuse_unwritable(command: str, inputs: Iterable[Path], *targets: Target | None) -> None:
+    """Refuse, before any work, an output that cannot be written or would replace an input."""
+    check_targets([target for target in targets if target is not None], inputs, command)
+
+
+def stage_plot(files: StagedFiles, plot: Target, draw: Callable[[BinaryIO, str], None]
+               ) -> None:
+    """Draw a picture into ``plot`` among ``files``, in the format its suffix names."""
+    files.add(plot, lambda stream: draw(stream, plot.path.suffix[1:].lower()), binary=True)
+
+
+def emit(write: Writer, output: Target | None, files: StagedFiles, *,
+         binary: bool = False) -> None:
+    """Write a report to ``output`` among ``files`` (as bytes when ``binary``), or to
+    stdout when there is no ``output``."""
+    if output is None:
+        write_stdout(write)
+    else:
+        files.add(output, write, binary=binary)
+
+
+def write_stdout(write: Writer) -> None:
+    """Write a report to stdout; a write error other than a closed pipe is the run's error."""
+    try:
+        write(sys.stdout)
+        sys.stdout.flush()
+    except BrokenPipeError:
+        # The reader left (| head): stop writing, but keep the run's exit status,
+        # which says whether the specs passed.
+        silence_stdout()
+    except OSError as error:
+        silence_stdout()
+        raise StdoutError(reason(error)) from None
+
+
+def silence_stdout() -> None:
+    """Point stdout at /dev/null, so the flush at exit does not fail a second time."""
+    try:
+        stdout = sys.stdout.fileno()
+    except (OSError, ValueError):
+        return  # not a file descriptor (a captured stream): nothing is flushed to it at exit
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, stdout)
+    os.close(devnull)
+
+
+def with_progress(work: Callable[[Callable[[int], None] | None], T], total: int | None = None,
+                  label: str = "checking") -> T:
+    """Run ``work`` with a progress callback drawing a bar on stderr, when it is a terminal.
+
+    The bar is transient and shows after a second, so quick runs print nothing extra.
+    """
+    if not sys.stderr.isatty():
+        return work(None)
+    import time
+
+    from rich.console import Console
+    from rich.progress import Progress
+
+    started = time.monotonic()
+    with Progress(console=Console(stderr=True), transient=True, auto_refresh=False) as bar:
+        task = bar.add_task(label, total=total)
+
+        def tick(count: int) -> None:
+            bar.advance(task, count)
+            if time.monotonic() - started > 1.0:
+                bar.refresh()
+
+        return work(tick)
+
+
+def print_error(error: Exception) -> None:
+    """``error`` on stderr: a spec's problems one per line, anything else as one line."""
+    lines = error.lines() if isinstance(error, SpecError) else [f"error: {error}"]
+    # Control characters from a spec are shown as escapes, never sent to the terminal.
+    print("\n".join(printable(line) for line in lines), file=sys.stderr)
+
+
+class errors_as_exit:
+    """Turns any unexpected exception into one line on stderr and exit status 2; an
+    interruption and a closed output pipe get the shell's statuses for them."""
+
+    def __init__(self, debug: bool) -> None:
+        self.debug = debug
+
+    def __enter__(self) -> None:
+        return None
+
+    def __exit__(self, exc_type: type[BaseException] | None, exc: BaseException | None,
+                 tb: object) -> bool:
+        if exc is None or isinstance(exc, (typer.Exit, typer.Abort, SystemExit)):
+            return False
+        if isinstance(exc, KeyboardInterrupt):
+            print("interrupted", file=sys.stderr)
+            raise typer.Exit(EXIT_INTERRUPTED)
+        if isinstance(exc, BrokenPipeError):
+            silence_stdout()
+            raise typer.Exit(EXIT_BROKEN_PIPE)
+        if isinstance(exc, StdoutError):
+            print(f"cannot write the output: {exc}", file=sys.stderr)
+            raise typer.Exit(EXIT_INVALID)
+        if self.debug:
+            traceback.print_exception(exc)
+        if isinstance(exc, SpecError):
+            print_error(exc)
+        else:
+            print(f"internal error: {type(exc).__name__}: {exc} "
+                  "(run again with --debug for the traceback, and please report it)",
+                  file=sys.stderr)
+        raise typer.Exit(EXIT_INVALID)
