@@ -20,7 +20,7 @@ from pydantic import BaseModel, ValidationError
 
 from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind
-from bearingcalc.models.base import SpecModel, nested_model
+from bearingcalc.models.base import Spec, nested_model
 from bearingcalc.models.field_path import FieldPath
 from bearingcalc.models.rules import problems_despite
 from bearingcalc.models.yaml_loader import (
@@ -52,7 +52,7 @@ class Evaluation:
                 if value < 0]
 
 
-def parse_document(document: Document) -> tuple[Kind, SpecModel]:
+def parse_document(document: Document) -> tuple[Kind, Spec]:
     """Validate one document against the model of its ``kind``."""
     data = document.data
     if not isinstance(data, dict):
@@ -95,7 +95,7 @@ def _in_line_order(document: Document, errors: list[SpecError]) -> SpecError:
     return errors[0]
 
 
-def _rule_problems_despite(model: type[SpecModel], data: dict[str, Any],
+def _rule_problems_despite(model: type[Spec], data: dict[str, Any],
                            exc: ValidationError) -> list[SpecFieldError]:
     """The problems of the spec's cross-field rules that read only valid fields.
 
@@ -126,11 +126,11 @@ def evaluate_documents(documents: Sequence[Document]) -> list[Evaluation | SpecE
     solved in one vectorised call, so a batch costs little more than its parsing.
     """
     outcomes: list[Evaluation | SpecError | None] = [None] * len(documents)
-    groups: dict[tuple[str, tuple[Any, ...]], list[tuple[int, SpecModel, dict[str, Any]]]] = {}
+    groups: dict[tuple[str, tuple[Any, ...]], list[tuple[int, Spec, dict[str, Any]]]] = {}
     for index, document in enumerate(documents):
         try:
             kind, spec = parse_document(document)
-            inputs = spec.solver_inputs()  # type: ignore[attr-defined]
+            inputs = spec.solver_inputs()
         except SpecError as error:
             outcomes[index] = error
             continue
@@ -157,7 +157,7 @@ def evaluate_documents(documents: Sequence[Document]) -> list[Evaluation | SpecE
 
 
 def _solve_group(documents: Sequence[Document], kind: Kind,
-                 members: list[tuple[int, SpecModel, dict[str, Any]]],
+                 members: list[tuple[int, Spec, dict[str, Any]]],
                  outcomes: list[Evaluation | SpecError | None]) -> None:
     """Solve specs of one kind with the same inputs given in one vectorised call."""
     stacked = {key: value if value is None or isinstance(value, str)
@@ -213,7 +213,7 @@ def load_selected(path: str | Path) -> list[Document]:
     return [documents[int(index) - 1]]
 
 
-def load_one_spec(path: str | Path) -> tuple[Kind, SpecModel, Document]:
+def load_one_spec(path: str | Path) -> tuple[Kind, Spec, Document]:
     """The one spec of a file (``file.yaml#N`` picks a document of several); raises SpecError."""
     documents = load_selected(path)
     if len(documents) > 1:
@@ -223,17 +223,17 @@ def load_one_spec(path: str | Path) -> tuple[Kind, SpecModel, Document]:
     return kind, spec, documents[0]
 
 
-def _judge(document: Document, kind: Kind, spec: SpecModel, raw: dict[str, float],
+def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
            code: int, raised: Sequence[str] = ()) -> Evaluation:
     """One spec's results from its solved values and status code."""
     if code:
         name, reason = kind.status_reasons[code]
-        name = getattr(spec, "field_as_written", lambda field: field)(name)
+        name = spec.field_as_written(name)
         written = FieldPath.parse(name).get(document.data)
         got = f", got {written}" if isinstance(written, (str, int, float)) else ""
         raise document.error(f"{reason}{got}", field=name)
     results: dict[str, float | None] = {}
-    warnings: list[str] = [*getattr(spec, "warnings", list)(), *raised]
+    warnings: list[str] = [*spec.warnings(), *raised]
     for key, value in raw.items():
         if math.isnan(value):
             raise document.error(f"{key} cannot be computed for this design; please report it")
@@ -246,7 +246,7 @@ def _judge(document: Document, kind: Kind, spec: SpecModel, raw: dict[str, float
     units = {key: kind.results[key][0] for key in results}
     margins = {key: value for key in kind.margins
                if (value := results.get(key)) is not None}
-    name = getattr(spec, "name", None) or _default_name(document)
+    name = spec.name or _default_name(document)
     return Evaluation(document.source, kind.name, name, results, units, margins, warnings)
 
 
@@ -255,7 +255,7 @@ def _default_name(document: Document) -> str:
     return stem if document.source == document.path else f"{stem}#{document.index}"
 
 
-def _one_problem(document: Document, model: type[SpecModel], error: Any) -> SpecError:
+def _one_problem(document: Document, model: type[Spec], error: Any) -> SpecError:
     key_path = tuple(error["loc"])
     loc = tuple(str(part) for part in key_path)
     dotted = str(FieldPath(key_path))

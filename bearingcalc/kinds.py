@@ -20,7 +20,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 if TYPE_CHECKING:
-    from bearingcalc.models.base import SpecModel
+    from bearingcalc.models.base import Spec
 
 #: Status of a design whose inputs are valid but whose results overflow double precision.
 OUT_OF_RANGE = 99
@@ -46,7 +46,7 @@ class Kind:
     unbounded: tuple[str, ...] = ()
 
     @property
-    def model(self) -> type[SpecModel]:
+    def model(self) -> type[Spec]:
         """The kind's pydantic spec model."""
         module, _, name = self.model_path.partition(":")
         return getattr(importlib.import_module(module), name)  # type: ignore[no-any-return]

@@ -20,7 +20,7 @@ from pydantic import BaseModel
 
 from bearingcalc.errors import BearingcalcError, SpecError
 from bearingcalc.kinds import Kind
-from bearingcalc.models.base import SpecModel, field_parser
+from bearingcalc.models.base import Spec, field_parser
 from bearingcalc.models.field_path import NOT_INPUTS, FieldPath, FieldPathError, resolve_field
 from bearingcalc.models.yaml_loader import Document
 from bearingcalc.variation import evaluate_with
@@ -81,7 +81,7 @@ _VARY = re.compile(r"^\s*(?P<name>[^\s=:]+)\s*=\s*(?P<start>[^:]+):(?P<stop>[^:]
                    r"(?P<count>\s*[0-9]{1,12}\s*)$")
 
 
-def parse_axis(text: str, spec: SpecModel) -> Axis:
+def parse_axis(text: str, spec: Spec) -> Axis:
     """An axis from ``NAME=START:STOP:N`` (START and STOP with units where the field has one)."""
     match = _VARY.match(text)
     if match is None:
@@ -107,7 +107,7 @@ def parse_axis(text: str, spec: SpecModel) -> Axis:
     return Axis(name, np.linspace(start, stop, count), unit)
 
 
-def _number_field(spec: SpecModel, path: str) -> tuple[str, tuple[str, Any, str]]:
+def _number_field(spec: Spec, path: str) -> tuple[str, tuple[str, Any, str]]:
     """The name (as :func:`resolve_field` writes it) and parser (see ``field_parser``)
     of the field ``path`` names, if it is a number the spec gives; else a SweepError
     that says what it is and what to vary instead."""
@@ -179,7 +179,7 @@ def _as_written(axis: Axis, value: Any) -> Any:
     return f"{float(value)!r} {axis.unit}" if axis.unit != "1" else float(value)
 
 
-def run_sweep(kind: Kind, spec: SpecModel, source: str, axes: list[Axis]) -> Sweep:
+def run_sweep(kind: Kind, spec: Spec, source: str, axes: list[Axis]) -> Sweep:
     """Solve every point of the line or grid spanned by ``axes`` in one call."""
     if not 1 <= len(axes) <= 2:
         raise SweepError("give one --vary for a line or two for a grid")
@@ -195,7 +195,7 @@ def run_sweep(kind: Kind, spec: SpecModel, source: str, axes: list[Axis]) -> Swe
     shape = (points,)
     solved = {key: np.where(feasible, np.broadcast_to(value, shape), np.nan)
               for key, value in results.items()}
-    limits = kind.limit_values(spec.solver_inputs())  # type: ignore[attr-defined]
-    name = getattr(spec, "name", None) or source
+    limits = kind.limit_values(spec.solver_inputs())
+    name = spec.name or source
     return Sweep(kind, source, name, axes, inputs, solved,
                  np.broadcast_to(status, shape).copy(), limits)

@@ -15,7 +15,7 @@ from numpy.typing import ArrayLike, NDArray
 from pydantic import BaseModel
 
 from bearingcalc.kinds import Kind
-from bearingcalc.models.base import SpecModel
+from bearingcalc.models.base import Spec
 from bearingcalc.models.field_path import FieldPath, replaced, resolve_field
 from bearingcalc.models.quantities import Measured, Tolerance
 
@@ -47,11 +47,11 @@ def with_values(spec: Any, values: Mapping[str, ArrayLike]) -> Any:
     return replaced(spec, [(FieldPath.parse(path), value) for path, value in values.items()])
 
 
-def evaluate_with(kind: Kind, spec: SpecModel, values: Mapping[str, ArrayLike],
+def evaluate_with(kind: Kind, spec: Spec, values: Mapping[str, ArrayLike],
                   wanted: Collection[str] | None = None) -> tuple[dict[str, NDArray], NDArray]:
     """Results and status codes of ``spec`` with ``values`` in place of its fields."""
     varied = with_values(spec, values) if values else spec
-    return kind.evaluate(varied.solver_inputs(), wanted)  # type: ignore[attr-defined]
+    return kind.evaluate(varied.solver_inputs(), wanted)
 
 
 def _fields(spec: BaseModel) -> Iterator[tuple[str, Any]]:

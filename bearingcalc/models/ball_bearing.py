@@ -15,7 +15,7 @@ from bearingcalc.core.ball_bearing import (
     walther_viscosity,
 )
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.models.base import SpecModel
+from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.materials import ElasticMaterial
 from bearingcalc.models.plain_numbers import BallCount, Ratio, ranged_number, reliability
 from bearingcalc.models.quantities import (
@@ -150,7 +150,7 @@ class BearingFields(SpecModel):
     material: ElasticMaterial = ElasticMaterial()
 
 
-class BallBearingSpec(BearingFields):
+class BallBearingSpec(BearingFields, Spec):
     """A rolling ball bearing sized by ISO 281 (life) and ISO 76 (static safety)."""
 
     kind: Literal["ball-bearing"]

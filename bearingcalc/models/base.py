@@ -17,25 +17,49 @@ from bearingcalc.units import Dimension, parse_quantity
 
 
 class SpecModel(BaseModel):
-    """Base of spec models: unknown keys and non-finite numbers are refused.
-
-    A spec (a model with a ``kind``) checks its cross-field rules, and those of every
-    model it holds, once its fields are valid; it raises the first problem with the
-    others in its ``more``. Validating with ``context={"rules": False}`` skips them.
-    """
+    """Base of spec models and of the groups of fields they hold: unknown keys and
+    non-finite numbers are refused."""
 
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False, frozen=True,
                               validate_default=False)
 
+
+class Spec(SpecModel):
+    """A whole spec of one kind: what every command asks of it.
+
+    Once its fields are valid, a spec checks its cross-field rules and those of every
+    model it holds (:mod:`bearingcalc.models.rules`); it raises the first problem with
+    the others in its ``more``. Validating with ``context={"rules": False}`` skips them.
+    Each kind's model declares the fields ``kind`` and ``name`` itself, where they read
+    best in its schema.
+    """
+
+    if typing.TYPE_CHECKING:
+        kind: str
+        name: str | None
+
     @model_validator(mode="after")
-    def _cross_field_rules(self, info: ValidationInfo) -> SpecModel:
-        if "kind" not in type(self).model_fields or (info.context or {}).get("rules") is False:
+    def _cross_field_rules(self, info: ValidationInfo) -> Spec:
+        if (info.context or {}).get("rules") is False:
             return self
         problems = problems_of(self)
         if problems:
             problems[0].more = problems[1:]
             raise problems[0]
         return self
+
+    def solver_inputs(self) -> dict[str, Any]:
+        """The SI inputs of the kind's solver (arrays where a study varies a field)."""
+        raise NotImplementedError(f"{type(self).__name__} gives no solver inputs")
+
+    def field_as_written(self, field: str) -> str:
+        """The spec's own name for a solver field a status names (a spec that gives the
+        ball's radius is told about ``ball_radius``, not ``ball_diameter``)."""
+        return field
+
+    def warnings(self) -> list[str]:
+        """What the reader should know about how the results were found."""
+        return []
 
 
 def nested_model(info: FieldInfo) -> type[BaseModel] | None:

@@ -9,7 +9,7 @@ from typing import Annotated, Any, Literal
 from pydantic import BeforeValidator, Field, WithJsonSchema
 
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.models.base import SpecModel
+from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.plain_numbers import Ratio, ToothCount, ranged_number, reliability
 from bearingcalc.models.quantities import Angle, AngularSpeed, PositiveLength, PositivePower, Torque
 from bearingcalc.models.rules import rule
@@ -69,7 +69,7 @@ class BevelGearsLimits(SpecModel):
     min_contact_safety: Ratio = Field(1.0, description="smallest S_H")
 
 
-class BevelPair(SpecModel):
+class BevelPair(Spec):
     """The fields of a bevel pair, its sizing and its rating, shared by the kinds that
     hold one (``bevel-gears``, ``bevel-drive``)."""
 

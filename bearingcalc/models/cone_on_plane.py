@@ -6,11 +6,11 @@ from typing import Any, Literal
 
 from pydantic import Field
 
-from bearingcalc.models.base import SpecModel
+from bearingcalc.models.base import Spec
 from bearingcalc.models.quantities import Angle, AngularAccel, AngularSpeed, PositiveLength
 
 
-class ConeOnPlaneSpec(SpecModel):
+class ConeOnPlaneSpec(Spec):
     """A right circular cone rolling on a fixed plane about its fixed apex."""
 
     kind: Literal["cone-on-plane"]

@@ -6,11 +6,11 @@ from typing import Any, Literal
 
 from pydantic import Field
 
-from bearingcalc.models.base import SpecModel
+from bearingcalc.models.base import Spec
 from bearingcalc.models.quantities import AngularAccel, AngularSpeed, PositiveLength
 
 
-class DiskOnCircleSpec(SpecModel):
+class DiskOnCircleSpec(Spec):
     """A disk rolling on the outside (external) or inside (internal) of a circle."""
 
     kind: Literal["disk-on-circle"]

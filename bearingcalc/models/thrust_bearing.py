@@ -7,7 +7,7 @@ from typing import Any, Literal
 from pydantic import Field
 
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.models.base import SpecModel
+from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.materials import BallMaterial
 from bearingcalc.models.plain_numbers import BallCount, Ratio
 from bearingcalc.models.quantities import Angle, AngularSpeed, Force, PositiveLength, PositiveStress
@@ -22,7 +22,7 @@ class ThrustBearingLimits(SpecModel):
                                                  "at any contact (ISO 76's 4200 MPa)")
 
 
-class ThrustBearingSpec(SpecModel):
+class ThrustBearingSpec(Spec):
     """A thrust bearing: balls between a fixed race and a shaft (docs/physics.md §1).
 
     At most one of the ball size, ``contact_angle`` and ``pitch_radius`` may be
