@@ -12,11 +12,11 @@ from bearingcalc.models.ball_bearing import (
     BallBearingLimits,
     BallBearingSpec,
     BearingFields,
-    Lubrication,
     Reliability,
     UnitFraction,
 )
 from bearingcalc.models.bevel_gears import BevelGearsLimits, BevelPair
+from bearingcalc.models.lubrication import Lubrication
 from bearingcalc.models.plain_numbers import Ratio
 from bearingcalc.models.quantities import AngularSpeed, Length, PositiveTime
 from bearingcalc.models.rules import own_problems, rule
