@@ -10,7 +10,7 @@ import os
 import sys
 from enum import Enum
 from pathlib import Path
-from typing import Annotated, TextIO
+from typing import Annotated
 
 # pydantic scans installed packages for plugins on its first model; bearingcalc uses
 # none, and the scan costs about 20 ms of every command's start.
@@ -22,6 +22,7 @@ from bearingcalc.cli_output import (
     EXIT_INVALID,
     EXIT_LIMIT,
     EXIT_OK,
+    Writer,
     check_plot_name,
     emit,
     errors_as_exit,
@@ -115,16 +116,12 @@ def solve(
                 else:
                     evaluations.append(outcome)
 
-        def write(stream: TextIO) -> None:
-            if output_format is SolveFormat.json:
-                reports.write_json_lines(evaluations, stream)
-            elif output_format is SolveFormat.csv:
-                if evaluations:
-                    reports.write_csv(evaluations, stream)
-            else:
-                reports.print_tables(evaluations, KINDS, stream)
-
-        write_stdout(write)
+        writers: dict[SolveFormat, Writer] = {
+            SolveFormat.table: lambda stream: reports.print_tables(evaluations, KINDS, stream),
+            SolveFormat.json: lambda stream: reports.write_json_lines(evaluations, stream),
+            SolveFormat.csv: lambda stream: reports.write_csv(evaluations, stream),
+        }
+        write_stdout(writers[output_format])
         if invalid:
             raise typer.Exit(EXIT_INVALID)
         if not all(evaluation.within_limits for evaluation in evaluations):
@@ -166,16 +163,14 @@ def check(
         refuse_unwritable("check", batch.files_read(entries), report)
         records = with_progress(lambda tick: batch.check_entries(entries, workers, tick))
 
-        def write(stream: TextIO) -> None:
-            if output_format is CheckFormat.json:
-                reports.write_check_json_lines(records, stream)
-            elif output_format is CheckFormat.junit:
-                reports.write_junit(records, stream)
-            else:
-                reports.print_check_table(records, show_all=show_all, stream=stream)
-
+        writers: dict[CheckFormat, Writer] = {
+            CheckFormat.table: lambda stream: reports.print_check_table(
+                records, show_all=show_all, stream=stream),
+            CheckFormat.json: lambda stream: reports.write_check_json_lines(records, stream),
+            CheckFormat.junit: lambda stream: reports.write_junit(records, stream),
+        }
         with StagedFiles() as files:
-            emit(write, report, files)
+            emit(writers[output_format], report, files)
         raise typer.Exit(batch.exit_status(records))
 
 
@@ -288,22 +283,17 @@ def tolerance(
         except StudyError as error:
             raise SpecError(str(error), source=document.source) from None
 
-        def write(stream: TextIO) -> None:
-            if output_format is StudyFormat.json:
-                import json
-
-                stream.write(json.dumps(report.record, allow_nan=False,
-                                        ensure_ascii=False) + "\n")
-            else:
-                reports.print_tolerance_table(report, stream)
-
+        writers: dict[StudyFormat, Writer] = {
+            StudyFormat.table: lambda stream: reports.print_tolerance_table(report, stream),
+            StudyFormat.json: lambda stream: reports.write_tolerance_json(report, stream),
+        }
         with StagedFiles() as files:
             if histogram is not None and report.governing:
                 from bearingcalc.plots import tolerance_histogram
 
                 stage_plot(files, histogram, lambda f, fmt: tolerance_histogram(
                     report, report.governing[0], f, fmt=fmt))
-            emit(write, table_or_json, files)
+            emit(writers[output_format], table_or_json, files)
         raise typer.Exit(EXIT_LIMIT if report.within_limits is False else EXIT_OK)
 
 
@@ -362,24 +352,19 @@ def sweep(
             raise SpecError(f"--result {unknown[0]!r} is not a result of this {kind.name} spec;"
                             f" choose from {', '.join(solved.results)}", source=document.source)
 
-        def write(stream: TextIO) -> None:
-            if chosen is SweepFormat.csv:
-                reports.write_sweep_csv(solved, stream)
-            elif chosen is SweepFormat.json:
-                reports.write_sweep_json_lines(solved, stream)
-            else:
-                reports.print_sweep_table(solved, keys, stream)
-
+        writers: dict[SweepFormat, Writer] = {
+            SweepFormat.table: lambda stream: reports.print_sweep_table(solved, keys, stream),
+            SweepFormat.csv: lambda stream: reports.write_sweep_csv(solved, stream),
+            SweepFormat.json: lambda stream: reports.write_sweep_json_lines(solved, stream),
+            SweepFormat.parquet: lambda stream: reports.write_sweep_parquet(solved, stream),
+        }
         with StagedFiles() as files:
             if chart is not None:
                 from bearingcalc.plots import sweep_plot
 
                 stage_plot(files, chart, lambda f, fmt: sweep_plot(solved, keys, f, fmt=fmt))
-            if chosen is SweepFormat.parquet and results_file is not None:
-                files.add(results_file, lambda stream: reports.write_sweep_parquet(
-                    solved, stream), binary=True)
-            else:
-                emit(write, results_file, files)
+            # Parquet is refused without --output (_check_parquet): never stdout.
+            emit(writers[chosen], results_file, files, binary=chosen is SweepFormat.parquet)
 
 
 def _workers(jobs: int | None) -> int:

@@ -39,7 +39,10 @@ def write_json_lines(evaluations: Iterable[Evaluation], stream: IO[str]) -> None
 
 
 def write_csv(evaluations: Sequence[Evaluation], stream: IO[str]) -> None:
-    """One row per evaluation, SI units in the header; columns are the union of keys."""
+    """One row per evaluation, SI units in the header; columns are the union of keys.
+    Nothing at all without an evaluation: there are no columns to name."""
+    if not evaluations:
+        return
     columns: dict[str, str] = {}
     for evaluation in evaluations:
         for key, unit in evaluation.units.items():
