@@ -10,13 +10,14 @@ import os
 import sys
 from enum import Enum
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 # pydantic scans installed packages for plugins on its first model; bearingcalc uses
 # none, and the scan costs about 20 ms of every command's start.
 os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
 
 import typer
+from typer.core import TyperCommand
 
 from bearingcalc.cli_output import (
     EXIT_INVALID,
@@ -37,6 +38,9 @@ from bearingcalc.cli_output import (
 from bearingcalc.errors import SpecError
 from bearingcalc.output import StagedFiles
 from bearingcalc.wording import did_you_mean
+
+if TYPE_CHECKING:
+    import click
 
 app = typer.Typer(add_completion=False, pretty_exceptions_enable=False, no_args_is_help=True,
                   context_settings={"help_option_names": ["-h", "--help"]},
@@ -91,7 +95,33 @@ def _sample_count(text: str | int) -> int:
     return int(number)
 
 
-@app.command()
+class _HelpListsKinds(TyperCommand):
+    """A command whose ``--help`` ends with every registered kind and its summary.
+
+    The list is read from the registry when the help is shown, so a new kind appears
+    in it without an edit here, and a run that shows no help never builds it.
+    """
+
+    def format_help(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
+        from rich.markup import escape
+
+        from bearingcalc.kinds import KINDS
+
+        width = max(map(len, KINDS))
+        kinds = "\n".join(f"  {name:{width}}  {escape(kind.summary)}"
+                          for name, kind in KINDS.items())
+        summary = self.help
+        # typer removes the indentation that all lines but the first share: the last
+        # line, flush left, keeps the list's.
+        self.help = (f"{summary}\n\nKinds (a spec's 'kind:'):\n{kinds}\n\n"
+                     "'bearingcalc new KIND' prints a commented template spec of KIND.")
+        try:
+            super().format_help(ctx, formatter)
+        finally:
+            self.help = summary
+
+
+@app.command(cls=_HelpListsKinds)
 def solve(
     specs: Annotated[list[Path], typer.Argument(
         help="YAML spec files.", show_default=False, metavar="SPEC...")],
@@ -100,7 +130,7 @@ def solve(
     ] = SolveFormat.table,
     debug: DebugOption = False,
 ) -> None:
-    """Solve each spec and report every speed, the spin-to-roll ratio and the slip margin."""
+    """Solve each spec and report every result of its kind and the verdict on its limits."""
     with errors_as_exit(debug):
         from bearingcalc import reports
         from bearingcalc.evaluation import Evaluation, evaluate_file

@@ -6,6 +6,7 @@ import csv
 import io
 import json
 import math
+import re
 import subprocess
 import sys
 
@@ -225,6 +226,23 @@ def test_the_installed_command_and_python_m_run_without_traceback(tmp_path):
         done = subprocess.run([*command, "solve", str(ROOT / "specs" / "thrust-bearing.yaml"),
                                "-f", "json"], capture_output=True, text=True, check=False)
         assert done.returncode == 0 and json.loads(done.stdout)["kind"] == "thrust-bearing"
+
+
+def test_help_lists_every_registered_kind_with_its_summary(cli, monkeypatch):
+    from dataclasses import replace
+
+    from bearingcalc.kinds import KINDS
+
+    # A kind registered after the command was written is listed too.
+    added = replace(KINDS["disk-on-circle"], name="kind-added-by-a-test",
+                    summary="a summary only this test gives")
+    monkeypatch.setitem(KINDS, added.name, added)
+    run = cli("solve", "--help")
+    assert run.code == 0, run.err
+    text = re.sub(r"\x1b\[[0-9;]*m", "", run.out)
+    first_words = {line.split()[0] for line in text.splitlines() if line.split()}
+    assert set(KINDS) <= first_words
+    assert added.summary in text
 
 
 def test_solver_is_importable_and_takes_arrays():
