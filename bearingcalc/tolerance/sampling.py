@@ -10,7 +10,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from bearingcalc.models.quantities import Tolerance
-from bearingcalc.tolerance.sobol import SobolStream
+from bearingcalc.tolerance.sobol import sobol_stream
 from bearingcalc.tolerance.study import StudyError, StudyInput
 
 SAMPLERS = ("sobol", "random")
@@ -26,16 +26,15 @@ class SampleStream:
     """A uniform sample stream on (0, 1)^d from ``start`` on, drawn in pieces.
 
     ``sobol``: scrambled Sobol points, those of scipy.stats.qmc.Sobol bit for bit
-    (:mod:`bearingcalc.tolerance.sobol`), from ``start`` on; ``random``: numpy's PCG64
-    advanced to ``start``. Either way the points are those of one sequence, however it
-    is cut.
+    (:func:`bearingcalc.tolerance.sobol.sobol_stream`), from ``start`` on; ``random``:
+    numpy's PCG64 advanced to ``start``. Either way the points are those of one
+    sequence, however it is cut.
     """
 
     def __init__(self, d: int, seed: int, sampler: str, start: int = 0) -> None:
         self.d = d
         if sampler == "sobol":
-            # scipy.stats.qmc.Sobol's points bit for bit, without importing scipy.stats.
-            self.engine = SobolStream(d, seed, start)
+            self.engine = sobol_stream(d, seed, start)
             self.generator = None
         elif sampler == "random":
             bits = np.random.PCG64(seed)

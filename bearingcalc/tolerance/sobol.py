@@ -14,12 +14,18 @@ References: P. Bratley & B. L. Fox, "Algorithm 659: Implementing Sobol's quasira
 sequence generator", ACM TOMS 14 (1988); S. Joe & F. Y. Kuo, "Remark on algorithm
 659", ACM TOMS 29 (2003); J. Matoušek, "On the L2-discrepancy for anchored boxes",
 J. Complexity 14 (1998) (linear matrix scrambling).
+
+The direction numbers are read from a private data file of scipy.stats. Should a
+scipy release move or change it, :func:`sobol_stream` draws the same points with
+``scipy.stats.qmc.Sobol`` itself instead, and pays for importing scipy.stats.
 """
 
 from __future__ import annotations
 
 import functools
 import importlib.util
+import threading
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -30,17 +36,26 @@ SCALE = 1.0 / 2**BITS
 
 
 @functools.cache
-def _direction_table() -> tuple[NDArray, NDArray]:
-    """(poly, vinit): the primitive polynomials and initial direction numbers that
-    scipy ships with its Sobol' engine, read from its data file without importing
-    scipy.stats."""
+def direction_file() -> Path:
+    """Where scipy keeps the direction numbers of its Sobol' engine, found without
+    importing scipy.stats."""
     spec = importlib.util.find_spec("scipy")
     if spec is None or not spec.submodule_search_locations:
         raise ImportError("scipy is required for Sobol' direction numbers")
-    path = Path(next(iter(spec.submodule_search_locations))) / "stats" / \
+    return Path(next(iter(spec.submodule_search_locations))) / "stats" / \
         "_sobol_direction_numbers.npz"
-    with np.load(path) as data:
-        return data["poly"].astype(np.int64), data["vinit"].astype(np.int64)
+
+
+@functools.cache
+def _direction_table(path: Path) -> tuple[NDArray, NDArray] | None:
+    """(poly, vinit): the primitive polynomials and initial direction numbers that
+    scipy ships with its Sobol' engine, read from its data file at ``path``; None
+    when the file is not there or holds no such arrays."""
+    try:
+        with np.load(path) as data:
+            return data["poly"].astype(np.int64), data["vinit"].astype(np.int64)
+    except (OSError, KeyError):
+        return None
 
 
 def direction_numbers(d: int) -> list[list[int]]:
@@ -51,7 +66,12 @@ def direction_numbers(d: int) -> list[list[int]]:
     Bratley & Fox's recurrence v_j = v_{j−m} ⊕ (2^m·v_{j−m}) ⊕ ⊕_{i<m} a_i·2^i·v_{j−i};
     finally column j is multiplied by 2^(BITS−1−j).
     """
-    poly, vinit = _direction_table()
+    path = direction_file()
+    table = _direction_table(path)
+    if table is None:
+        raise FileNotFoundError(f"no Sobol' direction numbers in {path}; "
+                                "sobol_stream draws with scipy.stats.qmc.Sobol instead")
+    poly, vinit = table
     rows = [[1] * BITS]
     for k in range(1, d):
         p = int(poly[k])
@@ -128,6 +148,48 @@ class SobolStream:
             np.multiply(steps, SCALE, out=out[j])
         self.position += count
         return out.T
+
+
+#: The start of the warning scipy.stats.qmc.Sobol gives when a sequence's first draw is
+#: not a power of 2 points long: a study cuts its stream where its chunks end, and the
+#: points are the sequence's all the same.
+_BALANCE_WARNING = "The balance properties of Sobol' points"
+#: warnings.catch_warnings swaps the filters of the whole process, and the Monte Carlo
+#: workers draw in parallel threads: one of them at a time may hold it.
+_WARNING_FILTERS = threading.Lock()
+
+
+class ScipySobolStream:
+    """The points of :class:`SobolStream`, drawn by ``scipy.stats.qmc.Sobol(d,
+    scramble=True, rng=seed)`` fast-forwarded to ``start``: the fallback for a scipy
+    whose direction numbers are not where :func:`direction_file` looks."""
+
+    def __init__(self, d: int, seed: int, start: int = 0) -> None:
+        from scipy.stats import qmc
+
+        self.d = d
+        self.engine = qmc.Sobol(d, scramble=True, rng=seed)
+        if start:
+            self.engine.fast_forward(start)
+
+    def next(self, count: int) -> NDArray:
+        """The next ``count`` points, shape (count, d), column-major like SobolStream's
+        (a copy: the caller may write to it)."""
+        if count <= 0:
+            return np.empty((self.d, 0)).T
+        with _WARNING_FILTERS, warnings.catch_warnings():
+            warnings.filterwarnings("ignore", message=_BALANCE_WARNING, category=UserWarning)
+            points = self.engine.random(count)
+        return np.array(points, order="F")
+
+
+def sobol_stream(d: int, seed: int, start: int = 0) -> SobolStream | ScipySobolStream:
+    """Points ``start``, ``start + 1``, … of scipy's scrambled Sobol' sequence in d
+    dimensions with seed ``seed``: by :class:`SobolStream` from scipy's direction
+    numbers, or by scipy.stats.qmc.Sobol when its data file is not where it was."""
+    if _direction_table(direction_file()) is None:
+        return ScipySobolStream(d, seed, start)
+    return SobolStream(d, seed, start)
 
 
 #: Trailing one bits of every 16-bit number: the lowest zero bit of k is found from its

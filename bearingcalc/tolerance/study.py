@@ -15,7 +15,7 @@ from bearingcalc.errors import BearingcalcError
 from bearingcalc.kinds import Kind
 from bearingcalc.models.base import SpecModel
 from bearingcalc.models.quantities import Tolerance
-from bearingcalc.tolerance.sobol import SobolStream
+from bearingcalc.tolerance.sobol import sobol_stream
 from bearingcalc.variation import evaluate_with, field_value, toleranced_fields
 
 #: Designs in the interior of the box, besides its corners, that seed the worst-case search.
@@ -104,7 +104,7 @@ class Study:
             corners = np.array(list(itertools.product((0.0, 1.0), repeat=d)))
         else:
             corners = np.empty((0, d))
-        interior = SobolStream(d, 0).next(INTERIOR_POINTS)
+        interior = sobol_stream(d, 0).next(INTERIOR_POINTS)
         return np.vstack([corners, interior, np.full((1, d), 0.5)])
 
     def scan_box(self, unit: NDArray | None = None) -> tuple[dict[str, NDArray], NDArray]:
