@@ -86,8 +86,8 @@ def test_disk_on_circle_matches_symbolic_differentiation_of_positions(internal):
         assert abs(out["contact_point_accel"][i] - np.linalg.norm(p_acc)) <= RTOL * scale_a
 
 
-def test_disk_on_a_fixed_circle_reproduces_the_seed_summary():
-    # Seed, "Rolling on a fixed surface": v_G = rω, a_G = rω̇ e_t + r²ω²/(R + r) e_n,
+def test_disk_on_a_fixed_circle_reproduces_the_textbook_relations():
+    # Rolling on a fixed surface: v_G = rω, a_G = rω̇ e_t + r²ω²/(R + r) e_n,
     # and (docs/physics.md §2) the contact point accelerates at rω²·R/(R + r) toward G.
     out = solve_disk_on_circle(0.5, 2.0, 3.0, disk_accel=0.25)
     assert_allclose(out["center_speed"], 1.5, rtol=1e-15)
@@ -178,7 +178,7 @@ def test_bevel_gears_match_a_3d_constraint_solve():
         for key in ("contact_point_speed", "pitch_line_speed"):
             assert abs(out[key] - ref[key]) <= RTOL * speed_scale * b, key
         assert abs(out["apex_mismatch"]) < 1e-12
-        # Seed: A relative to B turns at (ω_Z − Ω)·sinγ/sinα about the contact line.
+        # A relative to B turns at (ω_Z − Ω)·sinγ/sinα about the contact line.
         assert abs(out["relative_speed"] - abs(arm - shaft) * np.sin(gamma) / np.sin(alpha)) \
             <= RTOL * speed_scale
 

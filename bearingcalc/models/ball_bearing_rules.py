@@ -173,7 +173,7 @@ class BallBearingRules:
         if self.lubrication is not None and self.contamination_factor is None:
             return SpecFieldError("contamination_factor", "lubrication needs the "
                                   "contamination factor eC (0 to 1, like 0.5; see the "
-                                  "cleanliness classes in the README)",
+                                  "cleanliness classes in docs/kinds/ball-bearing.md)",
                                   at="lubrication")
         if self.lubrication is None and self.contamination_factor is not None:
             return SpecFieldError("contamination_factor", "applies with lubrication only: "

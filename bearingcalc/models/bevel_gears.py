@@ -1,4 +1,4 @@
-"""Spec of ``kind: bevel-gears``: the seed's epicyclic bevel pair (docs/physics.md §4)."""
+"""Spec of ``kind: bevel-gears``: an epicyclic bevel pair (docs/physics.md §4)."""
 
 from __future__ import annotations
 
