@@ -12,6 +12,7 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from bearingcalc.core import ball_bearing as bb
+from bearingcalc.core import iso76, iso281
 from tests.conftest import ROOT, csv_column, solve_json
 
 HOURS = 3600.0
@@ -65,7 +66,7 @@ ISO_281_TABLE_12 = {90: 1.0, 95: 0.64, 96: 0.55, 97: 0.47, 98: 0.37, 99: 0.25, 9
 
 @pytest.mark.parametrize(("percent", "printed"), ISO_281_TABLE_12.items())
 def test_reliability_factor_reproduces_iso_281_table_12(percent, printed):
-    a1 = float(bb.reliability_factor(percent / 100.0))
+    a1 = float(iso281.reliability_factor(percent / 100.0))
     assert float(f"{a1:.1e}") == pytest.approx(printed, abs=1e-12)  # two significant digits
 
 
@@ -109,7 +110,7 @@ def test_iso_76_f0_is_the_load_giving_4200_mpa_at_the_inner_contact_of_a_6205():
     unit_pressure = _hertz_peak_pressure(1.0, curvatures)
     load = (4200e6 / unit_pressure) ** 3   # p ∝ Q^(1/3)
     f0_hertz = load / (5 * (dw * 1e3) ** 2)
-    _, f0_table = bb.static_load_rating(9, dw, dpw, 0.0)
+    _, f0_table = iso76.static_load_rating(9, dw, dpw, 0.0)
     assert float(f0_table) == pytest.approx(f0_hertz, rel=0.01)
 
 
@@ -128,17 +129,17 @@ SECOND_TRANSCRIPTION = {
 }
 
 
-@pytest.mark.parametrize(("name", "table"), [("radial_fc", bb.RADIAL_FC),
-                                             ("thrust_fc", bb.THRUST_FC),
-                                             ("static_f0", bb.STATIC_F0)])
+@pytest.mark.parametrize(("name", "table"), [("radial_fc", iso281.RADIAL_FC),
+                                             ("thrust_fc", iso281.THRUST_FC),
+                                             ("static_f0", iso76.STATIC_F0)])
 def test_tables_match_a_second_transcription(name, table):
     assert np.array_equal(table, np.array(SECOND_TRANSCRIPTION[name].split(), dtype=float))
 
 
 @pytest.mark.parametrize(("xs", "ys", "slope_jump"), [
-    (bb.RADIAL_FC_GAMMA, bb.RADIAL_FC, 700.0),
-    (bb.THRUST_FC_GAMMA, bb.THRUST_FC, 300.0),
-    (bb.STATIC_F0_GAMMA, bb.STATIC_F0, 50.0),
+    (iso281.RADIAL_FC_GAMMA, iso281.RADIAL_FC, 700.0),
+    (iso281.THRUST_FC_GAMMA, iso281.THRUST_FC, 300.0),
+    (iso76.STATIC_F0_GAMMA, iso76.STATIC_F0, 50.0),
 ])
 def test_tables_are_smooth(xs, ys, slope_jump):
     """No entry breaks the trend: the slope changes by no more than a bound set by each
@@ -149,30 +150,30 @@ def test_tables_are_smooth(xs, ys, slope_jump):
 
 
 def test_factor_tables_are_monotonic_as_the_standard_has_them():
-    assert np.all(np.diff(bb.DEEP_GROOVE_E) > 0) and np.all(np.diff(bb.DEEP_GROOVE_Y) < 0)
-    assert np.all(np.diff(bb.ANGULAR_X) < 0) and np.all(np.diff(bb.ANGULAR_Y) < 0)
-    assert np.all(np.diff(bb.ANGULAR_E) > 0) and np.all(np.diff(bb.ANGULAR_Y0) < 0)
-    assert np.all(np.diff(bb.THRUST_FC) > 0)
+    assert np.all(np.diff(iso281.DEEP_GROOVE_E) > 0) and np.all(np.diff(iso281.DEEP_GROOVE_Y) < 0)
+    assert np.all(np.diff(iso281.ANGULAR_X) < 0) and np.all(np.diff(iso281.ANGULAR_Y) < 0)
+    assert np.all(np.diff(iso281.ANGULAR_E) > 0) and np.all(np.diff(iso76.ANGULAR_Y0) < 0)
+    assert np.all(np.diff(iso281.THRUST_FC) > 0)
 
 
 # --- aISO, viscosity and properties ----------------------------------------------------------
 
 @pytest.mark.parametrize("edge", [0.4, 1.0])
 def test_aiso_is_continuous_at_the_band_edges(edge):
-    below = bb.life_modification_factor(edge * (1 - 1e-12), 0.5, 1340.0, 10_000.0)
-    at = bb.life_modification_factor(edge, 0.5, 1340.0, 10_000.0)
+    below = iso281.life_modification_factor(edge * (1 - 1e-12), 0.5, 1340.0, 10_000.0)
+    at = iso281.life_modification_factor(edge, 0.5, 1340.0, 10_000.0)
     # The standard's rounded coefficients leave a step of about 1e-4 at κ = 0.4.
     assert float(at) == pytest.approx(float(below), rel=5e-4)
 
 
 def test_aiso_floor_is_0_1_and_cap_is_50():
-    clean_nothing = bb.life_modification_factor(np.array([0.1, 1.0, 4.0]), 0.0, 1000.0, 1e4)
+    clean_nothing = iso281.life_modification_factor(np.array([0.1, 1.0, 4.0]), 0.0, 1000.0, 1e4)
     assert np.allclose(clean_nothing, 0.1, rtol=1e-15)
-    assert float(bb.life_modification_factor(4.0, 1.0, 1e6, 1.0)) == 50.0
+    assert float(iso281.life_modification_factor(4.0, 1.0, 1e6, 1.0)) == 50.0
 
 
 def test_walther_viscosity_returns_its_reference_points():
-    nu = bb.walther_viscosity(68e-6, 8.7e-6, np.array([313.15, 373.15, 343.15]))
+    nu = iso281.walther_viscosity(68e-6, 8.7e-6, np.array([313.15, 373.15, 343.15]))
     assert nu[0] == pytest.approx(68e-6, rel=1e-12) and nu[1] == pytest.approx(8.7e-6,
                                                                                    rel=1e-12)
     assert 8.7e-6 < nu[2] < 68e-6
@@ -180,7 +181,7 @@ def test_walther_viscosity_returns_its_reference_points():
 
 def test_reference_viscosity_is_continuous_enough_at_1000_rpm_and_falls_with_speed():
     n = np.array([500.0, 999.999, 1000.0, 3000.0]) * 2 * np.pi / 60
-    nu1 = bb.reference_viscosity(n, 0.05)
+    nu1 = iso281.reference_viscosity(n, 0.05)
     assert np.all(np.diff(nu1) < 0)
     assert nu1[1] == pytest.approx(nu1[2], rel=0.03)  # the standard's two fits meet
 
@@ -242,7 +243,7 @@ def test_geometry_ratings_and_catalogue_ratings_are_both_reported(cli, spec_file
     text = BASE + "ball_count: 8\nball_diameter: 17.462 mm\npitch_diameter: 72.5 mm\n"
     results, record = results_of(cli, spec_file, text)
     assert results["dynamic_load_rating"] == 55300.0
-    c_iso, fc = bb.dynamic_load_rating(8, 17.462e-3, 72.5e-3, 0.0)
+    c_iso, fc = iso281.dynamic_load_rating(8, 17.462e-3, 72.5e-3, 0.0)
     assert results["dynamic_load_rating_iso"] == pytest.approx(float(c_iso), rel=1e-15)
     # Table 2 at γ = 0.24086 by hand: 59.0 + (0.24086 − 0.24)/0.02 · (58.2 − 59.0)
     assert float(fc) == pytest.approx(59.0 - 0.8 * (17.462 / 72.5 - 0.24) / 0.02, rel=1e-12)
@@ -251,7 +252,7 @@ def test_geometry_ratings_and_catalogue_ratings_are_both_reported(cli, spec_file
 
 def test_c_from_geometry_by_hand_for_a_large_ball():
     """Dw > 25.4 mm takes the 3.647·Dw^1.4 form (ISO 281 eq. 3)."""
-    c, fc = bb.dynamic_load_rating(10, 30e-3, 200e-3, 0.0)
+    c, fc = iso281.dynamic_load_rating(10, 30e-3, 200e-3, 0.0)
     expected = 3.647 * 1.3 * float(fc) * 10 ** (2 / 3) * 30 ** 1.4
     assert float(c) == pytest.approx(expected, rel=1e-14)
 
@@ -375,3 +376,37 @@ def test_axial_ratio_outside_table_3_warns(cli, spec_file):
     _, record = results_of(cli, spec_file, BASE.replace("10 kN", "1 kN") +
                                  "axial_load: 0.1 kN\n")
     assert any("below 0.172" in w for w in record["warnings"])
+
+
+# --- the rolling-element family --------------------------------------------------------------
+
+FAMILY_FORMULAS = {
+    "C": lambda family: iso281.dynamic_load_rating(9, 8e-3, 40e-3, 0.0, family=family),
+    "P": lambda family: iso281.equivalent_dynamic_load(1e3, 5e2, "angular-contact", 0.5,
+                                                       family=family),
+    "L10": lambda family: iso281.basic_rating_life(5e4, 1e4, family=family),
+    "Cu": lambda family: iso281.fatigue_load_limit(3e4, 0.07, family=family),
+    "aISO": lambda family: iso281.life_modification_factor(1.0, 0.5, 1e3, 1e4,
+                                                           family=family),
+    "C0": lambda family: iso76.static_load_rating(9, 8e-3, 40e-3, 0.0, family=family),
+    "P0": lambda family: iso76.static_equivalent_load(1e3, 5e2, "deep-groove", 0.0,
+                                                      family=family),
+}
+
+
+@pytest.mark.parametrize("formula", sorted(FAMILY_FORMULAS))
+def test_every_family_dependent_formula_computes_for_balls_and_refuses_rollers(formula):
+    value = FAMILY_FORMULAS[formula]("ball")
+    value = value[0] if isinstance(value, tuple) else value   # (C, fc), (P, X, ...): C, P
+    assert np.isfinite(value) and value > 0
+    with pytest.raises(NotImplementedError, match="ball bearings only"):
+        FAMILY_FORMULAS[formula]("roller")
+    with pytest.raises(ValueError, match="unknown rolling-element family 'needle'"):
+        FAMILY_FORMULAS[formula]("needle")
+
+
+def test_the_solver_states_its_family_and_the_standards_default_to_it():
+    assert bb.FAMILY == "ball"
+    c_default, _ = iso281.dynamic_load_rating(9, 8e-3, 40e-3, 0.0)
+    c_ball, _ = iso281.dynamic_load_rating(9, 8e-3, 40e-3, 0.0, family="ball")
+    assert float(c_default) == float(c_ball)

@@ -8,7 +8,7 @@ import json
 import numpy as np
 import pytest
 
-from bearingcalc.core.ball_bearing import ball_kinematics
+from bearingcalc.core.ball_bearing_kinematics import ball_kinematics
 from tests.conftest import ROOT
 
 TAU = 2 * np.pi

@@ -19,7 +19,7 @@ from mpmath import mp, mpf
 from scipy.integrate import dblquad, quad
 from scipy.optimize import brentq
 
-from bearingcalc.core import ball_bearing, thrust_bearing
+from bearingcalc.core import ball_bearing_contacts, iso76, thrust_bearing_contacts
 from bearingcalc.core.hertz import curvature_difference, ellipse_modulus, hertz_point_contact
 from tests.conftest import ROOT, csv_column, solve_json
 
@@ -165,9 +165,9 @@ def test_iso_76_basis_through_the_bearing_contacts():
     """ISO 76:2006 6.1: at P0 = C0 the inner contact of the most heavily loaded ball sees
     4200 MPa. For a 6205 (fi = 0.52) C0 from Table 1's f0 must give that within 1 %
     (pressure ∝ load^(1/3), so within 1/3 % in pressure)."""
-    c0, _ = ball_bearing.static_load_rating(9, 7.938e-3, 38.5e-3, 0.0)
-    out = ball_bearing.ball_contacts(9, 7.938e-3, 38.5e-3, 0.0, False, c0, 0.52, 0.53,
-                                     207.5e9, 0.3, 4.2e9)
+    c0, _ = iso76.static_load_rating(9, 7.938e-3, 38.5e-3, 0.0)
+    out = ball_bearing_contacts.ball_contacts(9, 7.938e-3, 38.5e-3, 0.0, False, c0, 0.52,
+                                              0.53, 207.5e9, 0.3, 4.2e9)
     assert float(out["inner_contact_pressure"]) ** 3 == pytest.approx(4.2e9 ** 3, rel=0.01)
     assert float(out["max_ball_load"]) == pytest.approx(5 * float(c0) / 9, rel=1e-15)
 
@@ -177,8 +177,8 @@ def test_thrust_ball_forces_balance_in_three_dimensions():
     balls adds up to the axial load with no net radial force."""
     r, theta, b, z, fa = 6.35e-3, math.radians(30), 26e-3, 12, 2000.0
     cage = 52.3
-    out = thrust_bearing.ball_contact_loads(r, theta, b, cage, z, fa, 207.5e9, 0.3, 7850.0,
-                                            4.2e9)
+    out = thrust_bearing_contacts.ball_contact_loads(r, theta, b, cage, z, fa, 207.5e9, 0.3,
+                                                     7850.0, 4.2e9)
     q1, q2, q3 = (float(out[k]) for k in ("race_radial_contact_load",
                                           "race_axial_contact_load", "shaft_contact_load"))
     mass = 7850.0 * 4 / 3 * math.pi * r ** 3

@@ -12,7 +12,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-MM = 1e3
+from bearingcalc.core.common import MM
+
 #: Gleason whole depth: h = 2.188·m + 0.051 mm. [m]
 WHOLE_DEPTH_FACTOR, WHOLE_DEPTH_EXTRA = 2.188, 0.051e-3
 #: AGMA 2003 load-distribution base factor Kmb by mounting.

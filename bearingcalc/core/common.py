@@ -1,11 +1,27 @@
-"""Helpers shared by the solver modules."""
+"""Helpers and constants shared by the solver modules."""
 
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+
+#: SI -> the units the rolling-bearing standards write their formulas in: millimetres,
+#: newtons and revolutions per minute (from rad/s).
+MM = 1e3
+NEWTON = 1.0
+RPM = 60.0 / (2.0 * np.pi)
+
+#: Relative slack of the balls-fit test, a few ulps of π.
+FIT_SLACK = 8 * np.finfo(float).eps
+
+#: The rolling elements of a bearing: ISO 281 and ISO 76 give each family formulas of
+#: its own (roller bearings: C = bm·fc·(i·Lwe·cosα)^(7/9)·Z^(3/4)·Dwe^(29/27),
+#: L10 = (C/P)^(10/3), C0 = 44·(1 − Dwe·cosα/Dpw)·i·Z·Lwe·Dwe·cosα).
+Family = Literal["ball", "roller"]
+FAMILIES: tuple[str, ...] = ("ball", "roller")
 
 
 def first_failure(checks: Sequence[tuple[int, ArrayLike]], shape: tuple[int, ...]) -> NDArray:
@@ -31,3 +47,48 @@ def broadcast_all(results: dict[str, ArrayLike]) -> dict[str, NDArray]:
 def nan_where(bad: NDArray, value: ArrayLike) -> NDArray:
     """``value`` with NaN where ``bad`` holds, so impossible points carry no number."""
     return np.where(bad, np.nan, value)
+
+
+def balls_fit(ball_count: ArrayLike, size_ratio: ArrayLike) -> NDArray:
+    r"""Whether Z balls fit side by side on their pitch circle.
+
+    .. math:: Z \arcsin\frac{D_w}{D_{pw}} \le \pi
+
+    Parameters
+    ----------
+    ball_count : Z. [1]
+    size_ratio : the ball's diameter over the pitch diameter, Dw/Dpw (or the ball's
+        radius over the pitch radius, the same ratio); above 1 it counts as 1. [1]
+
+    Returns
+    -------
+    True where they fit. A few ulps of slack keep balls that fit exactly (6 at a ratio
+    of 1/2) from being refused because asin and the product round up.
+    """
+    ratio = np.minimum(np.asarray(size_ratio, dtype=float), 1.0)
+    return np.asarray(ball_count, dtype=float) * np.arcsin(ratio) <= np.pi * (1.0 + FIT_SLACK)
+
+
+def table_lookup(x: ArrayLike, xs: NDArray, ys: NDArray) -> NDArray:
+    """Linear interpolation in a table; NaN outside its range (no extrapolation)."""
+    x = np.asarray(x, dtype=float)
+    inside = (x >= xs[0]) & (x <= xs[-1])
+    return np.where(inside, np.interp(x, xs, ys), np.nan)
+
+
+def ball_family_only(family: str, formula: str) -> None:
+    """Refuse a rolling-element family whose form of ``formula`` is not implemented.
+
+    Raises
+    ------
+    NotImplementedError : for "roller": the standards' roller-bearing formulas are not
+        implemented.
+    ValueError : for a family that is neither "ball" nor "roller".
+    """
+    if family == "ball":
+        return
+    if family == "roller":
+        raise NotImplementedError(f"{formula} is implemented for ball bearings only; the "
+                                  "roller-bearing form of the standard is not")
+    raise ValueError(f"unknown rolling-element family {family!r}: expected one of "
+                     f"{', '.join(FAMILIES)}")

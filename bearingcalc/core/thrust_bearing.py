@@ -11,6 +11,10 @@ Every function takes SI values (m, rad, rad/s) as floats or numpy arrays, which
 broadcast against each other, and returns numpy arrays. NaN passes through;
 geometrically impossible points give NaN (see :func:`thrust_bearing_status` for
 the reason).
+
+The pure-rolling geometry is in :mod:`bearingcalc.core.thrust_bearing_geometry` and the
+loads and Hertz pressures of a ball in :mod:`bearingcalc.core.thrust_bearing_contacts`;
+this module gives every speed, the status of each design and the registry's entry point.
 """
 
 from __future__ import annotations
@@ -20,12 +24,37 @@ from collections.abc import Collection, Mapping
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core.common import broadcast_all, first_failure
-from bearingcalc.core.hertz import hertz_point_contact
+from bearingcalc.core.common import balls_fit, broadcast_all, first_failure
+from bearingcalc.core.thrust_bearing_contacts import ball_contact_loads
+from bearingcalc.core.thrust_bearing_geometry import (
+    complete_geometry,
+    geometry_possible,
+    pitch_radius_window,
+    pitch_radius_window_from_terms,
+    pure_rolling_ball_radius,
+    pure_rolling_contact_angle,
+    pure_rolling_pitch_radius,
+    spin_to_roll_from,
+    spin_to_roll_from_terms,
+    spin_to_roll_ratio,
+)
+
+#: What the package and the registry read from this module, the geometry's functions
+#: among them.
+__all__ = [
+    "ball_contact_loads",
+    "complete_geometry",
+    "evaluate",
+    "pitch_radius_window",
+    "pure_rolling_ball_radius",
+    "pure_rolling_contact_angle",
+    "pure_rolling_pitch_radius",
+    "solve_thrust_bearing",
+    "spin_to_roll_ratio",
+    "thrust_bearing_status",
+]
 
 HALF_SQRT2 = np.sqrt(0.5)
-#: Relative slack of the ball-fit test, a few ulps of π.
-FIT_SLACK = 8 * np.finfo(float).eps
 
 #: Result keys, their SI unit and meaning, in report order.
 RESULTS: dict[str, tuple[str, str]] = {
@@ -76,193 +105,6 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
 CONTACT_TOO_LARGE = 7
 
 
-def pure_rolling_pitch_radius(ball_radius: ArrayLike, contact_angle: ArrayLike) -> NDArray:
-    r"""Pitch radius at which the shaft contact rolls without spin.
-
-    .. math:: b^* = r\,\frac{1 + \sin\theta}{\cos\theta - \sin\theta}
-
-    Parameters
-    ----------
-    ball_radius : Ball radius r. [m]
-    contact_angle : Shaft contact angle θ, finite only for 0 < θ < π/4. [rad]
-
-    Returns
-    -------
-    Pitch radius b*. [m] NaN outside 0 < θ < π/4.
-
-    Source: docs/physics.md §1 (seed, thrust bearing, final relation).
-
-    >>> round(float(pure_rolling_pitch_radius(1.0, np.radians(30.0))), 4)
-    4.0981
-    """
-    r = np.asarray(ball_radius, dtype=float)
-    theta = _angle_in_range(contact_angle)
-    return r * (1.0 + np.sin(theta)) / (np.cos(theta) - np.sin(theta))
-
-
-def pure_rolling_contact_angle(ball_radius: ArrayLike, pitch_radius: ArrayLike) -> NDArray:
-    r"""Contact angle at which a ball of radius r at pitch radius b rolls purely.
-
-    Solves b·cosθ − (b + r)·sinθ = r in closed form:
-
-    .. math:: \theta = \arccos\frac{r}{M} - \operatorname{atan2}(b + r, b),
-              \quad M = \sqrt{b^2 + (b + r)^2}
-
-    Parameters
-    ----------
-    ball_radius : Ball radius r > 0. [m]
-    pitch_radius : Pitch radius b; a solution exists for every b > r. [m]
-
-    Returns
-    -------
-    Contact angle θ in (0, π/4). [rad] NaN where b <= r.
-
-    Source: docs/physics.md §1.
-    """
-    r = np.asarray(ball_radius, dtype=float)
-    b = np.asarray(pitch_radius, dtype=float)
-    with np.errstate(invalid="ignore"):
-        theta = np.arccos(r / np.hypot(b, b + r)) - np.arctan2(b + r, b)
-    return np.where((r > 0) & (b > r), theta, np.nan)
-
-
-def pure_rolling_ball_radius(contact_angle: ArrayLike, pitch_radius: ArrayLike) -> NDArray:
-    r"""Ball radius that rolls purely at pitch radius b and contact angle θ.
-
-    .. math:: r = b\,\frac{\cos\theta - \sin\theta}{1 + \sin\theta}
-
-    Parameters
-    ----------
-    contact_angle : Shaft contact angle θ, 0 < θ < π/4. [rad]
-    pitch_radius : Pitch radius b. [m]
-
-    Returns
-    -------
-    Ball radius r. [m] NaN outside 0 < θ < π/4.
-
-    Source: docs/physics.md §1.
-    """
-    theta = _angle_in_range(contact_angle)
-    b = np.asarray(pitch_radius, dtype=float)
-    return b * (np.cos(theta) - np.sin(theta)) / (1.0 + np.sin(theta))
-
-
-def spin_to_roll_ratio(ball_radius: ArrayLike, contact_angle: ArrayLike,
-                       pitch_radius: ArrayLike) -> NDArray:
-    r"""Spin-to-roll ratio ρ of the shaft relative to the ball at the shaft contact.
-
-    .. math:: \rho = \frac{K\sin\theta + \sin\theta - \cos\theta}
-                          {K\cos\theta + \sin\theta + \cos\theta},
-              \quad K = \frac{r(1 + \sin\theta + \cos\theta)}{b - r\cos\theta}
-
-    ρ falls monotonically from tanθ (as d → 0) through 0 (at b = b*) toward
-    −tan(π/4 − θ) (as b → ∞). It does not depend on the shaft speed.
-
-    Parameters
-    ----------
-    ball_radius : r. [m]
-    contact_angle : θ. [rad]
-    pitch_radius : b. [m]
-
-    Returns
-    -------
-    ρ. [1] NaN where the geometry is impossible.
-
-    Source: docs/physics.md §1.
-    """
-    r = np.asarray(ball_radius, dtype=float)
-    theta = np.asarray(contact_angle, dtype=float)
-    b = np.asarray(pitch_radius, dtype=float)
-    return np.where(_geometry_ok(r, theta, b), _spin_to_roll_unchecked(r, theta, b), np.nan)
-
-
-def _spin_to_roll_unchecked(r: NDArray, theta: NDArray, b: NDArray) -> NDArray:
-    return _rho_from(r, b, np.sin(theta), np.cos(theta))
-
-
-def _rho_from(r: NDArray, b: NDArray, sin: NDArray, cos: NDArray) -> NDArray:
-    """ρ from r, b and the contact angle's sine and cosine (see spin_to_roll_ratio)."""
-    return _rho_from_terms(r * (1.0 + sin + cos), b - r * cos, sin, cos)
-
-
-def _rho_from_terms(r_rolling: NDArray, d: NDArray, sin: NDArray, cos: NDArray) -> NDArray:
-    """ρ from r(1 + sinθ + cosθ), d = b − r·cosθ, sinθ and cosθ, each computed once by
-    the caller (the same arithmetic, so the same bits, as :func:`_rho_from`)."""
-    with np.errstate(divide="ignore", invalid="ignore"):
-        k = r_rolling / d
-        return (k * sin + sin - cos) / (k * cos + sin + cos)
-
-
-def pitch_radius_window(ball_radius: ArrayLike, contact_angle: ArrayLike,
-                        max_spin_to_roll: ArrayLike) -> tuple[NDArray, NDArray]:
-    r"""Range of pitch radii that keeps |ρ| <= ρ_max.
-
-    Solving ρ = ±ρ_max for K and then b = r·cosθ + r(1 + sinθ + cosθ)/K:
-
-    .. math:: K(\rho) = \frac{\rho(\sin\theta + \cos\theta) + \cos\theta - \sin\theta}
-                             {\sin\theta - \rho\cos\theta}
-
-    The lower edge solves ρ = +ρ_max; when ρ_max >= tanθ no b reaches it and the
-    edge is the geometric bound b → r·cosθ. The upper edge solves ρ = −ρ_max; when
-    ρ_max >= tan(π/4 − θ) there is no upper edge and it is +inf.
-
-    Parameters
-    ----------
-    ball_radius : r. [m]
-    contact_angle : θ, 0 < θ < π/4. [rad]
-    max_spin_to_roll : ρ_max >= 0. [1]
-
-    Returns
-    -------
-    (b_min, b_max). [m]
-
-    Source: docs/physics.md §1.
-    """
-    r = np.asarray(ball_radius, dtype=float)
-    theta = _angle_in_range(contact_angle)
-    b_min, b_max = _window_from(r, theta, np.sin(theta), np.cos(theta), max_spin_to_roll)
-    nan = np.isnan(theta) | np.isnan(np.asarray(max_spin_to_roll, dtype=float)) | np.isnan(r)
-    return np.where(nan, np.nan, b_min), np.where(nan, np.nan, b_max)
-
-
-def _window_from(r: NDArray, theta: NDArray, sin: NDArray, cos: NDArray,
-                 max_spin_to_roll: ArrayLike) -> tuple[NDArray, NDArray]:
-    """The window's edges from the contact angle and its sine and cosine (NaN in, NaN
-    out for the lower edge; see pitch_radius_window)."""
-    return _window_from_terms(r, theta, sin, cos, r * cos, r * (1.0 + sin + cos),
-                              max_spin_to_roll)
-
-
-def _window_from_terms(r: NDArray, theta: NDArray, sin: NDArray, cos: NDArray,
-                       r_cos: NDArray, r_rolling: NDArray, max_spin_to_roll: ArrayLike
-                       ) -> tuple[NDArray, NDArray]:
-    """:func:`_window_from` with r·cosθ and r(1 + sinθ + cosθ) computed once by the caller."""
-    rho_max = np.asarray(max_spin_to_roll, dtype=float)
-    sin_plus_cos = sin + cos
-
-    def edge(rho: NDArray) -> NDArray:
-        with np.errstate(divide="ignore", invalid="ignore"):
-            k = (rho * sin_plus_cos + cos - sin) / (sin - rho * cos)
-            return r_cos + r_rolling / k
-
-    # K must be positive for a real edge; otherwise the edge is out of reach. With
-    # 0 < θ < π/4 that is ρ_max < tanθ for the lower edge and ρ_max < tan(π/4 − θ) for
-    # the upper, compared here as the signs of K's numerator and denominator are.
-    low_reachable = rho_max * cos < sin
-    high_reachable = rho_max * sin_plus_cos < cos - sin
-    # The usual study has every edge in reach: no selection pass is needed then.
-    b_min = edge(rho_max)
-    if not low_reachable.all():
-        b_min = np.where(low_reachable, b_min, r_cos)
-    b_max = edge(-rho_max)
-    if not high_reachable.all():
-        b_max = np.where(high_reachable, b_max, np.inf)
-    # An impossible geometry (θ NaN) has no window: NaN, not the unbounded edge.
-    if np.isnan(theta).any() or np.isnan(r).any():
-        b_max = np.where(np.isnan(theta) | np.isnan(r), np.nan, b_max)
-    return b_min, b_max
-
-
 def thrust_bearing_status(ball_radius: ArrayLike, contact_angle: ArrayLike,
                           pitch_radius: ArrayLike, ball_count: ArrayLike | None = None,
                           cos: NDArray | None = None) -> NDArray:
@@ -289,9 +131,7 @@ def thrust_bearing_status(ball_radius: ArrayLike, contact_angle: ArrayLike,
         ]
         if ball_count is not None:
             z = np.asarray(ball_count, dtype=float)
-            # A few ulps of slack: Z balls that fit exactly (6 at r/b = 1/2) must not be
-            # refused because asin and the product round up.
-            fits = z * np.arcsin(np.minimum(r / b, 1.0)) <= np.pi * (1.0 + FIT_SLACK)
+            fits = balls_fit(z, r / b)
             # A single ball always fits; two or more need b >= r.
             checks.append((5, ~(fits & ((z <= 1) | (b >= r)))))
     return first_failure(checks, shape)
@@ -357,7 +197,7 @@ def _solve(r: NDArray, theta: NDArray, b: NDArray, shaft_speed: ArrayLike,
     if cos is None:
         cos = np.cos(theta)
     if ok is None:
-        ok = _geometry_ok(r, theta, b, cos)
+        ok = geometry_possible(r, theta, b, cos)
     all_ok = bool(np.all(ok))
     if not all_ok:
         # NaN where impossible: cos(NaN) is NaN, so masking cosθ equals taking the
@@ -382,13 +222,13 @@ def _solve(r: NDArray, theta: NDArray, b: NDArray, shaft_speed: ArrayLike,
     roll = -rel_1 * sin + rel_2 * cos
     # ρ is a property of the geometry alone; computing it from K keeps it finite
     # (and exact) when the shaft is at rest and spin and roll are both zero.
-    rho = _rho_from_terms(r_rolling, d, sin, cos)
+    rho = spin_to_roll_from_terms(r_rolling, d, sin, cos)
     if solved:
         # Pure rolling by construction: the formulas would leave rounding dust of
         # order 1e-17, which a limit of exactly 0 must not see.
         spin, rho = spin * 0.0, rho * 0.0
     b_star = r * one_plus_sin / (cos - sin)
-    b_min, b_max = _window_from_terms(r, theta, sin, cos, r_cos, r_rolling, rho_max)
+    b_min, b_max = pitch_radius_window_from_terms(r, theta, sin, cos, r_cos, r_rolling, rho_max)
 
     results = {
         "ball_radius": r,
@@ -416,22 +256,6 @@ def _solve(r: NDArray, theta: NDArray, b: NDArray, shaft_speed: ArrayLike,
     return broadcast_all(results)
 
 
-def complete_geometry(ball_radius: ArrayLike | None, contact_angle: ArrayLike | None,
-                      pitch_radius: ArrayLike | None) -> tuple[NDArray, NDArray, NDArray]:
-    """(r, θ, b) with the one missing value solved for pure rolling. [m, rad, m]"""
-    missing = [ball_radius is None, contact_angle is None, pitch_radius is None]
-    if sum(missing) > 1:
-        raise ValueError("at most one of ball_radius, contact_angle and pitch_radius may be None")
-    if ball_radius is None:
-        ball_radius = pure_rolling_ball_radius(contact_angle, pitch_radius)  # type: ignore[arg-type]
-    elif contact_angle is None:
-        contact_angle = pure_rolling_contact_angle(ball_radius, pitch_radius)  # type: ignore[arg-type]
-    elif pitch_radius is None:
-        pitch_radius = pure_rolling_pitch_radius(ball_radius, contact_angle)
-    return (np.asarray(ball_radius, dtype=float), np.asarray(contact_angle, dtype=float),
-            np.asarray(pitch_radius, dtype=float))
-
-
 #: Results that :func:`evaluate` can compute alone, without every speed.
 _RATIO_ONLY = frozenset({"spin_to_roll", "slip_margin"})
 
@@ -454,7 +278,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
         status = np.where((status == 3) & ~(b > r), np.int8(6), status)
     solved = any(inputs[key] is None for key in ("ball_radius", "contact_angle", "pitch_radius"))
     if wanted is not None and set(wanted) <= _RATIO_ONLY:
-        rho = _rho_from(r, b, np.sin(theta), cos)
+        rho = spin_to_roll_from(r, b, np.sin(theta), cos)
         feasible = status == FEASIBLE
         if not feasible.all():
             rho = np.where(feasible, rho, np.nan)
@@ -476,75 +300,3 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
                           status)
         results = broadcast_all(results)
     return results, status
-
-
-def ball_contact_loads(ball_radius: ArrayLike, contact_angle: ArrayLike,
-                       pitch_radius: ArrayLike, cage_speed: ArrayLike, ball_count: ArrayLike,
-                       axial_load: ArrayLike, elastic_modulus: ArrayLike,
-                       poisson_ratio: ArrayLike, density: ArrayLike,
-                       max_contact_pressure: ArrayLike) -> dict[str, NDArray]:
-    r"""Contact forces on one ball and the Hertz pressure at each of its three contacts.
-
-    Static balance of a ball in its meridian plane (gravity, friction and gyroscopic
-    moments neglected): the shaft pushes along −n with Q3, the race wall along +e1 with
-    Q1 and the race floor along +e2 with Q2, and the centrifugal force m·b·ω_cage² acts
-    along −e1. All pass through the ball's centre, so
-
-    .. math:: Q_3 = rac{F_a}{Z\sin	heta}, \quad Q_2 = Q_3\sin	heta, \quad
-              Q_1 = Q_3\cos	heta + m\,b\,\omega_{cage}^2
-
-    Curvatures: the ball 1/r in every plane; the race bore, a concave cylinder of
-    radius b + r, −1/(b + r) about the axis and 0 along it; the floor, flat; the shaft's
-    cone cosθ/d about the axis (d = b − r·cosθ) and 0 along its generator.
-
-    Parameters
-    ----------
-    ball_radius, contact_angle, pitch_radius : r [m], θ [rad], b [m].
-    cage_speed : ω_cage. [rad/s]
-    ball_count : Z. [1]
-    axial_load : Fa on the shaft. [N]
-    elastic_modulus, poisson_ratio, density : of balls, race and shaft alike.
-        [Pa], [1], [kg/m³]
-    max_contact_pressure : the limit. [Pa]
-
-    Source: docs/physics.md §1 (geometry) and §6 (Hertz).
-    """
-    r, theta, b = (np.asarray(x, dtype=float) for x in (ball_radius, contact_angle,
-                                                         pitch_radius))
-    sin, cos = np.sin(theta), np.cos(theta)
-    mass = np.asarray(density, dtype=float) * (4.0 / 3.0) * np.pi * r ** 3
-    centrifugal = mass * b * np.asarray(cage_speed, dtype=float) ** 2
-    q3 = np.asarray(axial_load, dtype=float) / (np.asarray(ball_count, dtype=float) * sin)
-    q2 = q3 * sin
-    q1 = q3 * cos + centrifugal
-    ball = 1.0 / r
-    e, nu = elastic_modulus, poisson_ratio
-    shaft = hertz_point_contact(q3, ball, ball, cos / (b - r * cos), 0.0, e, nu, e, nu)
-    wall = hertz_point_contact(q1, ball, ball, -1.0 / (b + r), 0.0, e, nu, e, nu)
-    floor = hertz_point_contact(q2, ball, ball, 0.0, 0.0, e, nu, e, nu)
-    peak = np.maximum(np.maximum(shaft["max_pressure"], wall["max_pressure"]),
-                      floor["max_pressure"])
-    return {
-        "shaft_contact_load": q3, "race_radial_contact_load": q1,
-        "race_axial_contact_load": q2, "ball_centrifugal_force": centrifugal,
-        "shaft_contact_pressure": shaft["max_pressure"],
-        "race_radial_contact_pressure": wall["max_pressure"],
-        "race_axial_contact_pressure": floor["max_pressure"],
-        "max_contact_pressure": peak,
-        "contact_pressure_margin": 1.0 - peak / np.asarray(max_contact_pressure),
-        # Not a result: evaluate() judges Hertz theory's validity by it.
-        "_largest_semi_major": np.maximum(np.maximum(shaft["semi_major"], wall["semi_major"]),
-                                          floor["semi_major"]),
-    }
-
-
-def _angle_in_range(contact_angle: ArrayLike) -> NDArray:
-    theta = np.asarray(contact_angle, dtype=float)
-    return np.where((theta > 0) & (theta < np.pi / 4), theta, np.nan)
-
-
-def _geometry_ok(r: NDArray, theta: NDArray, b: NDArray, cos: NDArray | None = None) -> NDArray:
-    with np.errstate(invalid="ignore"):
-        if cos is None:
-            cos = np.cos(theta)
-        return (r > 0) & (b > 0) & (theta > 0) & (theta < np.pi / 4) & (b - r * cos > 0)
