@@ -1,7 +1,7 @@
 """Monte Carlo speed and memory of `bearingcalc tolerance`, beside a plain numpy loop.
 
 The spec is benchmarks/tolerance-bench.yaml: a thrust bearing with three
-toleranced inputs. Measured, in one run, and printed as the issue's ratios:
+toleranced inputs. Measured, in one run, and printed as ratios to the reference:
 
 1. the reference: a plain single-threaded numpy loop over chunks of 10^6 samples
    (draw three normals, evaluate the spin-to-roll ratio, count the yield),
@@ -14,6 +14,8 @@ toleranced inputs. Measured, in one run, and printed as the issue's ratios:
 3. peak resident memory of the large run (target < 400 MB).
 
     python benchmarks/bench_tolerance.py [--samples 10000000] [--large-samples 100000000]
+
+``--large-samples 0`` leaves the large run out (it takes a minute or more).
 """
 
 from __future__ import annotations
@@ -33,7 +35,7 @@ SPEC = ROOT / "benchmarks" / "tolerance-bench.yaml"
 
 
 def reference_loop(samples: int, chunk: int = 1_000_000) -> float:
-    """Samples per second of the plain loop the issue describes."""
+    """Samples per second of the plain reference loop (point 1 above)."""
     rng = np.random.default_rng(0)
     limit = 0.004
     start = time.perf_counter()
