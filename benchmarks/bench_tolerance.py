@@ -15,7 +15,7 @@ toleranced inputs. Measured, in one run, and printed as ratios to the reference:
 
     python benchmarks/bench_tolerance.py [--samples 10000000] [--large-samples 100000000]
 
-``--large-samples 0`` leaves the large run out (it takes a minute or more).
+``--large-samples 0`` leaves the large run (its reference loop and its CLI run) out.
 """
 
 from __future__ import annotations
