@@ -119,6 +119,12 @@ COMMON_UNITS: dict[str, tuple[str, float]] = {
     "cSt": ("meter ** 2 / second", 1e-6),
     "MPa": ("gram / meter / second ** 2", 1e9),
     "GPa": ("gram / meter / second ** 2", 1e12),
+    "N*m": ("gram * meter ** 2 / second ** 2", 1e3),
+    "N·m": ("gram * meter ** 2 / second ** 2", 1e3),
+    "W": ("gram * meter ** 2 / second ** 3", 1e3),
+    "kW": ("gram * meter ** 2 / second ** 3", 1e6),
+    "kg/m^3": ("gram / meter ** 3", 1e3),
+    "kg/m³": ("gram / meter ** 3", 1e3),
 }
 
 #: Notations of revolutions per minute, read as ``rpm`` where an angular speed is

@@ -44,6 +44,24 @@ def test_every_fast_path_unit_equals_pints_own_conversion(unit):
                         7.25 * factor * dimension.si_per_root, rel_tol=1e-15)
 
 
+EXAMPLES = sorted([*ROOT.glob("specs/*.yaml"), *ROOT.glob("specs/tolerances/*.yaml"),
+                   *ROOT.glob("bearingcalc/templates/*.yaml")])
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda path: str(path.relative_to(ROOT)))
+def test_every_example_and_template_reads_its_units_from_the_table(path, monkeypatch):
+    """A unit outside ``COMMON_UNITS`` loads pint's registry, which costs a cold solve
+    about as much again as the rest of it."""
+    from bearingcalc import units
+    from bearingcalc.evaluation import load_one_spec
+
+    def pint_lookup(unit):
+        raise AssertionError(f"{path.name}: '{unit}' is not in COMMON_UNITS")
+
+    monkeypatch.setattr(units, "_pint_unit", pint_lookup)
+    load_one_spec(path)
+
+
 @pytest.mark.parametrize("notation", sorted(RPM_NOTATIONS))
 def test_every_rpm_notation_is_pints_revolution_per_minute(notation):
     # Checked against pint's own rpm, not against the table: pint knows neither r nor
