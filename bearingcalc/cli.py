@@ -1,4 +1,6 @@
-"""The ``bearingcalc`` command line: parses options, calls the library, prints.
+"""The ``bearingcalc`` command line: parses options, calls the library and a report
+writer per format, and sets the exit status. How a report reaches stdout or a file,
+and how an error becomes one line, is :mod:`bearingcalc.cli_output`.
 
 Exit status: 0 every spec within its limits; 1 some spec violates a limit;
 2 some spec could not be read or is invalid (2 wins over 1).
@@ -10,20 +12,21 @@ import os
 import sys
 from enum import Enum
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated
+from typing import Annotated
 
 # pydantic scans installed packages for plugins on its first model; bearingcalc uses
 # none, and the scan costs about 20 ms of every command's start.
 os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
 
 import typer
-from typer.core import TyperCommand
 
 from bearingcalc.cli_output import (
     EXIT_INVALID,
     EXIT_LIMIT,
     EXIT_OK,
+    HelpListsKinds,
     Writer,
+    check_parquet_output,
     check_plot_name,
     emit,
     errors_as_exit,
@@ -38,9 +41,6 @@ from bearingcalc.cli_output import (
 from bearingcalc.errors import SpecError
 from bearingcalc.output import StagedFiles
 from bearingcalc.wording import did_you_mean
-
-if TYPE_CHECKING:
-    import click
 
 app = typer.Typer(add_completion=False, pretty_exceptions_enable=False, no_args_is_help=True,
                   context_settings={"help_option_names": ["-h", "--help"]},
@@ -95,33 +95,7 @@ def _sample_count(text: str | int) -> int:
     return int(number)
 
 
-class _HelpListsKinds(TyperCommand):
-    """A command whose ``--help`` ends with every registered kind and its summary.
-
-    The list is read from the registry when the help is shown, so a new kind appears
-    in it without an edit here, and a run that shows no help never builds it.
-    """
-
-    def format_help(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
-        from rich.markup import escape
-
-        from bearingcalc.kinds import KINDS
-
-        width = max(map(len, KINDS))
-        kinds = "\n".join(f"  {name:{width}}  {escape(kind.summary)}"
-                          for name, kind in KINDS.items())
-        summary = self.help
-        # typer removes the indentation that all lines but the first share: the last
-        # line, flush left, keeps the list's.
-        self.help = (f"{summary}\n\nKinds (a spec's 'kind:'):\n{kinds}\n\n"
-                     "'bearingcalc new KIND' prints a commented template spec of KIND.")
-        try:
-            super().format_help(ctx, formatter)
-        finally:
-            self.help = summary
-
-
-@app.command(cls=_HelpListsKinds)
+@app.command(cls=HelpListsKinds)
 def solve(
     specs: Annotated[list[Path], typer.Argument(
         help="YAML spec files.", show_default=False, metavar="SPEC...")],
@@ -363,7 +337,7 @@ def sweep(
         check_plot_name(plot)
         chosen = output_format or _format_for(output)
         if chosen is SweepFormat.parquet:
-            _check_parquet(spec_path, output)
+            check_parquet_output(spec_path, output)
         # Without --format, the suggested file is CSV, which holds every result.
         suffix = _SWEEP_SUFFIXES.get(chosen, ".txt" if output_format else ".csv")
         results_file = output_target(output, "results", suffix)
@@ -393,7 +367,7 @@ def sweep(
                 from bearingcalc.plots import sweep_plot
 
                 stage_plot(files, chart, lambda f, fmt: sweep_plot(solved, keys, f, fmt=fmt))
-            # Parquet is refused without --output (_check_parquet): never stdout.
+            # Parquet is refused without --output (check_parquet_output): never stdout.
             emit(writers[chosen], results_file, files, binary=chosen is SweepFormat.parquet)
 
 
@@ -414,19 +388,6 @@ def _format_for(output: Path | None) -> SweepFormat:
     suffix = output.suffix.lower() if output is not None else ""
     return {".csv": SweepFormat.csv, ".json": SweepFormat.json, ".jsonl": SweepFormat.json,
             ".parquet": SweepFormat.parquet}.get(suffix, SweepFormat.table)
-
-
-def _check_parquet(spec_path: Path, output: Path | None) -> None:
-    """Refuse Parquet output without a file to write or without pyarrow, the optional
-    extra that writes it."""
-    if output is None:
-        raise SpecError("--format parquet writes a file: give --output grid.parquet",
-                        source=str(spec_path))
-    try:
-        import pyarrow  # noqa: F401
-    except ImportError:
-        raise SpecError("Parquet output needs pyarrow, the optional extra: pip install "
-                        "'bearingcalc[parquet]'", source=str(output)) from None
 
 
 _CHECK_SUFFIXES = {CheckFormat.table: ".txt", CheckFormat.json: ".jsonl",

@@ -1,6 +1,6 @@
 """Where the command line's output goes: reports to stdout or to files written all or
-none, plots beside them, a progress bar on stderr, and every error as one line on
-stderr with the exit status that goes with it.
+none, plots beside them, a progress bar on stderr, every error as one line on stderr
+with the exit status that goes with it, and the help that lists the kinds.
 
 The commands in ``bearingcalc.cli`` decide what to write; this module decides how.
 It never imports the CLI.
@@ -13,13 +13,17 @@ import sys
 import traceback
 from collections.abc import Callable, Iterable
 from pathlib import Path
-from typing import IO, Any, BinaryIO, TypeVar
+from typing import IO, TYPE_CHECKING, Any, BinaryIO, TypeVar
 
 import typer
+from typer.core import TyperCommand
 
 from bearingcalc.errors import SpecError
 from bearingcalc.output import StagedFiles, Target, check_targets, reason
 from bearingcalc.wording import printable
+
+if TYPE_CHECKING:
+    import click
 
 T = TypeVar("T")
 
@@ -47,6 +51,19 @@ def check_plot_name(plot: Path | None) -> None:
     """Refuse a ``--plot`` that names neither a PNG nor an SVG file."""
     if plot is not None and plot.suffix.lower() not in (".png", ".svg"):
         raise SpecError("--plot: give a .png or .svg file name", source=str(plot))
+
+
+def check_parquet_output(spec_path: Path, output: Path | None) -> None:
+    """Refuse Parquet output without a file to write or without pyarrow, the optional
+    extra that writes it."""
+    if output is None:
+        raise SpecError("--format parquet writes a file: give --output grid.parquet",
+                        source=str(spec_path))
+    try:
+        import pyarrow  # noqa: F401
+    except ImportError:
+        raise SpecError("Parquet output needs pyarrow, the optional extra: pip install "
+                        "'bearingcalc[parquet]'", source=str(output)) from None
 
 
 def plot_target(plot: Path | None) -> Target | None:
@@ -163,3 +180,29 @@ class errors_as_exit:
                   "(run again with --debug for the traceback, and please report it)",
                   file=sys.stderr)
         raise typer.Exit(EXIT_INVALID)
+
+
+class HelpListsKinds(TyperCommand):
+    """A command whose ``--help`` ends with every registered kind and its summary.
+
+    The list is read from the registry when the help is shown, so a new kind appears
+    in it without an edit to the command, and a run that shows no help never builds it.
+    """
+
+    def format_help(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
+        from rich.markup import escape
+
+        from bearingcalc.kinds import KINDS
+
+        width = max(map(len, KINDS))
+        kinds = "\n".join(f"  {name:{width}}  {escape(kind.summary)}"
+                          for name, kind in KINDS.items())
+        summary = self.help
+        # typer removes the indentation that all lines but the first share: the last
+        # line, flush left, keeps the list's.
+        self.help = (f"{summary}\n\nKinds (a spec's 'kind:'):\n{kinds}\n\n"
+                     "'bearingcalc new KIND' prints a commented template spec of KIND.")
+        try:
+            super().format_help(ctx, formatter)
+        finally:
+            self.help = summary
