@@ -16,6 +16,12 @@ settings.register_profile("deterministic", derandomize=True, print_blob=True)
 settings.load_profile("deterministic")
 
 
+#: Python options that make every warning an error, except the deprecation notices of
+#: libraries (an older typer's about click), which Python hides from users anyway.
+WARNINGS_AS_ERRORS = ("-W", "error", "-W", "ignore::DeprecationWarning",
+                      "-W", "ignore::PendingDeprecationWarning")
+
+
 class Run:
     """A finished CLI run: exit code, stdout and stderr."""
 

@@ -20,7 +20,7 @@ from bearingcalc import sweep as sweeps
 from bearingcalc.errors import SpecError
 from bearingcalc.evaluation import evaluate_document, evaluate_file, load_one_spec
 from bearingcalc.kinds import KINDS, OUT_OF_RANGE_REASON
-from tests.conftest import ROOT
+from tests.conftest import ROOT, WARNINGS_AS_ERRORS
 from tests.hostile import KINDS as CORPUS_KINDS
 from tests.hostile import PHYSICS_PREFIX, STRUCTURAL, hostile_corpus, sweep_option
 
@@ -50,7 +50,7 @@ def test_no_case_ends_at_the_generic_overflow_status(corpus_dir):
 
 def test_a_sample_run_with_warnings_as_errors_prints_only_its_error_lines(corpus_dir):
     names = [name for name in CORPUS if name.startswith(PHYSICS_PREFIX)][::3]
-    run = subprocess.run([sys.executable, "-W", "error", "-m", "bearingcalc", "solve",
+    run = subprocess.run([sys.executable, *WARNINGS_AS_ERRORS, "-m", "bearingcalc", "solve",
                           *(str(corpus_dir / name) for name in names)],
                          capture_output=True, text=True, timeout=120, check=False)
     assert run.returncode == 2

@@ -13,7 +13,7 @@ import pytest
 
 from bearingcalc.core import ball_bearing, bevel_drive
 from bearingcalc.kinds import KINDS
-from tests.conftest import ROOT, solve_json
+from tests.conftest import ROOT, WARNINGS_AS_ERRORS, solve_json
 
 CATALOGUE = """kind: ball-bearing
 dynamic_load_rating: 55.3 kN
@@ -216,7 +216,7 @@ def test_a_box_reaching_past_45_deg_never_passes(tmp_path, method):
     text = text.replace("max_spin_to_roll: 0.01", "max_spin_to_roll: 0.5")
     spec = tmp_path / "tb.yaml"
     spec.write_text(text)
-    run = subprocess.run([sys.executable, "-W", "error", "-m", "bearingcalc", "tolerance",
+    run = subprocess.run([sys.executable, *WARNINGS_AS_ERRORS, "-m", "bearingcalc", "tolerance",
                           str(spec), "-m", method, "-n", "4096", "-f", "json"],
                          capture_output=True, text=True, timeout=120, check=False)
     assert run.returncode == 1, run.stderr
