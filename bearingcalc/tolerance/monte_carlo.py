@@ -101,8 +101,10 @@ def monte_carlo(study: Study, samples: int, seed: int = 0, sampler: str = "sobol
         stream = SampleStream(d, seed, sampler, start)
         while start < stop and not stop_now.is_set():
             size = min(chunk, stop - start)
-            designs = designs_at(study.inputs, stream.next(size), quantile)
-            results, status = study.evaluate(designs, keys)
+            # The chunk's designs are a temporary, freed once solved: their memory then
+            # takes the next chunk's draws instead of fresh pages.
+            results, status = study.evaluate(
+                designs_at(study.inputs, stream.next(size), quantile), keys)
             count(results, status, size)
             start += size
         return accumulators, passed, infeasible
