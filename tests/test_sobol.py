@@ -83,6 +83,21 @@ def test_without_the_file_scipys_engine_draws_the_same_points(d, seed, start, re
     assert np.array_equal(np.vstack(got), scipys)
 
 
+@pytest.mark.parametrize("contents", [b"not an archive", "other arrays"])
+def test_a_changed_file_also_leaves_the_points_to_scipys_engine(tmp_path, monkeypatch,
+                                                                contents):
+    path = tmp_path / "changed.npz"
+    if isinstance(contents, bytes):
+        path.write_bytes(contents)
+    else:
+        np.savez(path, polynomials=np.arange(3), initial=np.arange(3))
+    expected = SobolStream(4, 2, 9).next(100)
+    monkeypatch.setattr(sobol, "direction_file", lambda: path)
+    stream = sobol_stream(4, 2, 9)
+    assert isinstance(stream, ScipySobolStream)
+    assert np.array_equal(stream.next(100), expected)
+
+
 def test_a_study_without_the_file_reports_the_same_numbers(cli, monkeypatch, tmp_path):
     spec = ROOT / "specs" / "tolerances" / "thrust-bearing.yaml"
     args = ("tolerance", spec, "--samples", "70000", "--format", "json")

@@ -50,11 +50,11 @@ def direction_file() -> Path:
 def _direction_table(path: Path) -> tuple[NDArray, NDArray] | None:
     """(poly, vinit): the primitive polynomials and initial direction numbers that
     scipy ships with its Sobol' engine, read from its data file at ``path``; None
-    when the file is not there or holds no such arrays."""
+    when the file is not there, is no longer a NumPy archive or holds no such arrays."""
     try:
         with np.load(path) as data:
             return data["poly"].astype(np.int64), data["vinit"].astype(np.int64)
-    except (OSError, KeyError):
+    except (OSError, ValueError, KeyError):
         return None
 
 
@@ -155,7 +155,7 @@ class SobolStream:
 #: points are the sequence's all the same.
 _BALANCE_WARNING = "The balance properties of Sobol' points"
 #: warnings.catch_warnings swaps the filters of the whole process, and the Monte Carlo
-#: workers draw in parallel threads: one of them at a time may hold it.
+#: workers draw in parallel threads: they take turns at changing the filters.
 _WARNING_FILTERS = threading.Lock()
 
 
