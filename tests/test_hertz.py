@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import itertools
 import math
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -262,3 +264,18 @@ def test_conformity_tolerance_and_sweep(cli, spec_file):
 def test_bad_contact_input_is_one_clear_line(cli, spec_file, text, fragment):
     run = cli("solve", spec_file(text))
     assert run.code == 2 and run.err.count("\n") == 1 and fragment in run.err, run.err
+
+
+def test_solving_the_contact_examples_loads_no_scipy():
+    """K and E come from the arithmetic-geometric mean: importing scipy.special would cost a
+    cold solve of a loaded thrust bearing about a third of a second."""
+    code = ("import sys\n"
+            "from typer.testing import CliRunner\n"
+            "from bearingcalc.cli import app\n"
+            "for spec in ('thrust-bearing-loaded', 'ball-bearing-geometry'):\n"
+            "    run = CliRunner().invoke(app, ['solve', f'specs/{spec}.yaml'])\n"
+            "    assert run.exit_code == 0, run.output\n"
+            "print(sorted(name for name in sys.modules if name.split('.')[0] == 'scipy'))\n")
+    run = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True,
+                         text=True, check=True)
+    assert run.stdout.strip() == "[]", run.stdout

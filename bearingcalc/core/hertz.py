@@ -1,5 +1,6 @@
 """Hertz point contact of two elastic bodies: the contact ellipse, the approach and the
-peak pressure, exact with complete elliptic integrals (``docs/physics.md`` §6).
+peak pressure, exact with complete elliptic integrals (``docs/physics.md`` §6), which
+:mod:`bearingcalc.core.elliptic` computes by the arithmetic-geometric mean.
 
 Vectorised over whole arrays: the ellipticity is found by Newton's method on every
 contact at once (with a bisection safeguard), to full double precision, so tolerance
@@ -13,6 +14,8 @@ from fractions import Fraction
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+
+from bearingcalc.core.elliptic import complete_elliptic_integrals
 
 #: Newton iterations at most; from the tabulated start two or three reach full precision.
 MAX_ITERATIONS = 30
@@ -52,9 +55,7 @@ _E_SLOPE = _e_slope_coefficients()
 
 def _difference_and_slope(m: NDArray) -> tuple[NDArray, NDArray]:
     """F(m) and dF/dm, accurate to rounding for every 0 <= m < 1."""
-    from scipy.special import ellipe, ellipk  # loaded on first use: solve starts faster
-
-    big_k, big_e = ellipk(m), ellipe(m)
+    big_k, big_e = complete_elliptic_integrals(m)
     one_minus = 1.0 - m
     with np.errstate(all="ignore"):  # m = 0 divides by zero here; the series takes over
         numerator = (2.0 - m) * big_e - 2.0 * one_minus * big_k
@@ -213,8 +214,6 @@ CHUNK = 1 << 13
 
 def _contact(q: NDArray, r1a: NDArray, r1b: NDArray, r2a: NDArray, r2b: NDArray,
              e1: NDArray, nu1: NDArray, e2: NDArray, nu2: NDArray) -> dict[str, NDArray]:
-    from scipy.special import ellipe, ellipk
-
     total = r1a + r1b + r2a + r2b
     safe_total = np.where(total > 0, total, 1.0)
     difference = np.abs((r1a - r1b) + (r2a - r2b)) / safe_total
@@ -223,7 +222,7 @@ def _contact(q: NDArray, r1a: NDArray, r1b: NDArray, r2a: NDArray, r2b: NDArray,
     convex = (total > 0) & (difference < 1.0)
     m = ellipse_modulus(np.where(convex, difference, 0.0))
     k = 1.0 / np.sqrt(1.0 - m)
-    big_k, big_e = ellipk(m), ellipe(m)
+    big_k, big_e = complete_elliptic_integrals(m)
     compliance = (1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2
     s = np.cbrt(1.5 * q / safe_total * compliance)
     a = np.cbrt(2.0 * k * k * big_e / np.pi) * s
