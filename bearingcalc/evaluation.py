@@ -139,9 +139,7 @@ def evaluate_documents(documents: Sequence[Document]) -> list[Evaluation | SpecE
             continue
         # Specs solved together must give the same inputs and the same words (a bearing
         # type): which results exist depends on both.
-        shape = tuple((key, value) if isinstance(value, str) else (key, value is None)
-                      for key, value in inputs.items())
-        groups.setdefault((kind.name, shape), []).append((index, spec, inputs))
+        groups.setdefault((kind.name, _layout(inputs)), []).append((index, spec, inputs))
     for (kind_name, _), members in groups.items():
         kind = KINDS[kind_name]
         try:
@@ -160,10 +158,8 @@ def _solve_group(documents: Sequence[Document], kind: Kind,
                  members: list[tuple[int, Spec, dict[str, Any]]],
                  outcomes: list[Evaluation | SpecError | None]) -> None:
     """Solve specs of one kind with the same inputs given in one vectorised call."""
-    stacked = {key: value if value is None or isinstance(value, str)
-               else np.array([m[2][key] for m in members])
-               for key, value in members[0][2].items()}
-    raw, status, flags = kind.evaluate_with_flags(stacked)
+    stacked = _stacked([member[2] for member in members])
+    raw, status, flags = kind.evaluate_with_warnings(stacked)
     columns = {key: values.tolist() for key, values in raw.items()}
     flagged = {key: np.asarray(values, dtype=bool).tolist() for key, values in flags.items()}
     codes = status.tolist()
@@ -174,6 +170,26 @@ def _solve_group(documents: Sequence[Document], kind: Kind,
             outcomes[index] = _judge(documents[index], kind, spec, values, codes[row], raised)
         except SpecError as error:
             outcomes[index] = error
+
+
+def _layout(inputs: Any) -> Any:
+    """What must agree for specs to be solved together: the structure of their solver
+    inputs, which inputs are given, and their words (a bearing type); not the numbers."""
+    if isinstance(inputs, dict):
+        return tuple((key, _layout(value)) for key, value in inputs.items())
+    if isinstance(inputs, list):
+        return tuple(_layout(item) for item in inputs)
+    return inputs if inputs is None or isinstance(inputs, str) else float
+
+
+def _stacked(inputs: list[Any]) -> Any:
+    """Solver inputs of specs with one layout, each number replaced by an array of them."""
+    first = inputs[0]
+    if isinstance(first, dict):
+        return {key: _stacked([each[key] for each in inputs]) for key in first}
+    if isinstance(first, list):
+        return [_stacked([each[i] for each in inputs]) for i in range(len(first))]
+    return first if first is None or isinstance(first, str) else np.array(inputs)
 
 
 def _internal_error(document: Document, exc: Exception) -> SpecError:

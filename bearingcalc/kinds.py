@@ -1,29 +1,31 @@
 """The registry of spec kinds: one entry per rolling system.
 
-Adding a kind takes a solver module in ``core/`` (with ``RESULTS``,
-``STATUS_REASONS`` and ``evaluate``), a spec model in ``models/`` (with
-``solver_inputs``) and one entry here; every command picks it up. A solver may
-also give ``GROUPS`` (table headings), ``MATRICES`` (per-member sub-tables),
-``DISPLAY`` (table units of its own) and ``WARNINGS`` (flags it returns as
-``_warn_*`` results, reported as warnings and never as results).
+Adding a kind takes a solver module in ``core/`` that describes itself in a
+:class:`~bearingcalc.core.solver.Solver` named ``SOLVER``, a spec model in ``models/``
+derived from :class:`~bearingcalc.models.base.Spec`, a template in ``templates/``, a
+page in ``docs/kinds/``, and one entry here; every command picks it up.
 """
 
 from __future__ import annotations
 
+import functools
 import importlib
 from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
-from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
+
+from bearingcalc.core.solver import Members, Solution, Solver
 
 if TYPE_CHECKING:
     from bearingcalc.models.base import Spec
 
 #: Status of a design whose inputs are valid but whose results overflow double precision.
 OUT_OF_RANGE = 99
+#: The first status code of a composite's members (the composite's own come before).
+MEMBER_CODES_FROM = 30
 OUT_OF_RANGE_REASON = ("", "the design's numbers are out of the range of double precision; "
                        "check the magnitudes of the inputs")
 
@@ -61,9 +63,9 @@ class Kind:
         return list(held.model_fields) if held is not None else []
 
     @property
-    def solver(self) -> ModuleType:
-        """The kind's solver module (``RESULTS``, ``STATUS_REASONS``, ``evaluate``)."""
-        return importlib.import_module(self.solver_path)
+    def solver(self) -> Solver:
+        """The kind's solver, as its module describes it (``SOLVER``)."""
+        return importlib.import_module(self.solver_path).SOLVER  # type: ignore[no-any-return]
 
     def evaluate(self, inputs: Mapping[str, Any], wanted: Collection[str] | None = None
                  ) -> tuple[dict[str, NDArray], NDArray]:
@@ -74,25 +76,42 @@ class Kind:
         but whose numbers are not finite (an overflow) gets ``OUT_OF_RANGE``, so no
         command ever prints or judges a non-finite number as a design's result.
         """
-        results, status, _ = self.evaluate_with_flags(inputs, wanted)
+        results, status, _ = self.evaluate_with_warnings(inputs, wanted)
         return results, status
 
-    def evaluate_with_flags(self, inputs: Mapping[str, Any],
-                            wanted: Collection[str] | None = None
-                            ) -> tuple[dict[str, NDArray], NDArray, dict[str, NDArray]]:
-        """:meth:`evaluate`, plus the solver's warning flags (key of ``warnings`` ->
-        where it holds)."""
+    def evaluate_with_warnings(self, inputs: Mapping[str, Any],
+                               wanted: Collection[str] | None = None
+                               ) -> tuple[dict[str, NDArray], NDArray, dict[str, NDArray]]:
+        """:meth:`evaluate`, plus where each of the solver's warnings holds."""
         with np.errstate(all="ignore"):
-            raw, status = self.solver.evaluate(inputs, wanted)
-            flags = {key: raw[key] for key in self.warnings if key in raw}
-            results = {key: value for key, value in raw.items() if key not in flags}
-            for key, values in results.items():
+            solution = self.solver.evaluate(inputs, wanted)
+            status = self._with_member_failures(solution)
+            for key, values in solution.results.items():
                 finite = np.isfinite(values)
                 if key in self.unbounded:
                     finite |= values == np.inf
                 if not finite.all():
                     status = np.where(finite | (status != 0), status, np.int8(OUT_OF_RANGE))
-        return results, status, flags
+        return solution.results, status, solution.warnings
+
+    def _with_member_failures(self, solution: Solution) -> NDArray:
+        """The solution's status, where the design itself is possible but a member is not
+        given that member's code (see :meth:`status_reasons`)."""
+        members = self.solver.members
+        status = solution.status
+        if members is None:
+            return status
+        for index, name in enumerate(members.names):
+            codes = solution.members.get(name)
+            if codes is not None and np.any(codes):
+                offset = np.int8(self._member_offset(index))
+                status = np.where((status == 0) & (codes != 0), offset + codes, status)
+        return status
+
+    def _member_offset(self, index: int) -> int:
+        members = self.solver.members
+        assert members is not None
+        return MEMBER_CODES_FROM + index * (max(members.solver.status_reasons) + 1)
 
     def limit_values(self, inputs: Mapping[str, Any]) -> dict[str, float]:
         """Result key -> its symmetric limit, read from the solver ``inputs``."""
@@ -107,35 +126,55 @@ class Kind:
         return ok
 
     @property
-    def results(self) -> dict[str, tuple[str, str]]:
+    def results(self) -> Mapping[str, tuple[str, str]]:
         """Result key -> (SI unit, meaning), in report order."""
-        return self.solver.RESULTS  # type: ignore[no-any-return]
+        return self.solver.results
 
     @property
-    def groups(self) -> dict[str, tuple[str, ...]]:
+    def groups(self) -> Mapping[str, tuple[str, ...]]:
         """Table heading -> its results, for kinds with many results (else empty)."""
-        return getattr(self.solver, "GROUPS", {})
+        return self.solver.groups
 
     @property
-    def matrices(self) -> dict[str, tuple[tuple[str, ...], tuple[str, ...]]]:
+    def matrices(self) -> Mapping[str, tuple[tuple[str, ...], tuple[str, ...]]]:
         """Table heading -> (row prefixes, column suffixes): results shown as a small
         table of their own, a row per member (``pinion_bearing_1``) and a column per
         quantity (``radial_load``), whose keys are ``{row}_{column}``."""
-        return getattr(self.solver, "MATRICES", {})
+        return self.solver.matrices
 
     @property
-    def display(self) -> dict[str, tuple[str, float]]:
+    def display(self) -> Mapping[str, tuple[str, float]]:
         """Result key -> (table unit, factor from SI) where the SI unit alone would not do."""
-        return getattr(self.solver, "DISPLAY", {})
+        return self.solver.display
 
     @property
-    def warnings(self) -> dict[str, str]:
-        """Warning flag key -> message, for conditions the solver finds per design."""
-        return getattr(self.solver, "WARNINGS", {})
+    def warnings(self) -> Mapping[str, str]:
+        """Warning key -> message, for conditions the solver finds per design."""
+        return self.solver.warnings
 
-    @property
+    @functools.cached_property
     def status_reasons(self) -> dict[int, tuple[str, str]]:
-        return {**self.solver.STATUS_REASONS, OUT_OF_RANGE: OUT_OF_RANGE_REASON}
+        """Status code -> (field at fault, why): the solver's own; for a composite, each
+        member's codes after ``MEMBER_CODES_FROM``, naming the member's field (or the
+        composite's field that sets it); and the last guard, ``OUT_OF_RANGE``."""
+        solver = self.solver
+        reasons = dict(solver.status_reasons)
+        if solver.members is not None:
+            for index, name in enumerate(solver.members.names):
+                offset = self._member_offset(index)
+                for code, (field, why) in solver.members.solver.status_reasons.items():
+                    reasons[offset + code] = (_member_field(solver.members, name, field), why)
+        reasons[OUT_OF_RANGE] = OUT_OF_RANGE_REASON
+        return reasons
+
+
+def _member_field(members: Members, name: str, field: str) -> str:
+    """The composite's name for a member's field: ``pinion_bearings.2.ball_count``, or the
+    composite's own field where it sets the member's (a bearing's speed is input_speed)."""
+    root, dot, rest = field.partition(".")
+    if root in members.set_by_composite:
+        return members.set_by_composite[root] + dot + rest
+    return f"{name}.{field}"
 
 
 KINDS: dict[str, Kind] = {

@@ -81,6 +81,8 @@ def test_a_bad_quantity_in_one_file_does_not_stop_a_check_batch(cli, spec_file, 
 
 
 def test_a_solver_surprise_is_that_specs_invalid_status_only(monkeypatch, tmp_path):
+    from dataclasses import replace
+
     from bearingcalc import batch
     from bearingcalc.core import thrust_bearing
 
@@ -90,7 +92,8 @@ def test_a_solver_surprise_is_that_specs_invalid_status_only(monkeypatch, tmp_pa
         return original(inputs, wanted)
 
     original = thrust_bearing.evaluate
-    monkeypatch.setattr(thrust_bearing, "evaluate", explode)
+    monkeypatch.setattr(thrust_bearing, "SOLVER", replace(thrust_bearing.SOLVER,
+                                                          evaluate=explode))
     (tmp_path / "a.yaml").write_text(TB.replace("1500 rpm", "100 rpm"))
     (tmp_path / "b.yaml").write_text(TB)
     records = {r.spec: r for r in batch.check_paths([tmp_path])}

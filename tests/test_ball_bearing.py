@@ -192,7 +192,8 @@ def _evaluate(**changes):
               "radial_load": 10_000.0, "axial_load": 0.0, "speed": 314.159,
               "reliability": 0.9, "min_static_safety": 1.0}
     inputs.update(changes)
-    return bb.evaluate(inputs)
+    solution = bb.evaluate(inputs)
+    return solution.results, solution.status
 
 
 def test_life_falls_as_the_cube_of_the_load():

@@ -148,7 +148,8 @@ def test_the_contact_status_is_where_hertz_gives_a_semi_major_axis_above_dw_over
     inputs = dict(spec.solver_inputs())
     inputs["radial_load"] = np.geomspace(1e3, 1e7, 400)
     inputs["axial_load"] = 0.0
-    results, status = kind.solver.evaluate(inputs)
+    solution = kind.solver.evaluate(inputs, None)
+    results, status = solution.results, solution.status
     widest = np.maximum(results["inner_contact_semi_major"],
                         results["outer_contact_semi_major"])
     too_wide = widest > 7.938e-3 / 2
@@ -201,10 +202,16 @@ def test_a_sweep_through_coinciding_bearings_names_the_position(cli):
 
 
 def test_drive_bearing_status_codes_never_overlap():
-    codes = [offset + code for offset in bevel_drive.BEARING_CODE_OFFSETS.values()
-             for code in ball_bearing.STATUS_REASONS]
-    assert len(set(codes)) == len(codes)
-    assert max(codes) < 99  # the registry's last guard
+    """Every bearing's every failure has a code of its own, apart from the drive's."""
+    drive = KINDS["bevel-drive"]
+    own, per_bearing = len(bevel_drive.STATUS_REASONS), len(ball_bearing.STATUS_REASONS)
+    bearings = len(bevel_drive.BEARINGS.names)
+    assert len(drive.status_reasons) == own + bearings * per_bearing + 1  # + the last guard
+    assert max(set(drive.status_reasons) - {99}) < 99
+    assert drive.status_reasons[drive._member_offset(3) + 1] == (
+        "gear_bearings.2.ball_diameter", ball_bearing.STATUS_REASONS[1][1])
+    assert drive.status_reasons[drive._member_offset(0) + 7][0] == "input_speed"
+    assert drive.status_reasons[drive._member_offset(1) + 13][0] == "lubrication.temperature"
 
 
 # --- a tolerance box crossing a validity edge ---------------------------------------------

@@ -168,9 +168,9 @@ def test_status_codes_name_the_reason():
     b = np.array([0.03, 0.03, 0.005, 0.03, 0.021])
     z = np.array([3, 3, 3, 3, 40])
     assert thrust_bearing_status(r, theta, b, z).tolist() == [0, 3, 4, 1, 5]
-    _, status = evaluate({"ball_radius": 0.01, "contact_angle": None, "pitch_radius": 0.009,
-                          "shaft_speed": 1.0, "ball_count": None, "max_spin_to_roll": 0.01})
-    assert int(status) == 6
+    solution = evaluate({"ball_radius": 0.01, "contact_angle": None, "pitch_radius": 0.009,
+                         "shaft_speed": 1.0, "ball_count": None, "max_spin_to_roll": 0.01})
+    assert int(solution.status) == 6
 
 
 def test_more_than_one_unknown_is_refused():

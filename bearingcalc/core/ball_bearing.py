@@ -35,6 +35,7 @@ from bearingcalc.core.iso281 import (
     walther_temperature,  # noqa: F401 (the spec model reads it from here)
     walther_viscosity,
 )
+from bearingcalc.core.solver import Solution, Solver
 
 #: The rolling elements of every bearing this solver takes.
 FAMILY: Family = "ball"
@@ -125,12 +126,12 @@ DISPLAY: dict[str, tuple[str, float]] = {
 
 #: Conditions the solver reports per design as warnings: flag key -> message.
 WARNINGS: dict[str, str] = {
-    "_warn_axial_ratio_low": "f0·Fa/C0 is below 0.172, the first row of ISO 281 Table 3: "
+    "axial_ratio_low": "f0·Fa/C0 is below 0.172, the first row of ISO 281 Table 3: "
                              "e and Y of that row are used",
-    "_warn_axial_ratio_high": "f0·Fa/C0 is above 6.89, the last row of ISO 281 Table 3: "
+    "axial_ratio_high": "f0·Fa/C0 is above 6.89, the last row of ISO 281 Table 3: "
                               "e and Y of that row are used",
-    "_warn_kappa_capped": "κ is above 4: ISO 281 takes κ = 4 for aISO",
-    "_warn_aiso_capped": "aISO reached its cap of 50",
+    "kappa_capped": "κ is above 4: ISO 281 takes κ = 4 for aISO",
+    "aiso_capped": "aISO reached its cap of 50",
 }
 
 FEASIBLE = 0
@@ -168,7 +169,7 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
 
 
 def evaluate(inputs: Mapping[str, ArrayLike | str | None],
-             wanted: Collection[str] | None = None) -> tuple[dict[str, NDArray], NDArray]:
+             wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results, warning flags and status codes from SI inputs.
 
     ``inputs`` (see :meth:`bearingcalc.models.ball_bearing.BallBearingSpec.solver_inputs`)
@@ -225,9 +226,9 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
     status = first_failure(bad_checks, shape)
     ordered = {key: np.broadcast_to(np.asarray(out[key], dtype=float), shape)
                for key in RESULTS if key in out}
-    for key, flag in flags.items():
-        ordered[key] = np.broadcast_to(np.asarray(flag, dtype=float), shape)
-    return ordered, status
+    warnings = {key: np.broadcast_to(np.asarray(flag, dtype=bool), shape)
+                for key, flag in flags.items()}
+    return Solution(ordered, status, warnings)
 
 
 def _ratings(z: ArrayLike, dw: ArrayLike, dpw: ArrayLike, alpha: NDArray, thrust: bool,
@@ -264,8 +265,8 @@ def _equivalent_dynamic_load(inputs: Mapping[str, ArrayLike | str | None], kind:
         out["radial_factor"], out["axial_factor"] = np.zeros_like(p), np.ones_like(p)
         return p
     if equivalent.ratio_below_table is not None:
-        flags["_warn_axial_ratio_low"] = equivalent.ratio_below_table
-        flags["_warn_axial_ratio_high"] = equivalent.ratio_above_table
+        flags["axial_ratio_low"] = equivalent.ratio_below_table
+        flags["axial_ratio_high"] = equivalent.ratio_above_table
     bad_checks.append((12, ~(p > 0) & ((fr > 0) | (fa > 0))))
     if not np.isnan(np.asarray(equivalent.e)).all():
         out["radial_factor"] = np.where(equivalent.combined, equivalent.x, 1.0)
@@ -295,14 +296,14 @@ def _life(inputs: Mapping[str, ArrayLike | str | None], thrust: bool, speed: NDA
         nu1 = reference_viscosity(speed, mean_diameter)
         kappa_raw = nu / nu1
         bad_checks.append((5, ~(kappa_raw >= KAPPA_MIN)))
-        flags["_warn_kappa_capped"] = kappa_raw > KAPPA_CAP
+        flags["kappa_capped"] = kappa_raw > KAPPA_CAP
         kappa = np.minimum(kappa_raw, KAPPA_CAP)
         cu = inputs.get("fatigue_load_limit")
         if cu is None:
             cu = fatigue_load_limit(c0, mean_diameter, family=FAMILY)
         a_iso = life_modification_factor(kappa, inputs["contamination_factor"], cu, p, thrust,
                                          family=FAMILY)
-        flags["_warn_aiso_capped"] = a_iso >= AISO_CAP
+        flags["aiso_capped"] = a_iso >= AISO_CAP
         out.update({"fatigue_load_limit": cu, "reference_viscosity": nu1,
                     "operating_viscosity": nu, "viscosity_ratio": kappa})
     lnm = a1 * a_iso * l10
@@ -340,3 +341,6 @@ def _given_or(given: ArrayLike | None, computed: NDArray | None) -> NDArray | No
     if given is not None:
         return np.asarray(given, dtype=float)
     return computed
+
+
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS, display=DISPLAY)

@@ -15,7 +15,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core import ball_bearing, bevel_gears
-from bearingcalc.core.common import broadcast_all
+from bearingcalc.core.common import broadcast_all, first_failure
+from bearingcalc.core.solver import Members, Solution, Solver
 
 #: The Weibull slope of ball bearings in bearing makers' system-life formula.
 WEIBULL_SLOPE = 10.0 / 9.0
@@ -60,36 +61,25 @@ MATRICES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
 
 WARNINGS: dict[str, str] = {
     **bevel_gears.WARNINGS,
-    **{f"_warn_weakest_{name}": f"weakest bearing: {name} (the shortest modified life)"
+    **{f"weakest_{name}": f"weakest bearing: {name} (the shortest modified life)"
        for name in _bearing_names()},
 }
 
-#: Status codes: the pair's (1-8), the shafts' own, then each bearing's code from
-#: ball_bearing at an offset.
+#: The drive's own status codes: the pair's (1-8), then a shaft's coinciding bearings.
 COINCIDING_BEARINGS = {"pinion": 20, "gear": 21}
-_BEARING_CODES = max(ball_bearing.STATUS_REASONS) + 1
-BEARING_CODE_OFFSETS = {name: 30 + _BEARING_CODES * i for i, name in enumerate(_bearing_names())}
-#: A bearing's fields that the drive sets from its own: the drive's field is at fault.
-_DRIVE_FIELDS = {"lubrication": "lubrication", "speed": "input_speed", "radial_load": "torque",
-                 "axial_load": "torque"}
-
-
-def _status_reasons() -> dict[int, tuple[str, str]]:
-    reasons = dict(bevel_gears.STATUS_REASONS)
-    for shaft, code in COINCIDING_BEARINGS.items():
-        reasons[code] = (f"{shaft}_bearings.2.position", "two bearings at the same position "
-                         "cannot carry the shaft's moment")
-    for name, offset in BEARING_CODE_OFFSETS.items():
-        shaft, _, index = name.rpartition("_bearing_")
-        for code, (field, why) in ball_bearing.STATUS_REASONS.items():
-            root = field.split(".", 1)[0]
-            where = (field if root == "lubrication" else _DRIVE_FIELDS[root]
-                     ) if root in _DRIVE_FIELDS else f"{shaft}_bearings.{index}.{field}"
-            reasons[offset + code] = (where, why)
-    return reasons
-
-
-STATUS_REASONS = _status_reasons()
+STATUS_REASONS: dict[int, tuple[str, str]] = {
+    **bevel_gears.STATUS_REASONS,
+    **{code: (f"{shaft}_bearings.2.position", "two bearings at the same position cannot "
+              "carry the shaft's moment") for shaft, code in COINCIDING_BEARINGS.items()},
+}
+#: The bearings, by their names in the spec, each solved as a ``kind: ball-bearing``.
+#: Their loads and speeds come from the drive: a bearing refused for its load or speed
+#: names the drive's torque or input_speed, and one refused for its lubrication the
+#: drive's lubrication.
+BEARINGS = Members(ball_bearing.SOLVER,
+                   tuple(f"{shaft}_bearings.{i}" for shaft in SHAFTS for i in (1, 2)),
+                   {"lubrication": "lubrication", "speed": "input_speed",
+                    "radial_load": "torque", "axial_load": "torque"})
 
 
 def shaft_reactions(positions: tuple[ArrayLike, ArrayLike], mesh_position: ArrayLike,
@@ -137,55 +127,58 @@ def system_life(lives: list[NDArray]) -> NDArray:
     return np.sum(stacked ** -WEIBULL_SLOPE, axis=0) ** (-1.0 / WEIBULL_SLOPE)
 
 
-def evaluate(inputs: Mapping[str, Any],
-             wanted: Collection[str] | None = None) -> tuple[dict[str, NDArray], NDArray]:
+def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: the pair, each shaft's statics, each bearing's life and the
-    system's, with status codes (see :mod:`bearingcalc.models.bevel_drive`)."""
-    pair, status = bevel_gears.evaluate(inputs)
-    out: dict[str, ArrayLike] = dict(pair)
+    system's (see :meth:`bearingcalc.models.bevel_drive.BevelDriveSpec.solver_inputs`).
+
+    ``inputs["shafts"]`` maps a shaft to its two bearings' inputs: ``position``,
+    ``locating`` and a ball bearing's inputs without loads and speeds. Each bearing's
+    status codes are reported by its name in the spec (``pinion_bearings.2``).
+    """
+    pair = bevel_gears.evaluate(inputs)
+    out: dict[str, ArrayLike] = dict(pair.results)
+    warnings: dict[str, ArrayLike] = dict(pair.warnings)
     input_speed = np.abs(np.asarray(inputs["input_speed"], dtype=float))
     ratio = np.asarray(inputs["gear_a_teeth"], dtype=float) / np.asarray(
         inputs["gear_b_teeth"], dtype=float)
     out["gear_speed"] = input_speed * ratio
-    mean_cone = pair["mean_cone_distance"]
+    mean_cone = pair.results["mean_cone_distance"]
     modified, basic, safety, names = [], [], [], []
     checks: list[tuple[int, NDArray]] = []
-    for shaft, speed, delta, gear in (("pinion", input_speed, pair["gear_a_pitch_angle"], "a"),
-                                      ("gear", input_speed * ratio, pair["gear_b_pitch_angle"],
-                                       "b")):
-        if f"{shaft}_bearing_1.position" not in inputs:
+    members: dict[str, NDArray] = {}
+    for shaft, speed, delta, gear in (
+            ("pinion", input_speed, pair.results["gear_a_pitch_angle"], "a"),
+            ("gear", input_speed * ratio, pair.results["gear_b_pitch_angle"], "b")):
+        bearings = inputs["shafts"].get(shaft)
+        if bearings is None:
             continue
-        radial_force = pair[f"gear_{gear}_radial_force"]
-        axial_force = pair[f"gear_{gear}_axial_force"]
-        positions = (inputs[f"{shaft}_bearing_1.position"], inputs[f"{shaft}_bearing_2.position"])
-        coinciding = np.asarray(positions[0]) == np.asarray(positions[1])
-        checks.append((0, np.where(coinciding, np.int8(COINCIDING_BEARINGS[shaft]), np.int8(0))))
+        positions = (bearings[0]["position"], bearings[1]["position"])
+        checks.append((COINCIDING_BEARINGS[shaft],
+                       np.asarray(positions[0]) == np.asarray(positions[1])))
+        axial_force = pair.results[f"gear_{gear}_axial_force"]
         loads = shaft_reactions(
-            positions,
-            mean_cone * np.cos(delta), mean_cone * np.sin(delta), pair["tangential_force"],
-            radial_force, axial_force)
-        for i, radial in enumerate(loads, 1):
+            positions, mean_cone * np.cos(delta), mean_cone * np.sin(delta),
+            pair.results["tangential_force"], pair.results[f"gear_{gear}_radial_force"],
+            axial_force)
+        for i, (bearing, radial) in enumerate(zip(bearings, loads, strict=True), 1):
             name = f"{shaft}_bearing_{i}"
-            prefix = name + "."
-            locating = inputs[prefix + "locating"] == "locating"
-            axial = axial_force if locating else np.zeros_like(axial_force)
-            bearing_inputs = {key[len(prefix):]: value for key, value in inputs.items()
-                              if key.startswith(prefix)}
-            bearing_inputs.update(radial_load=radial, axial_load=axial, speed=speed,
-                                  inner_speed=speed, outer_speed=0.0, min_rating_life=None)
-            results, code = ball_bearing.evaluate(bearing_inputs)
-            checks.append((BEARING_CODE_OFFSETS[name], np.asarray(code)))
+            axial = axial_force if bearing["locating"] == "locating" else np.zeros_like(
+                axial_force)
+            solved = ball_bearing.evaluate({
+                **bearing, "radial_load": radial, "axial_load": axial, "speed": speed,
+                "inner_speed": speed, "outer_speed": 0.0, "min_rating_life": None})
+            members[f"{shaft}_bearings.{i}"] = solved.status
             out[f"{name}_radial_load"] = radial
             out[f"{name}_axial_load"] = axial
             for key in ("equivalent_dynamic_load", "basic_rating_life", "modified_rating_life",
                         "static_safety_factor"):
-                if key in results:
-                    out[f"{name}_{key}"] = results[key]
-            modified.append(results["modified_rating_life"])
-            basic.append(results["basic_rating_life"])
+                if key in solved.results:
+                    out[f"{name}_{key}"] = solved.results[key]
+            modified.append(solved.results["modified_rating_life"])
+            basic.append(solved.results["basic_rating_life"])
             names.append(name)
-            if "static_safety_factor" in results:
-                safety.append(results["static_safety_factor"])
+            if "static_safety_factor" in solved.results:
+                safety.append(solved.results["static_safety_factor"])
     out["system_basic_rating_life"] = system_life(basic)
     out["system_modified_rating_life"] = system_life(modified)
     if inputs.get("min_rating_life") is not None:
@@ -196,13 +189,17 @@ def evaluate(inputs: Mapping[str, Any],
             - np.asarray(inputs["min_static_safety"], dtype=float)
     weakest = np.argmin(np.stack(np.broadcast_arrays(*modified)), axis=0)
     for i, name in enumerate(names):
-        out[f"_warn_weakest_{name}"] = (weakest == i).astype(float)
-    shape = np.broadcast_shapes(np.shape(status), *(np.shape(c) for _, c in checks),
-                                *(np.shape(v) for v in out.values()))
-    status = np.broadcast_to(status, shape).copy()
-    for offset, codes in checks:
-        code = np.broadcast_to(codes, shape)
-        status = np.where((status == 0) & (code != 0), (offset + code).astype(np.int8), status)
-    ordered = {key: out[key] for key in RESULTS if key in out}
-    ordered.update({key: value for key, value in out.items() if key.startswith("_warn_")})
-    return broadcast_all(ordered), status
+        warnings[f"weakest_{name}"] = weakest == i
+    results = broadcast_all({key: out[key] for key in RESULTS if key in out})
+    shape = np.broadcast_shapes(np.shape(pair.status), *(np.shape(v) for v in results.values()),
+                                *(np.shape(c) for _, c in checks))
+    status = np.where(np.broadcast_to(pair.status, shape) != 0,
+                      np.broadcast_to(pair.status, shape), first_failure(checks, shape))
+    return Solution(results, status,
+                    {key: np.broadcast_to(np.asarray(flag, dtype=bool), shape)
+                     for key, flag in warnings.items()},
+                    {name: np.broadcast_to(codes, shape) for name, codes in members.items()})
+
+
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS, MATRICES,
+                members=BEARINGS)

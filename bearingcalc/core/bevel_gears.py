@@ -20,6 +20,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core import bevel_sizing
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
+from bearingcalc.core.solver import Solution, Solver
 
 RESULTS: dict[str, tuple[str, str]] = {
     "gear_a_pitch_radius": ("m", "pitch radius a of gear A"),
@@ -96,7 +97,7 @@ GROUPS: dict[str, tuple[str, ...]] = {
 
 #: Conditions reported per design as warnings: flag key -> message.
 WARNINGS: dict[str, str] = {
-    "_warn_undercut": "the pinion's virtual teeth zv1 are below 2/sin²φ (17.1 at 20°): a "
+    "undercut": "the pinion's virtual teeth zv1 are below 2/sin²φ (17.1 at 20°): a "
                       "generated pinion undercuts unless its addendum is lengthened; check "
                       "the Gleason minimum for this ratio",
 }
@@ -266,7 +267,7 @@ def complete_geometry(inputs: Mapping[str, ArrayLike | None]) -> tuple[NDArray, 
 
 
 def evaluate(inputs: Mapping[str, ArrayLike | None],
-             wanted: Collection[str] | None = None) -> tuple[dict[str, NDArray], NDArray]:
+             wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results and status codes from the spec's SI inputs.
 
     ``wanted`` (the results a caller needs) is a hint this solver does not need:
@@ -278,12 +279,14 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
                                 gear_b_speed=inputs["gear_b_speed"],  # type: ignore[arg-type]
                                 max_apex_mismatch=inputs["max_apex_mismatch"])  # type: ignore[arg-type]
     if inputs.get("face_width") is None:
-        return results, status
+        return Solution(results, status)
     sized, checks = size_pair(inputs, results)
+    undercut = sized.pop("undercut")
     shape = np.broadcast_shapes(status.shape, *(np.shape(c) for _, c in checks))
     status = np.where(np.broadcast_to(status, shape) != 0, np.broadcast_to(status, shape),
                       first_failure(checks, shape))
-    return broadcast_all({**results, **sized}), status
+    results = broadcast_all({**results, **sized})
+    return Solution(results, status, {"undercut": np.broadcast_to(undercut, status.shape)})
 
 
 def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, NDArray]
@@ -297,7 +300,8 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
                                       inputs["module"], alpha, beta, face, phi)  # type: ignore[arg-type]
     checks: list[tuple[int, NDArray]] = [(7, ~(face < 0.5 * out["outer_cone_distance"]))]
     out["face_width_margin"] = np.asarray(inputs["max_face_width_ratio"]) - out["face_width_ratio"]
-    out["_warn_undercut"] = (out["gear_a_virtual_teeth"] < 2.0 / np.sin(phi) ** 2).astype(float)
+    # Not a result: the undercut warning's flag, which evaluate() takes out.
+    out["undercut"] = out["gear_a_virtual_teeth"] < 2.0 / np.sin(phi) ** 2
     speed = np.abs(kinematics["gear_a_speed_relative_to_arm"])
     if inputs.get("torque") is not None:
         torque = np.abs(np.asarray(inputs["torque"], dtype=float))
@@ -323,3 +327,6 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
     out["contact_safety_margin"] = rating["contact_safety"] - np.asarray(
         inputs["min_contact_safety"])
     return out, checks
+
+
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS)

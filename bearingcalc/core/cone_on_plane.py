@@ -16,6 +16,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
+from bearingcalc.core.solver import Solution, Solver
 
 RESULTS: dict[str, tuple[str, str]] = {
     "precession_speed": ("rad/s", "Ω = −ω·tanβ, the contact line turning about the normal"),
@@ -88,7 +89,7 @@ def solve_cone_on_plane(half_angle: ArrayLike, spin_speed: ArrayLike, *,
 
 
 def evaluate(inputs: Mapping[str, ArrayLike | None],
-             wanted: Collection[str] | None = None) -> tuple[dict[str, NDArray], NDArray]:
+             wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results and status codes from the spec's SI inputs.
 
     ``wanted`` (the results a caller needs) is a hint this solver does not need:
@@ -99,4 +100,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
     results = solve_cone_on_plane(inputs["half_angle"], inputs["spin_speed"],  # type: ignore[arg-type]
                                   spin_accel=inputs["spin_accel"],  # type: ignore[arg-type]
                                   axis_point_height=height)
-    return results, status
+    return Solution(results, status)
+
+
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS)

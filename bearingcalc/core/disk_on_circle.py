@@ -22,6 +22,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
+from bearingcalc.core.solver import Solution, Solver
 
 RESULTS: dict[str, tuple[str, str]] = {
     "center_distance": ("m", "distance OG: R + r (external) or R − r (internal)"),
@@ -116,7 +117,7 @@ def solve_disk_on_circle(disk_radius: ArrayLike, surface_radius: ArrayLike,
 
 
 def evaluate(inputs: Mapping[str, ArrayLike],
-             wanted: Collection[str] | None = None) -> tuple[dict[str, NDArray], NDArray]:
+             wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results and status codes from the spec's SI inputs.
 
     ``wanted`` (the results a caller needs) is a hint this solver does not need:
@@ -128,4 +129,7 @@ def evaluate(inputs: Mapping[str, ArrayLike],
         inputs["disk_radius"], inputs["surface_radius"], inputs["disk_speed"],
         disk_accel=inputs["disk_accel"], surface_speed=inputs["surface_speed"],
         surface_accel=inputs["surface_accel"], internal=internal)
-    return results, status
+    return Solution(results, status)
+
+
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS)

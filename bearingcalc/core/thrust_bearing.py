@@ -25,6 +25,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core.common import balls_fit, broadcast_all, first_failure
+from bearingcalc.core.solver import Solution, Solver
 from bearingcalc.core.thrust_bearing_contacts import ball_contact_loads
 from bearingcalc.core.thrust_bearing_geometry import (
     complete_geometry,
@@ -261,7 +262,7 @@ _RATIO_ONLY = frozenset({"spin_to_roll", "slip_margin"})
 
 
 def evaluate(inputs: Mapping[str, ArrayLike | None],
-             wanted: Collection[str] | None = None) -> tuple[dict[str, NDArray], NDArray]:
+             wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results and status codes from the spec's SI inputs.
 
     ``inputs`` holds ball_radius, contact_angle, pitch_radius (one may be None),
@@ -285,7 +286,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
         if solved:
             rho = rho * 0.0
         margin = np.asarray(inputs.get("max_spin_to_roll", 0.01), dtype=float) - np.abs(rho)
-        return {"spin_to_roll": rho, "slip_margin": margin}, status
+        return Solution({"spin_to_roll": rho, "slip_margin": margin}, status)
     # Checks 1 to 4 of the status are the geometry's; 5 (the balls' fit) is not.
     geometry_ok = (status == FEASIBLE) | (status == 5)
     results = _solve(r, theta, b, inputs["shaft_speed"], inputs.get("ball_count"),
@@ -299,4 +300,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
         status = np.where((status == FEASIBLE) & ~(largest <= r), np.int8(CONTACT_TOO_LARGE),
                           status)
         results = broadcast_all(results)
-    return results, status
+    return Solution(results, status)
+
+
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS)

@@ -155,19 +155,20 @@ class BevelDriveSpec(BevelPair):
 
     def solver_inputs(self) -> dict[str, Any]:
         """SI inputs of :func:`bearingcalc.core.bevel_drive.evaluate`: the pair's (gear A
-        turning at input_speed relative to a resting arm), then each bearing's
-        ball-bearing inputs under ``{shaft}_bearing_{i}.`` and its position."""
+        turning at input_speed relative to a resting arm), and under ``shafts`` each
+        shaft's bearings: position, locating, and its ball-bearing inputs without the
+        loads and speeds the drive finds."""
         ratio = self.gear_a.teeth / self.gear_b.teeth  # type: ignore[operator]
         inputs: dict[str, Any] = self.pair_inputs(0.0, -self.input_speed * ratio, self.limits)
         inputs["input_speed"] = self.input_speed
         inputs["min_rating_life"] = self.limits.min_rating_life
         inputs["min_static_safety"] = self.limits.min_static_safety
-        for shaft, bearings in self.shafts():
-            for i, bearing in enumerate(bearings, 1):
-                prefix = f"{shaft}_bearing_{i}."
-                inputs[prefix + "position"] = bearing.position
-                inputs[prefix + "locating"] = "locating" if bearing.locating else "floating"
-                for key, value in self.ball_bearing(bearing).solver_inputs().items():
-                    if key not in (*_DRIVE_SETS, "min_rating_life"):
-                        inputs[prefix + key] = value
+        inputs["shafts"] = {shaft: [self._bearing_inputs(bearing) for bearing in bearings]
+                            for shaft, bearings in self.shafts()}
         return inputs
+
+    def _bearing_inputs(self, bearing: DriveBearing) -> dict[str, Any]:
+        own = {key: value for key, value in self.ball_bearing(bearing).solver_inputs().items()
+               if key not in (*_DRIVE_SETS, "min_rating_life")}
+        return {"position": bearing.position,
+                "locating": "locating" if bearing.locating else "floating", **own}

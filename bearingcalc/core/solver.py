@@ -1,0 +1,71 @@
+"""What a solver module tells the registry about itself, and what it returns.
+
+Every solver module exports one :class:`Solver`: its results (SI unit and meaning),
+status reasons, warnings, table layout and its ``evaluate`` function, which maps SI
+inputs (floats or broadcasting arrays) to a :class:`Solution`. The registry
+(:mod:`bearingcalc.kinds`) reads that object and nothing else.
+
+A composite solver (a drive of bearings) solves its members with a member solver and
+reports each member's status codes as data, by the member's name in the spec
+(``pinion_bearings.2``); the registry gives those failures codes of their own.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Collection, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from numpy.typing import NDArray
+
+
+@dataclass(frozen=True)
+class Solution:
+    """A solver's answer for a batch of designs, every array of the same shape."""
+
+    #: result key -> values [SI]; NaN where the design is impossible
+    results: dict[str, NDArray]
+    #: 0 where the design is possible, else a key of the solver's status reasons
+    status: NDArray
+    #: warning key -> where the warning holds (bool)
+    warnings: dict[str, NDArray] = field(default_factory=dict)
+    #: member name -> the member solver's status codes (composite solvers only)
+    members: dict[str, NDArray] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class Members:
+    """The members of a composite solver: which solver solves them, their names in the
+    spec, and the member fields the composite sets from fields of its own (a bearing's
+    speed is the drive's input_speed): a member's failure of those names the composite's
+    field."""
+
+    solver: Solver
+    names: tuple[str, ...]
+    set_by_composite: Mapping[str, str] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class Solver:
+    """A solver module's description of itself."""
+
+    #: ``evaluate(inputs, wanted)``: ``wanted`` names the results a caller needs (None:
+    #: all); a solver may compute only those and its margins, or everything.
+    evaluate: Callable[[Mapping[str, Any], Collection[str] | None], Solution]
+    #: result key -> (SI unit, meaning), in report order
+    results: Mapping[str, tuple[str, str]]
+    #: status code -> (the field at fault, why the design is impossible)
+    status_reasons: Mapping[int, tuple[str, str]]
+    #: warning key -> the message shown where it holds
+    warnings: Mapping[str, str] = field(default_factory=dict)
+    #: table heading -> its results, for kinds with many results
+    groups: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
+    #: table heading -> (row prefixes, column suffixes): results shown as a small table,
+    #: a row per member (``pinion_bearing_1``) and a column per quantity, keyed
+    #: ``{row}_{column}``
+    matrices: Mapping[str, tuple[tuple[str, ...], tuple[str, ...]]] = field(
+        default_factory=dict)
+    #: result key -> (table unit, factor from SI), where the SI unit's usual one won't do
+    display: Mapping[str, tuple[str, float]] = field(default_factory=dict)
+    #: the members of a composite solver, or None
+    members: Members | None = None

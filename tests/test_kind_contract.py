@@ -1,0 +1,38 @@
+"""What a kind is: a solver that describes itself, a spec model derived from Spec, a
+template, a docs page and a registry entry. Every registered kind has each."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from bearingcalc.core.solver import Solution, Solver
+from bearingcalc.evaluation import load_one_spec
+from bearingcalc.kinds import KINDS
+from bearingcalc.models.base import Spec
+from tests.conftest import ROOT
+
+
+@pytest.mark.parametrize("name", sorted(KINDS))
+def test_a_kind_has_every_part(name):
+    kind = KINDS[name]
+    assert isinstance(kind.solver, Solver)
+    assert issubclass(kind.model, Spec)
+    assert {"kind", "name"} <= set(kind.model.model_fields)
+    assert (ROOT / "bearingcalc" / "templates" / f"{name}.yaml").is_file()
+    assert (ROOT / "docs" / "kinds" / f"{name}.md").is_file()
+    assert set(kind.margins) <= set(kind.results)
+    assert set(kind.governing) <= set(kind.results)
+    for heading, keys in kind.groups.items():
+        assert set(keys) <= set(kind.results), heading
+
+
+@pytest.mark.parametrize("name", sorted(KINDS))
+def test_a_solver_returns_a_solution_with_warnings_apart_from_results(name):
+    _, spec, _ = load_one_spec(ROOT / "bearingcalc" / "templates" / f"{name}.yaml")
+    solution = KINDS[name].solver.evaluate(spec.solver_inputs(), None)
+    assert isinstance(solution, Solution)
+    assert set(solution.results) <= set(KINDS[name].results)
+    assert set(solution.warnings) <= set(KINDS[name].warnings)
+    for flags in solution.warnings.values():
+        assert np.asarray(flags).dtype == bool
