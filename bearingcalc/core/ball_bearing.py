@@ -89,7 +89,7 @@ RESULTS: dict[str, tuple[str, str]] = {
     "ball_speed_relative_to_cage": ("rad/s", "the ball's speed about its own axis, "
                                              "cage frame"),
     "ball_attitude_angle": ("rad", "angle β of the ball's spin axis from the bearing axis "
-                                   "(README: its sense)"),
+                                   "(its sense: docs/kinds/ball-bearing.md)"),
     "inner_spin_to_roll": ("1", "spin/roll of the inner race relative to the ball"),
     "outer_spin_to_roll": ("1", "spin/roll of the outer race relative to the ball"),
     "spin_to_roll_margin": ("1", "max_spin_to_roll − the larger |spin_to_roll|"),
@@ -177,8 +177,8 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
     load factors, limits. Which results exist depends only on which inputs are
     given, so specs stacked into one call share their result keys.
     """
-    kind = str(inputs["bearing_type"])
-    thrust = kind == "thrust"
+    bearing_type = str(inputs["bearing_type"])
+    thrust = bearing_type == "thrust"
     z, dw, dpw = (inputs.get(k) for k in ("ball_count", "ball_diameter", "pitch_diameter"))
     has_geometry = z is not None and dw is not None and dpw is not None
     alpha = np.asarray(inputs["contact_angle"], dtype=float)
@@ -198,9 +198,10 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
     c = _given_or(inputs.get("dynamic_load_rating"), c_iso)
     c0 = _given_or(inputs.get("static_load_rating"), c0_iso)
     f0 = _given_or(inputs.get("static_factor"), f0_iso)
-    p = _equivalent_dynamic_load(inputs, kind, alpha, fr, fa, f0, c0, out, flags, bad_checks)
+    p = _equivalent_dynamic_load(inputs, bearing_type, alpha, fr, fa, f0, c0, out, flags,
+                                 bad_checks)
     _life(inputs, thrust, speed, c, c0, p, out, flags, bad_checks)
-    p0 = _static(inputs, kind, alpha, fr, fa, c0, f0, out)
+    p0 = _static(inputs, bearing_type, alpha, fr, fa, c0, f0, out)
 
     if has_geometry:
         out.update(ball_kinematics(z, dw, dpw, alpha, inputs["inner_speed"],
@@ -249,7 +250,7 @@ def _ratings(z: ArrayLike, dw: ArrayLike, dpw: ArrayLike, alpha: NDArray, thrust
     return c_iso, c0_iso, f0_iso
 
 
-def _equivalent_dynamic_load(inputs: Mapping[str, ArrayLike | str | None], kind: str,
+def _equivalent_dynamic_load(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str,
                              alpha: NDArray, fr: NDArray, fa: NDArray, f0: NDArray | None,
                              c0: NDArray | None, out: dict[str, ArrayLike],
                              flags: dict[str, ArrayLike],
@@ -257,11 +258,11 @@ def _equivalent_dynamic_load(inputs: Mapping[str, ArrayLike | str | None], kind:
     """P (ISO 281), with the factors applied and the flags of Table 3's ends."""
     given = (None if inputs.get("load_x") is None
              else (inputs["load_x"], inputs["load_y"], inputs["load_e"]))
-    equivalent = equivalent_dynamic_load(fr, fa, kind, alpha, static_factor=f0,
+    equivalent = equivalent_dynamic_load(fr, fa, bearing_type, alpha, static_factor=f0,
                                          static_load_rating=c0, load_factors=given,
                                          family=FAMILY)
     p = equivalent.load
-    if kind == "thrust":
+    if bearing_type == "thrust":
         out["radial_factor"], out["axial_factor"] = np.zeros_like(p), np.ones_like(p)
         return p
     if equivalent.ratio_below_table is not None:
@@ -320,11 +321,11 @@ def _life(inputs: Mapping[str, ArrayLike | str | None], thrust: bool, speed: NDA
         out["life_margin"] = lnm / revolutions_per_second / np.asarray(min_life) - 1.0
 
 
-def _static(inputs: Mapping[str, ArrayLike | str | None], kind: str, alpha: NDArray,
+def _static(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str, alpha: NDArray,
             fr: NDArray, fa: NDArray, c0: NDArray | None, f0: NDArray | None,
             out: dict[str, ArrayLike]) -> NDArray:
     """P0 and, where C0 is known, s0 (ISO 76)."""
-    p0 = static_equivalent_load(fr, fa, kind, alpha, radial_factor=inputs.get("load_x0"),
+    p0 = static_equivalent_load(fr, fa, bearing_type, alpha, radial_factor=inputs.get("load_x0"),
                                 axial_factor=inputs.get("load_y0"), family=FAMILY)
     if c0 is not None:
         s0 = static_safety_factor(c0, p0)

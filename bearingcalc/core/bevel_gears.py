@@ -1,6 +1,7 @@
 """Epicyclic bevel gears: gear B on a shaft, gear A turning freely on an arm.
 
-Source: seed note, "Beveled gears"; docs/physics.md §4.
+Source: H. Jackman, *Rolling constraints* (Karlstad University course note), "Beveled gears";
+docs/physics.md §4.
 
 Gear B turns at Ω about k; the arm S turns at ω_Z about k through the common
 apex O and carries gear A, which meshes with B. Pitch radii a (A) and b (B) at
@@ -22,6 +23,11 @@ from bearingcalc.core import bevel_sizing
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
 from bearingcalc.core.solver import Solution, Solver
 
+#: The key of the apex-mismatch margin, max_apex_mismatch − |apex_mismatch|. It reads
+#: "slip_margin" in every output, as the other rolling kinds name their margin, and stays
+#: so for the tools that read it.
+APEX_MISMATCH_MARGIN = "slip_margin"
+
 RESULTS: dict[str, tuple[str, str]] = {
     "gear_a_pitch_radius": ("m", "pitch radius a of gear A"),
     "gear_b_pitch_radius": ("m", "pitch radius b of gear B"),
@@ -36,7 +42,7 @@ RESULTS: dict[str, tuple[str, str]] = {
     "contact_point_speed": ("m/s", "gear B's material point at the contact, b·|Ω|"),
     "pitch_line_speed": ("m/s", "pitch point speed relative to the arm, b·|ω_Z − Ω|"),
     "apex_mismatch": ("1", "b·sinα/(a·sinβ) − 1; 0 when the pitch cones share their apex"),
-    "slip_margin": ("1", "max_apex_mismatch − |apex_mismatch|"),
+    APEX_MISMATCH_MARGIN: ("1", "max_apex_mismatch − |apex_mismatch|"),
     "outer_cone_distance": ("m", "Re, apex to the outer end of the face"),
     "mean_cone_distance": ("m", "Rm = Re − b/2"),
     "face_width_ratio": ("1", "b/Re"),
@@ -79,7 +85,8 @@ GROUPS: dict[str, tuple[str, ...]] = {
     "kinematics": ("gear_a_pitch_radius", "gear_b_pitch_radius", "gear_a_pitch_angle",
                    "gear_b_pitch_angle", "shaft_angle", "gear_ratio", "cone_distance",
                    "gear_a_speed_relative_to_arm", "relative_speed", "gear_a_speed",
-                   "contact_point_speed", "pitch_line_speed", "apex_mismatch", "slip_margin"),
+                   "contact_point_speed", "pitch_line_speed", "apex_mismatch",
+                   APEX_MISMATCH_MARGIN),
     "geometry": ("outer_cone_distance", "mean_cone_distance", "face_width_ratio",
                  "mean_module", "gear_a_outer_pitch_diameter", "gear_b_outer_pitch_diameter",
                  "gear_a_mean_pitch_diameter", "gear_b_mean_pitch_diameter",
@@ -175,7 +182,7 @@ def solve_bevel_gears(gear_a_pitch_radius: ArrayLike, gear_b_pitch_radius: Array
                       max_apex_mismatch: ArrayLike = 0.001) -> dict[str, NDArray]:
     r"""Speeds of an epicyclic bevel pair and how far its pitch cones are from pure rolling.
 
-    No slip at the pitch point C (seed, "Beveled gears"):
+    No slip at the pitch point C (Jackman, *Rolling constraints*, "Beveled gears"):
 
     .. math::
         \omega_{AS} = \frac{b}{a}(\omega_Z - \Omega), \qquad
@@ -198,7 +205,7 @@ def solve_bevel_gears(gear_a_pitch_radius: ArrayLike, gear_b_pitch_radius: Array
     -------
     dict of arrays keyed as :data:`RESULTS`; NaN where the geometry is impossible.
 
-    Source: seed "Beveled gears"; docs/physics.md §4.
+    Source: Jackman, *Rolling constraints*, "Beveled gears"; docs/physics.md §4.
     """
     a = np.asarray(gear_a_pitch_radius, dtype=float)
     b = np.asarray(gear_b_pitch_radius, dtype=float)
@@ -233,7 +240,7 @@ def solve_bevel_gears(gear_a_pitch_radius: ArrayLike, gear_b_pitch_radius: Array
         "contact_point_speed": b * np.abs(big_omega),
         "pitch_line_speed": b * np.abs(carrier),
         "apex_mismatch": mismatch,
-        "slip_margin": np.asarray(max_apex_mismatch, dtype=float) - np.abs(mismatch),
+        APEX_MISMATCH_MARGIN: np.asarray(max_apex_mismatch, dtype=float) - np.abs(mismatch),
     })
 
 

@@ -1,6 +1,7 @@
 """A right circular cone rolling without slipping on a fixed plane, apex fixed.
 
-Source: seed note, "Cone rolling on a flat plane"; docs/physics.md §3.
+Source: H. Jackman, *Rolling constraints* (Karlstad University course note), "Cone rolling on a flat
+plane"; docs/physics.md §3.
 
 Frame S: n1 along the line of contact (from the apex), k normal to the plane,
 n2 = k × n1. Every point of the contact line is at rest, so the cone turns
@@ -64,7 +65,7 @@ def solve_cone_on_plane(half_angle: ArrayLike, spin_speed: ArrayLike, *,
     -------
     dict of arrays keyed as :data:`RESULTS`; NaN where the geometry is impossible.
 
-    Source: seed "Cone rolling on a flat plane"; docs/physics.md §3.
+    Source: Jackman, *Rolling constraints*, "Cone rolling on a flat plane"; docs/physics.md §3.
 
     Examples
     --------

@@ -1,7 +1,8 @@
 """A disk rolling without slipping on a circle that may turn.
 
-Source: seed note, "Rolling on a fixed surface in two dimensions" and "Rolling on
-a moving surface in two dimensions"; docs/physics.md §2.
+Source: H. Jackman, *Rolling constraints* (Karlstad University course note), "Rolling on a fixed
+surface in two dimensions" and "Rolling on a moving surface in two dimensions";
+docs/physics.md §2.
 
 Disk radius r, absolute angular velocity ω (and ω̇); circular surface of radius R
 turning with Ω (and Ω̇) about its centre O; Ω = 0 is the fixed surface. In
@@ -82,7 +83,8 @@ def solve_disk_on_circle(disk_radius: ArrayLike, surface_radius: ArrayLike,
     -------
     dict of arrays keyed as :data:`RESULTS`; NaN where the geometry is impossible.
 
-    Source: seed "Rolling on a moving surface in two dimensions"; docs/physics.md §2.
+    Source: Jackman, *Rolling constraints*, "Rolling on a moving surface in two dimensions";
+    docs/physics.md §2.
 
     Examples
     --------

@@ -1,6 +1,7 @@
 """Thrust bearing with pure rolling at the shaft contact.
 
-Source: seed note, "Thrust bearing example"; re-derived in ``docs/physics.md`` §1.
+Source: H. Jackman, *Rolling constraints* (Karlstad University course note), "Thrust bearing
+example"; re-derived in ``docs/physics.md`` §1.
 
 Geometry, in the meridian plane of one ball: ``e2`` along the shaft axis, ``e1``
 radial toward the axis, ``e3 = e1 × e2``. Ball radius r, ball centre G at pitch

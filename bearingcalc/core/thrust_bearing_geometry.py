@@ -29,7 +29,7 @@ def pure_rolling_pitch_radius(ball_radius: ArrayLike, contact_angle: ArrayLike) 
     -------
     Pitch radius b*. [m] NaN outside 0 < θ < π/4.
 
-    Source: docs/physics.md §1 (seed, thrust bearing, final relation).
+    Source: docs/physics.md §1 (Jackman, *Rolling constraints*, thrust bearing, final relation).
 
     >>> round(float(pure_rolling_pitch_radius(1.0, np.radians(30.0))), 4)
     4.0981

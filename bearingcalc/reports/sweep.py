@@ -19,7 +19,7 @@ if TYPE_CHECKING:  # the report type only; its module loads with the command
 
 def write_sweep_json_lines(sweep: Sweep, stream: IO[str]) -> None:
     """JSON Lines, one object per point: {"inputs", "results", "reason"} (SI units, as
-    in the CSV header and the README)."""
+    in the CSV header; docs/commands.md)."""
     import orjson
 
     names = [axis.name for axis in sweep.axes]
