@@ -16,8 +16,10 @@ from pathlib import Path
 
 SPECS = Path(__file__).resolve().parent.parent / "specs"
 
-#: kind -> (example spec, its quantity fields that take hostile values, a field to sweep)
-KINDS = {
+#: kind -> (example spec, its quantity fields that take hostile values, a field to sweep),
+#: chosen by hand for the kinds they were written for; every other registered kind gets
+#: its example's first quantity fields and a sweep of the first (see ``derived_choice``).
+CHOSEN = {
     "thrust-bearing": ("thrust-bearing.yaml",
                        ("ball_diameter", "contact_angle", "pitch_radius", "shaft_speed"),
                        "shaft_speed=100rpm:200rpm:3"),
@@ -34,6 +36,39 @@ KINDS = {
     "bevel-drive": ("bevel-drive.yaml", ("module", "face_width", "input_speed", "torque"),
                     "torque=50N*m:70N*m:3"),
 }
+
+
+def derived_choice(kind: str) -> tuple[str, tuple[str, ...], str]:
+    """(example spec, quantity fields, sweep) of a kind from its example ``specs/KIND.yaml``
+    and its model: the first four top-level quantity fields the example writes as text,
+    and a sweep of the first from 0.9 to 1.1 times its value."""
+    import yaml
+
+    from bearingcalc.kinds import KINDS as REGISTRY
+    from bearingcalc.models.base import field_parser
+    from bearingcalc.number_grammar import NUMBER
+
+    example = f"{kind}.yaml"
+    data = yaml.safe_load((SPECS / example).read_text())
+    fields = REGISTRY[kind].model.model_fields
+    quantities = [name for name, value in data.items()
+                  if name in fields and isinstance(value, str)
+                  and (parser := field_parser(fields[name])) is not None
+                  and parser[0] == "quantity" and re.match(NUMBER, value)]
+    first = quantities[0]
+    number = re.match(NUMBER, data[first])
+    assert number is not None
+    value, unit = float(number[0]), data[first][number.end():].strip().replace(" ", "")
+    return example, tuple(quantities[:4]), f"{first}={0.9 * value:g}{unit}:{1.1 * value:g}{unit}:3"
+
+
+def _kinds() -> dict[str, tuple[str, tuple[str, ...], str]]:
+    from bearingcalc.kinds import KINDS as REGISTRY
+
+    return {kind: CHOSEN.get(kind) or derived_choice(kind) for kind in REGISTRY}
+
+
+KINDS = _kinds()
 
 #: Quantity strings (written quoted) that must each be refused.
 BAD_QUANTITY_TEXT = [

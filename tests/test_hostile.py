@@ -22,7 +22,14 @@ from bearingcalc.evaluation import evaluate_document, evaluate_file, load_one_sp
 from bearingcalc.kinds import KINDS, OUT_OF_RANGE_REASON
 from tests.conftest import ROOT, WARNINGS_AS_ERRORS
 from tests.hostile import KINDS as CORPUS_KINDS
-from tests.hostile import PHYSICS_PREFIX, STRUCTURAL, hostile_corpus, sweep_option
+from tests.hostile import (
+    PHYSICS_PREFIX,
+    SPECS,
+    STRUCTURAL,
+    derived_choice,
+    hostile_corpus,
+    sweep_option,
+)
 
 CORPUS = hostile_corpus()
 GOOD = sorted((ROOT / "specs").glob("*.yaml"))
@@ -33,6 +40,14 @@ pytestmark = pytest.mark.filterwarnings("error")
 
 def test_the_corpus_covers_every_kind():
     assert set(CORPUS_KINDS) == set(KINDS)
+
+
+@pytest.mark.parametrize("kind", sorted(KINDS))
+def test_a_new_kind_gets_its_cases_and_sweep_from_its_example(kind):
+    example, fields, vary = derived_choice(kind)
+    _, spec, document = load_one_spec(SPECS / example)
+    assert fields
+    sweeps.check_axes(document, [sweeps.parse_axis(vary, spec)])
 
 
 def test_no_case_ends_at_the_generic_overflow_status(corpus_dir):
