@@ -15,6 +15,7 @@ import re
 from pathlib import Path
 
 SPECS = Path(__file__).resolve().parent.parent / "specs"
+TEMPLATES = SPECS.parent / "bearingcalc" / "templates"
 
 #: kind -> (example spec, its quantity fields that take hostile values, a field to sweep),
 #: chosen by hand for the kinds they were written for; every other registered kind gets
@@ -39,16 +40,17 @@ CHOSEN = {
 
 
 def derived_choice(kind: str) -> tuple[str, tuple[str, ...], str]:
-    """(example spec, quantity fields, sweep) of a kind from its example ``specs/KIND.yaml``
-    and its model: the first four top-level quantity fields the example writes as text,
-    and a sweep of the first from 0.9 to 1.1 times its value."""
+    """(example spec, quantity fields, sweep) of a kind from its template
+    (``bearingcalc/templates/KIND.yaml``, which every kind has) and its model: the first
+    four top-level quantity fields the template writes as text, and a sweep of the first
+    from 0.9 to 1.1 times its value."""
     import yaml
 
     from bearingcalc.kinds import KINDS as REGISTRY
     from bearingcalc.models.base import field_parser
     from bearingcalc.number_grammar import NUMBER
 
-    example = f"{kind}.yaml"
+    example = str(TEMPLATES / f"{kind}.yaml")  # absolute: SPECS / example is the template
     data = yaml.safe_load((SPECS / example).read_text())
     fields = REGISTRY[kind].model.model_fields
     quantities = [name for name, value in data.items()

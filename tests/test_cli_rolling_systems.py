@@ -49,9 +49,7 @@ def solve_one(cli, path):
     return record
 
 
-def test_every_kind_has_an_example_spec_and_complete_result_metadata():
-    examples = {path.stem for path in (ROOT / "specs").glob("*.yaml")}
-    assert set(KINDS) <= examples
+def test_the_first_results_of_the_rolling_systems_keep_their_order():
     for name, keys in CONTRACT_KEYS.items():
         # the results every consumer relies on first, in order; others may follow
         assert list(KINDS[name].results)[:len(keys)] == keys
