@@ -267,8 +267,12 @@ def test_jobs_are_bounded(cli):
 #: Runs the CLI with one of its work functions wrapped to say "started" on stderr as the
 #: work begins, so that a test interrupts the work itself, never the start-up.
 _ANNOUNCING_CLI = """
-import sys
 import importlib
+import signal
+import sys
+# A shell that starts a job in the background makes it ignore Ctrl-C, and Python keeps
+# ignoring it: take Python's own handler, as a run from a user's terminal has.
+signal.signal(signal.SIGINT, signal.default_int_handler)
 module = importlib.import_module(sys.argv[1])
 original = getattr(module, sys.argv[2])
 def announced(*args, **kwargs):
