@@ -9,7 +9,7 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import Field
 
-from bearingcalc.models.ball_bearing_rules import BallBearingRules
+from bearingcalc.models.ball_bearing_rules import GeometryRules, OperatingRules
 from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.lubrication import Lubrication
 from bearingcalc.models.materials import ElasticMaterial
@@ -89,7 +89,7 @@ class BearingFields(SpecModel):
     material: ElasticMaterial = ElasticMaterial()
 
 
-class BallBearingSpec(BallBearingRules, BearingFields, Spec):
+class BallBearingSpec(OperatingRules, GeometryRules, BearingFields, Spec):
     """A rolling ball bearing sized by ISO 281 (life) and ISO 76 (static safety)."""
 
     kind: Literal["ball-bearing"]

@@ -11,8 +11,8 @@ from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.rules import rule
 
 
-class BallBearingRules:
-    """Each rule reads the spec's fields and returns the problem it finds, or None."""
+class _ReadsBallBearing:
+    """What the rules read of a ball bearing's spec model."""
 
     if TYPE_CHECKING:  # the spec model's fields and properties these rules read; not
         # annotations pydantic would see, or it would take them for fields of its own
@@ -40,6 +40,17 @@ class BallBearingRules:
         contamination_factor: float | None
         inner_groove_conformity: float | None
         outer_groove_conformity: float | None
+
+    def _envelope_mm(self) -> tuple[float, float] | None:
+        """(d, D) in mm where both are given and in order, else None."""
+        if self.bore_diameter is None or self.outside_diameter is None or not (
+                self.bore_diameter < self.outside_diameter):
+            return None
+        return self.bore_diameter * 1e3, self.outside_diameter * 1e3
+
+
+class OperatingRules(_ReadsBallBearing):
+    """How the bearing turns, is loaded and is lubricated."""
 
     @rule
     def _turning(self) -> SpecFieldError | None:
@@ -106,6 +117,50 @@ class BallBearingRules:
         return None
 
     @rule
+    def _axial_factors_found(self) -> SpecFieldError | None:
+        if self.type != "deep-groove" or not self.axial_load > 0 or (
+                self.load_factors is not None or self.has_geometry):
+            return None
+        if self.static_load_rating is not None and self.static_factor is not None:
+            return None
+        field = "static_load_rating" if self.static_load_rating is None else "static_factor"
+        return SpecFieldError(field, "a deep-groove bearing under axial load needs f0 and C0 "
+                              "to find e and Y: give static_factor and static_load_rating "
+                              "from the catalogue, or the geometry (ball_count, "
+                              "ball_diameter, pitch_diameter)", at="axial_load")
+
+    @rule
+    def _contamination_with_lubrication(self) -> SpecFieldError | None:
+        if self.lubrication is not None and self.contamination_factor is None:
+            return SpecFieldError("contamination_factor", "lubrication needs the "
+                                  "contamination factor eC (0 to 1, like 0.5; see the "
+                                  "cleanliness classes in docs/kinds/ball-bearing.md)",
+                                  at="lubrication")
+        if self.lubrication is None and self.contamination_factor is not None:
+            return SpecFieldError("contamination_factor", "applies with lubrication only: "
+                                  "give lubrication: {viscosity: ...} too, or leave it out")
+        return None
+
+    @rule
+    def _lubrication_sizes(self) -> SpecFieldError | None:
+        if self.lubrication is None:
+            return None
+        if self.mean_diameter is None:
+            return SpecFieldError("pitch_diameter", "lubrication needs the pitch diameter "
+                                  "for ν1: give pitch_diameter, or bore_diameter and "
+                                  "outside_diameter", at="lubrication")
+        if (self.fatigue_load_limit is None and self.static_load_rating is None
+                and (self.type == "thrust" or not self.has_geometry)):
+            return SpecFieldError("fatigue_load_limit", "aISO needs Cu: give "
+                                  "fatigue_load_limit, or static_load_rating to find it",
+                                  at="lubrication")
+        return None
+
+
+class GeometryRules(_ReadsBallBearing):
+    """The bearing's rings, balls, grooves and ratings."""
+
+    @rule
     def _envelope(self) -> SpecFieldError | None:
         """Bore and outside diameter: both or neither, in order."""
         if (self.bore_diameter is None) != (self.outside_diameter is None):
@@ -156,46 +211,6 @@ class BallBearingRules:
         return None
 
     @rule
-    def _axial_factors_found(self) -> SpecFieldError | None:
-        if self.type != "deep-groove" or not self.axial_load > 0 or (
-                self.load_factors is not None or self.has_geometry):
-            return None
-        if self.static_load_rating is not None and self.static_factor is not None:
-            return None
-        field = "static_load_rating" if self.static_load_rating is None else "static_factor"
-        return SpecFieldError(field, "a deep-groove bearing under axial load needs f0 and C0 "
-                              "to find e and Y: give static_factor and static_load_rating "
-                              "from the catalogue, or the geometry (ball_count, "
-                              "ball_diameter, pitch_diameter)", at="axial_load")
-
-    @rule
-    def _contamination_with_lubrication(self) -> SpecFieldError | None:
-        if self.lubrication is not None and self.contamination_factor is None:
-            return SpecFieldError("contamination_factor", "lubrication needs the "
-                                  "contamination factor eC (0 to 1, like 0.5; see the "
-                                  "cleanliness classes in docs/kinds/ball-bearing.md)",
-                                  at="lubrication")
-        if self.lubrication is None and self.contamination_factor is not None:
-            return SpecFieldError("contamination_factor", "applies with lubrication only: "
-                                  "give lubrication: {viscosity: ...} too, or leave it out")
-        return None
-
-    @rule
-    def _lubrication_sizes(self) -> SpecFieldError | None:
-        if self.lubrication is None:
-            return None
-        if self.mean_diameter is None:
-            return SpecFieldError("pitch_diameter", "lubrication needs the pitch diameter "
-                                  "for ν1: give pitch_diameter, or bore_diameter and "
-                                  "outside_diameter", at="lubrication")
-        if (self.fatigue_load_limit is None and self.static_load_rating is None
-                and (self.type == "thrust" or not self.has_geometry)):
-            return SpecFieldError("fatigue_load_limit", "aISO needs Cu: give "
-                                  "fatigue_load_limit, or static_load_rating to find it",
-                                  at="lubrication")
-        return None
-
-    @rule
     def _grooves(self) -> SpecFieldError | None:
         if (self.inner_groove_conformity is None) != (self.outer_groove_conformity is None):
             missing = ("inner_groove_conformity" if self.inner_groove_conformity is None
@@ -206,10 +221,3 @@ class BallBearingRules:
             return SpecFieldError("inner_groove_conformity", "the contact stresses need the "
                                   "geometry too: ball_count, ball_diameter and pitch_diameter")
         return None
-
-    def _envelope_mm(self) -> tuple[float, float] | None:
-        """(d, D) in mm where both are given and in order, else None."""
-        if self.bore_diameter is None or self.outside_diameter is None or not (
-                self.bore_diameter < self.outside_diameter):
-            return None
-        return self.bore_diameter * 1e3, self.outside_diameter * 1e3
