@@ -21,7 +21,7 @@ from pydantic import BaseModel, ValidationError
 from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind
 from bearingcalc.models.base import Spec, nested_model
-from bearingcalc.models.field_path import FieldPath
+from bearingcalc.models.field_path import FieldPath, is_list_field
 from bearingcalc.models.rules import problems_despite
 from bearingcalc.models.yaml_loader import (
     Document,
@@ -99,9 +99,9 @@ def _rule_problems_despite(model: type[Spec], data: dict[str, Any],
                            exc: ValidationError) -> list[SpecFieldError]:
     """The problems of the spec's cross-field rules that read only valid fields.
 
-    The invalid top-level fields are given stand-ins (their default, or their schema's
-    example) so that the model can be built; rules that read them are not run. When no
-    stand-in serves, no rule runs: the field errors come first.
+    The invalid top-level fields are given stand-ins (their default, their schema's
+    example, an empty list or group) so that the model can be built; rules that read
+    them are not run. When no stand-in serves, no rule runs: the field errors come first.
     """
     invalid = {str(error["loc"][0]) for error in exc.errors() if error["loc"]}
     stand_in = {key: value for key, value in data.items() if key not in invalid}
@@ -109,9 +109,8 @@ def _rule_problems_despite(model: type[Spec], data: dict[str, Any],
         info = model.model_fields[name]
         if info.is_required():
             example = _example(model, (name,))
-            if example is None:
-                return []
-            stand_in[name] = example
+            stand_in[name] = (example if example is not None else [] if is_list_field(info)
+                              else {})
     try:
         partial = model.model_validate(stand_in, context={"rules": False})
     except (ValidationError, SpecFieldError):
@@ -289,10 +288,24 @@ def _one_problem(document: Document, model: type[Spec], error: Any) -> SpecError
     elif error_type in ("model_type", "model_attributes_type", "dict_type"):
         message = f"must be a mapping of keys, got {error.get('input')!r}"
     elif error_type == "literal_error":
-        message = f"{message}, got {error.get('input')!r}"
+        given = error.get("input")
+        options = re.findall(r"'([^']*)'", str(error.get("ctx", {}).get("expected", "")))
+        message = (f"must be one of {', '.join(options)}, got {given!r}"
+                   f"{did_you_mean(str(given), options)}")
+    elif error_type in _OWN_WORDS:
+        message = f"{_OWN_WORDS[error_type]}, got {error.get('input')!r}"
     else:
         message = message.removeprefix("Value error, ")
     return document.error(message, field=dotted, key_path=key_path)
+
+
+#: The project's words for the type errors pydantic words its own way.
+_OWN_WORDS = {
+    "bool_type": "must be true or false",
+    "bool_parsing": "must be true or false",
+    "list_type": "must be a list (items on lines of their own, each after '- ', or [a, b])",
+    "string_type": "must be text",
+}
 
 
 def _model_at(model: type[BaseModel], loc: tuple[str, ...]) -> type[BaseModel] | None:

@@ -163,7 +163,11 @@ class Kind:
             for index, name in enumerate(solver.members.names):
                 offset = self._member_offset(index)
                 for code, (field, why) in solver.members.solver.status_reasons.items():
-                    reasons[offset + code] = (_member_field(solver.members, name, field), why)
+                    where = _member_field(solver.members, name, field)
+                    # The composite's own field (a drive's torque) at fault: say which
+                    # member it fails.
+                    reasons[offset + code] = (where, why if where.startswith(name)
+                                              else f"at {name}, {why}")
         reasons[OUT_OF_RANGE] = OUT_OF_RANGE_REASON
         return reasons
 

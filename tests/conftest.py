@@ -50,6 +50,18 @@ def solve_json(cli, path) -> list[dict]:
     return records
 
 
+def study_status(record: dict) -> int:
+    """The exit status a tolerance study's JSON record calls for: 1 when the box holds
+    impossible designs or a margin (a ``*_margin`` result) can go below zero, at worst
+    case when it ran, else in some Monte Carlo sample; 0 otherwise."""
+    if record.get("impossible_in_box") or record.get("infeasible_samples"):
+        return 1
+    margins = [entry for key, entry in record["results"].items() if key.endswith("_margin")]
+    if margins and all("worst_case" in entry for entry in margins):
+        return int(any(entry["worst_case"]["min"] < 0 for entry in margins))
+    return int("yield" in record and record["yield"] < 1.0)
+
+
 @pytest.fixture
 def cli():
     runner = CliRunner()

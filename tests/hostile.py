@@ -252,6 +252,13 @@ def _physics_cases() -> dict[str, str]:
         "bevel-sizing-both-loads.yaml": sizing.replace("power: 7.5 kW",
                                                        "power: 7.5 kW\ntorque: 1 N*m"),
         "bevel-sizing-wide.yaml": sizing.replace("face_width: 27.94 mm", "face_width: 60 mm"),
+        # Whole numbers too long for a float, where a number within a range is asked.
+        "bevel-sizing-huge-quality.yaml": sizing.replace("quality_number: 7",
+                                                         "quality_number: 1" + "0" * 400),
+        "bevel-sizing-huge-hardness.yaml": sizing.replace("hardness: 180 HB",
+                                                          "hardness: 1" + "0" * 400),
+        "bevel-sizing-huge-reliability.yaml": sizing.replace("reliability: 0.99",
+                                                             "reliability: 1" + "0" * 400),
     }
 
 

@@ -13,7 +13,7 @@ from scipy.optimize import brentq
 
 from bearingcalc.core import ball_bearing as bb
 from bearingcalc.core import iso76, iso281
-from tests.conftest import ROOT, csv_column, solve_json
+from tests.conftest import ROOT, csv_column, solve_json, study_status
 
 HOURS = 3600.0
 SPECS = sorted((ROOT / "specs").glob("ball-bearing*.yaml"))
@@ -225,7 +225,7 @@ def test_vectorised_results_equal_one_at_a_time():
 @pytest.mark.parametrize("fmt", ["table", "json", "csv"])
 def test_every_example_solves_in_every_format(cli, spec, fmt):
     run = cli("solve", spec, "--format", fmt)
-    assert run.code in (0, 1), run.err
+    assert run.code == 0, run.err  # every example is within its limits
     if fmt == "table":
         for heading in ("ratings", "loads", "life", "static"):
             assert heading in run.out
@@ -276,7 +276,7 @@ def test_tolerance_reports_the_life_band_and_the_yield(cli):
     run = cli("tolerance", ROOT / "specs" / "tolerances" / "ball-bearing.yaml", "-n", "20000",
               "--format", "json")
     record = json.loads(run.out)
-    assert run.code in (0, 1), run.err
+    assert run.code == study_status(record) == 1, run.err  # the life can fall short
     life = record["results"]["modified_rating_life"]
     assert life["worst_case"]["min"] < life["nominal"] < life["worst_case"]["max"]
     assert life["rss"]["std"] > 0 and life["monte_carlo"]["std"] > 0
@@ -324,7 +324,8 @@ BAD = [
      "contamination_factor: 0.5\n", "lubrication", "κ = ν/ν1 is below 0.1"),
     ("pitch_diameter: 72.5 mm\nlubrication: {viscosity: 20 mm^2/s, temperature: 80 degC}\n"
      "contamination_factor: 0.5\n", "lubrication", "not both"),
-    ("bore_diameter: 45 mm\n", "outside_diameter", "give both bore_diameter and outside"),
+    ("bore_diameter: 45 mm\n", "outside_diameter", "give both bore_diameter and outside",
+     "bore_diameter"),
     ("radial_load: 10 N*m\n", "radial_load", "is not a unit of force"),
 ]
 

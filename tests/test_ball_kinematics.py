@@ -179,7 +179,7 @@ def test_speed_alone_means_the_inner_ring_turning(cli, spec_file):
     (SPEC + "speed: 100 rpm\n", "not both"),
     (SPEC.replace("outer_speed: 0 rpm", "outer_speed: 10000 rpm"), "must turn relative"),
     (SPEC.replace("inner_speed: 10000 rpm\nouter_speed: 0 rpm\n", ""), "missing: give speed"),
-    (SPEC + "race_control: middle\n", "'outer' or 'inner'"),
+    (SPEC + "race_control: middle\n", "must be one of outer, inner, got 'middle'"),
 ])
 def test_bad_speeds_are_one_clear_line(cli, spec_file, text, fragment):
     run = cli("solve", spec_file(text))
@@ -189,7 +189,7 @@ def test_bad_speeds_are_one_clear_line(cli, spec_file, text, fragment):
 def test_tolerance_gives_the_band_of_each_defect_frequency(cli):
     run = cli("tolerance", ROOT / "specs" / "tolerances" / "ball-bearing-kinematics.yaml",
               "-n", "4096", "-f", "json")
-    assert run.code in (0, 1), run.err
+    assert run.code == 0, run.err  # no margin: nothing to exceed
     results = json.loads(run.out)["results"]
     for key in ("ball_pass_frequency_outer", "ball_pass_frequency_inner", "cage_frequency",
                 "ball_spin_frequency"):

@@ -117,7 +117,8 @@ def test_bevel_apex_mismatch_over_the_limit_fails(cli, spec_file):
 BAD = [
     (DISK.replace("20 mm", "80 mm"), 2, "disk_radius: internal contact needs disk_radius < "
      "surface_radius, got 80 mm"),
-    (DISK.replace("internal", "inside"), 4, "contact: Input should be 'external' or 'internal'"),
+    (DISK.replace("internal", "inside"), 4,
+     "contact: must be one of external, internal, got 'inside'"),
     (DISK.replace("80 mm", "-80 mm"), 3, "must be greater than zero"),
     (DISK + "disk_accel: 5 rpm\n", 6, "'rpm' is not a unit of angular acceleration"),
     (CONE.replace("15 deg", "90 deg"), 2, "half_angle: the cone half-angle must be between "

@@ -105,7 +105,8 @@ class OperatingRules(_ReadsBallBearing):
     @rule
     def _angle_in_tables(self) -> SpecFieldError | None:
         alpha = self.angle
-        if self.type != "angular-contact" or (
+        # A missing angle is its own problem (_contact_angle): the tables are not one.
+        if self.type != "angular-contact" or self.contact_angle is None or (
                 math.radians(20) - 1e-12 <= alpha <= math.radians(45) + 1e-12):
             return None
         factors = self.load_factors
@@ -145,7 +146,8 @@ class OperatingRules(_ReadsBallBearing):
     def _lubrication_sizes(self) -> SpecFieldError | None:
         if self.lubrication is None:
             return None
-        if self.mean_diameter is None:
+        if self.mean_diameter is None and (self.bore_diameter is None) == (
+                self.outside_diameter is None):  # one ring diameter alone: _envelope says so
             return SpecFieldError("pitch_diameter", "lubrication needs the pitch diameter "
                                   "for ν1: give pitch_diameter, or bore_diameter and "
                                   "outside_diameter", at="lubrication")
@@ -164,9 +166,11 @@ class GeometryRules(_ReadsBallBearing):
     def _envelope(self) -> SpecFieldError | None:
         """Bore and outside diameter: both or neither, in order."""
         if (self.bore_diameter is None) != (self.outside_diameter is None):
-            return SpecFieldError("outside_diameter" if self.outside_diameter is None
-                                  else "bore_diameter",
-                                  "give both bore_diameter and outside_diameter, or neither")
+            given, missing = (("bore_diameter", "outside_diameter")
+                              if self.outside_diameter is None
+                              else ("outside_diameter", "bore_diameter"))
+            return SpecFieldError(missing, "give both bore_diameter and outside_diameter, or "
+                                  "neither", at=given)
         if self.bore_diameter is not None and not (
                 self.bore_diameter < self.outside_diameter):  # type: ignore[operator]
             return SpecFieldError("outside_diameter", "must be larger than bore_diameter")
@@ -213,10 +217,11 @@ class GeometryRules(_ReadsBallBearing):
     @rule
     def _grooves(self) -> SpecFieldError | None:
         if (self.inner_groove_conformity is None) != (self.outer_groove_conformity is None):
-            missing = ("inner_groove_conformity" if self.inner_groove_conformity is None
-                       else "outer_groove_conformity")
+            missing, given = (("inner_groove_conformity", "outer_groove_conformity")
+                              if self.inner_groove_conformity is None
+                              else ("outer_groove_conformity", "inner_groove_conformity"))
             return SpecFieldError(missing, "the contact stresses need both groove "
-                                  "conformities (like 0.52 and 0.53)")
+                                  "conformities (like 0.52 and 0.53)", at=given)
         if self.inner_groove_conformity is not None and not self.has_geometry:
             return SpecFieldError("inner_groove_conformity", "the contact stresses need the "
                                   "geometry too: ball_count, ball_diameter and pitch_diameter")

@@ -90,6 +90,8 @@ class BevelDriveSpec(BevelPair):
 
     @rule
     def _shafts_carried(self) -> list[SpecFieldError]:
+        """Each shaft on two bearings, apart, one of them locating, none a thrust bearing:
+        read from the bearing lists alone, so a bad shared field hides none of it."""
         problems: list[SpecFieldError] = []
         for shaft, bearings in self.shafts():
             field = f"{shaft}_bearings"
@@ -112,11 +114,43 @@ class BevelDriveSpec(BevelPair):
                     problems.append(SpecFieldError(
                         f"{field}.{i}.type", "a thrust ball bearing takes no radial load, and "
                         "the gear forces load every bearing of the shaft radially"))
-                else:
-                    problems += self._as_ball_bearing(f"{field}.{i}", bearing)
+        return problems
+
+    @rule
+    def _bearings_as_ball_bearings(self) -> list[SpecFieldError]:
+        """Everything ``kind: ball-bearing`` refuses of each bearing, with the drive's
+        reliability, lubrication and contamination."""
+        problems: list[SpecFieldError] = []
+        for shaft, bearings in self.shafts():
+            for i, bearing in enumerate(bearings, 1):
+                if bearing.type != "thrust":
+                    problems += self._as_ball_bearing(f"{shaft}_bearings.{i}", bearing)
         # A rule of the drive's shared fields (lubrication, contamination) fails for every
         # bearing alike: report it once.
         return list({(p.field, p.message): p for p in problems}.values())
+
+    def field_as_written(self, field: str) -> str:
+        """A bearing refused for its load names the drive's load as the spec gives it."""
+        return "power" if field == "torque" and self.torque is None else field
+
+    def warnings(self) -> list[str]:
+        """Each bearing's notes, named by the bearing (once where all share them), and
+        which bearings the static safety leaves out."""
+        notes: dict[str, None] = {}
+        without_c0 = []
+        for shaft, bearings in self.shafts():
+            for i, bearing in enumerate(bearings, 1):
+                name = f"{shaft}_bearings.{i}"
+                spec = self.ball_bearing(bearing)
+                for note in spec.warnings():
+                    shared = note.startswith("no lubrication given")
+                    notes[note if shared else f"{name}: {note}"] = None
+                if bearing.static_load_rating is None and not spec.has_geometry:
+                    without_c0.append(name)
+        if without_c0:
+            notes[f"no static_load_rating (or geometry) for {', '.join(without_c0)}: "
+                  "static_safety_margin is the smallest s0 of the other bearings"] = None
+        return list(notes)
 
     def shafts(self) -> list[tuple[str, list[DriveBearing]]]:
         """(shaft, its bearings) for the pinion shaft and, when given, the gear shaft."""

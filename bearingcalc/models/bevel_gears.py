@@ -10,7 +10,7 @@ from pydantic import BeforeValidator, Field, WithJsonSchema
 
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
-from bearingcalc.models.plain_numbers import Ratio, ToothCount, ranged_number, reliability
+from bearingcalc.models.plain_numbers import Ratio, ToothCount, ranged_number, reliability, shown
 from bearingcalc.models.quantities import Angle, AngularSpeed, PositiveLength, PositivePower, Torque
 from bearingcalc.models.rules import rule
 from bearingcalc.number_grammar import UNSIGNED_DECIMAL
@@ -27,8 +27,9 @@ def _hardness(value: Any) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise ValueError(f"write the Brinell hardness like '180 HB', got {value!r}")
     if not 180 <= value <= 400:
+        got = shown(value) if isinstance(value, int) else f"{value:g}"
         raise ValueError(f"must be from 180 to 400 HB (through-hardened grade 1 steel in "
-                         f"AGMA 2003), got {value:g}")
+                         f"AGMA 2003), got {got}")
     return float(value)
 
 

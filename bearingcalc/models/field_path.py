@@ -164,7 +164,7 @@ def resolve_field(spec: BaseModel, path: str) -> FieldAt:
         names.append(part)
         if value is None and left_out is None:
             left_out = ".".join(names)
-        group, is_list, in_list = nested_model(info), _is_list(info), False
+        group, is_list, in_list = nested_model(info), is_list_field(info), False
     return FieldAt(".".join(names), info, value, group, is_list, in_list, left_out)
 
 
@@ -190,7 +190,7 @@ def _item_index(part: str, items: Any, here: str, item_model: type[BaseModel] | 
                          f"{example}")
 
 
-def _is_list(info: FieldInfo) -> bool:
+def is_list_field(info: FieldInfo) -> bool:
     """Whether a model field holds a list (of nested models)."""
     annotation = info.annotation
     return typing.get_origin(annotation) in (list, tuple) or any(

@@ -62,6 +62,11 @@ Ratio = Annotated[float, BeforeValidator(_plain_number),
                   WithJsonSchema({"type": "number", "minimum": 0})]
 
 
+def shown(value: int) -> str:
+    """A whole number for a message: itself, or how many digits it has when it is long."""
+    return str(value) if abs(value) < 10**12 else f"a number of {len(str(abs(value)))} digits"
+
+
 class _RangedNumber:
     """Validator of a plain number within [low, high] (or (low, high) when ``exclusive``),
     refused with a message that names the range and what the number is."""
@@ -75,6 +80,8 @@ class _RangedNumber:
         low, high, what = self.low, self.high, self.what
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise ValueError(f"must be a number, like {self.example}, got {value!r}")
+        if isinstance(value, int) and abs(value) > MAX_MAGNITUDE:
+            raise ValueError(f"must be from {low:g} to {high:g} ({what}), got {shown(value)}")
         if self.whole and not float(value).is_integer():
             raise ValueError(f"must be a whole number ({what}), got {value!r}")
         if self.exclusive and not low < value < high:
@@ -115,6 +122,8 @@ class _Reliability:
                 raise ValueError(f"write a reliability as '99 %' or 0.99, got {value!r}")
             fraction = float(match[1]) / 100.0
         elif isinstance(value, (int, float)) and not isinstance(value, bool):
+            if isinstance(value, int) and value > 100:
+                raise ValueError(f"a bare number is a fraction, at most 1, got {shown(value)}")
             if value > 1:
                 raise ValueError(f"a bare number is a fraction, at most 1; for percent write "
                                  f"'{value:g} %'")

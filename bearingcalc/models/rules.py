@@ -27,7 +27,9 @@ _RULE_MARK = "_is_spec_rule"
 
 
 def rule(method: Rule) -> Rule:
-    """Mark a model method as a cross-field rule (run in definition order)."""
+    """Mark a model method as a cross-field rule. A model's rules run base classes first
+    (the reverse of its method resolution order), each class's in definition order; the
+    problems are then reported in the order of their lines."""
     setattr(method, _RULE_MARK, True)
     return method
 
