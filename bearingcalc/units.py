@@ -132,7 +132,7 @@ COMMON_UNITS: dict[str, tuple[str, float]] = {
 #: are not units to it). Keys are written without spaces; ``1 / min`` is ``1/min``.
 #: ``tests/test_units.py`` checks each against pint's ``revolution / minute``.
 RPM_NOTATIONS = frozenset({"rpm", "RPM", "r/min", "rev/min", "1/min", "min^-1", "min**-1",
-                           "min⁻¹"})
+                           "min⁻¹", "min-1", "U/min"})  # U/min: German catalogues' Umdrehungen
 
 _DIVISORS: dict[str, float] = {"cm": 1e2, "mm": 1e3, "um": 1e6, "µm": 1e6, "μm": 1e6,
                                "mrad": 1e3}
@@ -223,6 +223,8 @@ def parse_quantity(text: Any, dimension: Dimension) -> float:
         raise UnitError(f"cannot read '{unit}' in '{text}' as a unit: percent is a unit on "
                         f"its own, as in '90 %', never a factor of another unit; write "
                         f"{what} like '{dimension.example}'")
+    if dimension is ANGULAR_SPEED and unit.replace(" ", "") in RPM_NOTATIONS:
+        unit = "rpm"  # the notations of speeds of rotation, "min-1" among them
     if not _UNIT.match(unit):
         before_one = _number_before_one(match["number"], unit)
         if before_one is not None:  # "15001/min": the 1 of 1/min read as a digit

@@ -11,7 +11,7 @@ import sys
 import numpy as np
 import pytest
 
-from bearingcalc.core import ball_bearing, bevel_drive
+from bearingcalc.core import ball_bearing, bevel_drive, iso281
 from bearingcalc.kinds import KINDS
 from tests.conftest import ROOT, WARNINGS_AS_ERRORS, solve_json
 
@@ -173,8 +173,8 @@ def test_a_frozen_oil_has_its_own_status_in_the_solver():
 
 def test_walther_temperature_inverts_walther_viscosity():
     t = np.linspace(250.0, 420.0, 50)
-    nu = ball_bearing.walther_viscosity(68e-6, 8.7e-6, t)
-    np.testing.assert_allclose(ball_bearing.walther_temperature(68e-6, 8.7e-6, nu), t,
+    nu = iso281.walther_viscosity(68e-6, 8.7e-6, t)
+    np.testing.assert_allclose(iso281.walther_temperature(68e-6, 8.7e-6, nu), t,
                                rtol=1e-12)
 
 

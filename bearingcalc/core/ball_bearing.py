@@ -32,7 +32,6 @@ from bearingcalc.core.iso281 import (
     life_modification_factor,
     reference_viscosity,
     reliability_factor,
-    walther_temperature,  # noqa: F401 (the spec model reads it from here)
     walther_viscosity,
 )
 from bearingcalc.core.solver import Solution, Solver

@@ -8,7 +8,7 @@ import math
 import numpy as np
 from pydantic import Field
 
-from bearingcalc.core.ball_bearing import (
+from bearingcalc.core.iso281 import (
     MAX_OPERATING_VISCOSITY,
     walther_temperature,
     walther_viscosity,
