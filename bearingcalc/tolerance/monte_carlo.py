@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Callable, Sequence
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -109,17 +109,7 @@ def monte_carlo(study: Study, samples: int, seed: int = 0, sampler: str = "sobol
             start += size
         return accumulators, passed, infeasible
 
-    pool = ThreadPoolExecutor(max_workers=workers)
-    try:
-        futures = [pool.submit(work, bounds[w], bounds[w + 1]) for w in range(workers)]
-        outcomes = [future.result() for future in futures]
-    except BaseException:
-        # Ctrl-C: the workers stop at their next chunk (a fraction of a second)
-        # instead of running the study to its end.
-        stop_now.set()
-        raise
-    finally:
-        pool.shutdown(wait=False, cancel_futures=True)
+    outcomes = _run_workers(work, bounds, stop_now)
     merged = template
     passed = sum(outcome[1] for outcome in outcomes)
     infeasible = sum(outcome[2] for outcome in outcomes)
@@ -132,6 +122,41 @@ def monte_carlo(study: Study, samples: int, seed: int = 0, sampler: str = "sobol
             stats[key]["cpk"] = _cpk(stats[key], limit)
     histograms = {key: merged[key].histogram() for key in keys}
     return MonteCarloResult(samples, seed, sampler, stats, histograms, passed, infeasible)
+
+
+def _run_workers(work: Callable[[int, int], Any], bounds: list[int],
+                 stop_now: threading.Event) -> list[Any]:
+    """``work(bounds[w], bounds[w + 1])`` for each worker w on a thread of its own; their
+    outcomes in order.
+
+    The threads are daemons and the wait for them wakes every tenth of a second: on
+    Ctrl-C the workers are told to stop at their next chunk and the run ends at once,
+    never held at exit by a worker still in its chunk (a pool's threads are joined then).
+    """
+    outcomes: list[Any] = [None] * (len(bounds) - 1)
+    failures: list[BaseException] = []
+
+    def run(w: int) -> None:
+        try:
+            outcomes[w] = work(bounds[w], bounds[w + 1])
+        except BaseException as exc:  # handed to the main thread, which raises it
+            failures.append(exc)
+            stop_now.set()
+
+    threads = [threading.Thread(target=run, args=(w,), daemon=True)
+               for w in range(len(bounds) - 1)]
+    try:
+        for thread in threads:
+            thread.start()
+        for thread in threads:
+            while thread.is_alive():
+                thread.join(0.1)
+    except BaseException:
+        stop_now.set()
+        raise
+    if failures:
+        raise failures[0]
+    return outcomes
 
 
 def smallest_cpk(study: Study, mc: MonteCarloResult) -> float | None:
