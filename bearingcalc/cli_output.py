@@ -148,6 +148,19 @@ def print_error(error: Exception) -> None:
     print("\n".join(printable(line) for line in lines), file=sys.stderr)
 
 
+def _interrupted(exc: BaseException) -> bool:
+    """Whether Ctrl-C caused ``exc``: a KeyboardInterrupt, or an error raised while one
+    was handled (a library imported during Ctrl-C may turn it into an ImportError)."""
+    seen: set[int] = set()
+    current: BaseException | None = exc
+    while current is not None and id(current) not in seen:
+        if isinstance(current, KeyboardInterrupt):
+            return True
+        seen.add(id(current))
+        current = current.__cause__ or current.__context__
+    return False
+
+
 class errors_as_exit:
     """Turns any unexpected exception into one line on stderr and exit status 2; an
     interruption and a closed output pipe get the shell's statuses for them."""
@@ -162,7 +175,7 @@ class errors_as_exit:
                  tb: object) -> bool:
         if exc is None or isinstance(exc, (typer.Exit, typer.Abort, SystemExit)):
             return False
-        if isinstance(exc, KeyboardInterrupt):
+        if _interrupted(exc):
             print("interrupted", file=sys.stderr)
             raise typer.Exit(EXIT_INTERRUPTED)
         if isinstance(exc, BrokenPipeError):

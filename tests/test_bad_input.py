@@ -492,3 +492,19 @@ def test_grammar_of_counts_and_articles(cli, spec_file):
     assert "1 spec:" in run.out
     run = cli("solve", spec_file(TB.replace("30 deg", "true")))
     assert "expected an angle" in run.err
+
+
+def test_an_error_raised_while_ctrl_c_is_handled_is_an_interruption(capsys):
+    """A library imported while Ctrl-C arrives may turn it into an ImportError of its
+    own: still exit 130 and 'interrupted', never an internal error."""
+    import typer
+
+    from bearingcalc.cli_output import errors_as_exit
+
+    with pytest.raises(typer.Exit) as exit_info, errors_as_exit(debug=False):
+        try:
+            raise KeyboardInterrupt
+        except KeyboardInterrupt:
+            raise ImportError("numpy._core.multiarray failed to import") from None
+    assert exit_info.value.exit_code == 130
+    assert capsys.readouterr().err == "interrupted\n"
