@@ -203,22 +203,29 @@ def schema(
 def new(
     kind: Annotated[str | None, typer.Argument(help="The kind of spec.", show_default=False)
                     ] = None,
+    bearing_type: Annotated[str | None, typer.Option(
+        "--type", help="A template of this type, where the kind has several.",
+        show_default=False)] = None,
     list_kinds: Annotated[bool, typer.Option("--list", help="List the kinds.")] = False,
 ) -> None:
     """Print a commented template spec of KIND, ready for 'bearingcalc check'."""
-    from importlib import resources
-
     from bearingcalc.kinds import KINDS
+    from bearingcalc.templates import template_text, template_types
 
     if list_kinds or kind is None:
         text = "".join(f"{name:16} {entry.summary}\n" for name, entry in KINDS.items())
-    elif kind in KINDS:
-        text = resources.files("bearingcalc.templates").joinpath(f"{kind}.yaml").read_text(
-            "utf-8")
-    else:
+    elif kind not in KINDS:
         print(f"error: unknown kind {kind!r}{did_you_mean(kind, KINDS)}; known kinds: "
               f"{', '.join(KINDS)}", file=sys.stderr)
         raise typer.Exit(EXIT_INVALID)
+    elif bearing_type is not None and bearing_type not in template_types(kind):
+        types = template_types(kind)
+        print(f"error: --type: no {kind} template of type {bearing_type!r}"
+              f"{did_you_mean(bearing_type, types)}; templates: {', '.join(types)}",
+              file=sys.stderr)
+        raise typer.Exit(EXIT_INVALID)
+    else:
+        text = template_text(kind, bearing_type)
     with errors_as_exit(debug=False):
         write_stdout(lambda stream: stream.write(text))
     if kind is None and not list_kinds:

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
+from bearingcalc.core.common import STATUS_DTYPE
 from bearingcalc.core.solver import Members, Solution, Solver
 
 if TYPE_CHECKING:
@@ -24,8 +25,9 @@ if TYPE_CHECKING:
 
 #: Status of a design whose inputs are valid but whose results overflow double precision.
 OUT_OF_RANGE = 99
-#: The first status code of a composite's members (the composite's own come before).
-MEMBER_CODES_FROM = 30
+#: The first status code of a composite's members (the composite's own and the last
+#: guard come before).
+MEMBER_CODES_FROM = 100
 OUT_OF_RANGE_REASON = ("", "the design's numbers are out of the range of double precision; "
                        "check the magnitudes of the inputs")
 
@@ -91,7 +93,7 @@ class Kind:
                 if key in self.unbounded:
                     finite |= values == np.inf
                 if not finite.all():
-                    status = np.where(finite | (status != 0), status, np.int8(OUT_OF_RANGE))
+                    status = np.where(finite | (status != 0), status, STATUS_DTYPE(OUT_OF_RANGE))
         return solution.results, status, solution.warnings
 
     def _with_member_failures(self, solution: Solution) -> NDArray:
@@ -104,7 +106,7 @@ class Kind:
         for index, name in enumerate(members.names):
             codes = solution.members.get(name)
             if codes is not None and np.any(codes):
-                offset = np.int8(self._member_offset(index))
+                offset = STATUS_DTYPE(self._member_offset(index))
                 status = np.where((status == 0) & (codes != 0), offset + codes, status)
         return status
 
@@ -146,6 +148,11 @@ class Kind:
     def display(self) -> Mapping[str, tuple[str, float]]:
         """Result key -> (table unit, factor from SI) where the SI unit alone would not do."""
         return self.solver.display
+
+    @property
+    def labels(self) -> Mapping[str, Mapping[float, str]]:
+        """Result key -> {value: text}, for results a table shows in words."""
+        return self.solver.labels
 
     @property
     def warnings(self) -> Mapping[str, str]:
@@ -205,14 +212,18 @@ KINDS: dict[str, Kind] = {
                       "contact_safety_margin"),
              governing=("apex_mismatch", "slip_margin"),
              limits={"apex_mismatch": "max_apex_mismatch"}),
-        Kind("ball-bearing", "a rolling ball bearing: ISO 281 rating life, ISO 76 static safety",
-             "bearingcalc.models.ball_bearing:BallBearingSpec",
-             "bearingcalc.core.ball_bearing",
-             margins=("life_margin", "static_safety_margin", "contact_pressure_margin",
-                      "spin_to_roll_margin"),
-             governing=("life_margin", "modified_rating_life", "static_safety_factor")),
-        Kind("bevel-drive", "a bevel pair on two shafts, each on two ball bearings: every "
-             "bearing's life", "bearingcalc.models.bevel_drive:BevelDriveSpec",
+        *(Kind(name, summary, "bearingcalc.models.ball_bearing:BallBearingSpec",
+               "bearingcalc.core.rolling_bearing",
+               margins=("life_margin", "static_safety_margin", "contact_pressure_margin",
+                        "spin_to_roll_margin"),
+               governing=("life_margin", "modified_rating_life", "static_safety_factor"))
+          for name, summary in (
+              ("rolling-bearing", "a ball or roller bearing, single or paired: ISO 281 "
+               "rating life, ISO 76 static safety"),
+              ("ball-bearing", "the same as rolling-bearing (its earlier name)"))),
+        Kind("bevel-drive", "a bevel pair on two shafts, each on two rolling bearings, "
+             "located or adjusted: every bearing's life",
+             "bearingcalc.models.bevel_drive:BevelDriveSpec",
              "bearingcalc.core.bevel_drive",
              margins=("slip_margin", "face_width_margin", "bending_safety_margin",
                       "contact_safety_margin", "life_margin", "static_safety_margin"),

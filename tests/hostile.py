@@ -36,6 +36,9 @@ CHOSEN = {
                      "radial_load=1kN:5kN:3"),
     "bevel-drive": ("bevel-drive.yaml", ("module", "face_width", "input_speed", "torque"),
                     "torque=50N*m:70N*m:3"),
+    "rolling-bearing": ("rolling-bearing-tapered-geometry.yaml",
+                        ("roller_diameter", "roller_length", "contact_angle", "pitch_diameter"),
+                        "radial_load=5kN:7kN:3"),
 }
 
 
@@ -152,7 +155,7 @@ def _physics_cases() -> dict[str, str]:
     geometry = (SPECS / "ball-bearing-geometry.yaml").read_text()
     loaded = (SPECS / "thrust-bearing-loaded.yaml").read_text()
     oil = "lubrication: {viscosity_40: 68 mm^2/s, viscosity_100: 8.7 mm^2/s, temperature: %s}"
-    return {
+    return {**_roller_cases(), **{
         # Contradictory geometry: every size valid, together impossible.
         "ball-pitch-outside-rings.yaml": _mutate(ball, "pitch_diameter", "150 mm")
         + "bore_diameter: 45 mm\noutside_diameter: 100 mm\n",
@@ -259,6 +262,45 @@ def _physics_cases() -> dict[str, str]:
                                                           "hardness: 1" + "0" * 400),
         "bevel-sizing-huge-reliability.yaml": sizing.replace("reliability: 0.99",
                                                              "reliability: 1" + "0" * 400),
+    }}
+
+
+def _roller_cases() -> dict[str, str]:
+    """Roller bearings, pairs and adjusted arrangements that their rules refuse."""
+    tapered = (SPECS / "rolling-bearing-tapered-geometry.yaml").read_text()
+    ball = (SPECS / "ball-bearing.yaml").read_text()
+    thrust = (TEMPLATES / "rolling-bearing.thrust-spherical-roller.yaml").read_text()
+    drive = (SPECS / "bevel-drive-tapered.yaml").read_text()
+    return {
+        "rolling-no-length.yaml": re.sub(r"roller_length: .*\n", "", tapered),
+        "rolling-length-zero.yaml": _mutate(tapered, "roller_length", "0 mm"),
+        "rolling-length-negative.yaml": _mutate(tapered, "roller_length", "-12 mm"),
+        "rolling-ball-count.yaml": tapered.replace("roller_count:", "ball_count:"),
+        "rolling-conformity.yaml": tapered + "inner_groove_conformity: 0.52\n",
+        "rolling-pair-deep-groove.yaml": ball + "arrangement: back-to-back\n",
+        "rolling-pair-two-rows.yaml": tapered + "arrangement: tandem\nrows: 2\n",
+        "rolling-tapered-angle-50.yaml": _mutate(tapered, "contact_angle", "50 deg"),
+        "rolling-cylindrical-angle.yaml": tapered.replace("tapered-roller",
+                                                          "cylindrical-roller"),
+        "rolling-thrust-low-axial.yaml": _mutate(thrust, "axial_load", "10 kN"),
+        "rolling-thrust-angle-30.yaml": _mutate(thrust, "contact_angle", "30 deg"),
+        "rolling-thrust-radial-90.yaml": thrust.replace("thrust-spherical-roller",
+                                                        "thrust-cylindrical-roller")
+        .replace("contact_angle: 50 deg", ""),
+        "rolling-thrust-geometry-only.yaml": re.sub(r"(dynamic|static)_load_rating: .*\n", "",
+                                                    thrust)
+        + "roller_count: 20\nroller_diameter: 12 mm\nroller_length: 14 mm\n",
+        "rolling-factors-single-on-pair.yaml": tapered + "arrangement: back-to-back\n"
+        + "load_factors: {e: 0.37, y: 1.6}\n",
+        "rolling-contact-too-wide.yaml": _mutate(tapered, "radial_load", "5e8 N"),
+        "drive-adjusted-locating.yaml": drive.replace("{position: 85 mm,",
+                                                      "{position: 85 mm, locating: true,"),
+        "drive-adjusted-deep-groove.yaml": drive.replace(
+            "pinion_arrangement: back-to-back", "pinion_arrangement: face-to-face").replace(
+            "type: tapered-roller", "type: deep-groove", 1),
+        "drive-pinion-pair.yaml": drive.replace("{position: 150 mm, type: tapered-roller,",
+                                                "{position: 150 mm, type: tapered-roller, "
+                                                "arrangement: tandem,"),
     }
 
 

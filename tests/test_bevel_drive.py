@@ -157,7 +157,7 @@ BAD = [
     (("{position: 20 mm, type: deep-groove", "{position: 20 mm, locating: true, type: "
       "deep-groove"), None, "exactly one bearing of a shaft is locating"),
     (("{position: 20 mm, type: deep-groove", "{position: 20 mm, type: thrust"), None,
-     "a thrust ball bearing takes no radial load"),
+     "a thrust bearing takes no radial load"),
     (("{position: 20 mm, type: deep-groove", "{position: 20 mm, radial_load: 1 kN, type: "
       "deep-groove"), None, "a drive's bearing takes no"),
     (("{position: 20 mm, type: deep-groove", "{position: 20 mm, speed: 10 rpm, type: "

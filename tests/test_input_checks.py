@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from bearingcalc.core import ball_bearing, bevel_drive, iso281
+from bearingcalc.core.common import STATUS_DTYPE
 from bearingcalc.kinds import KINDS
 from tests.conftest import ROOT, WARNINGS_AS_ERRORS, solve_json
 
@@ -204,14 +205,19 @@ def test_a_sweep_through_coinciding_bearings_names_the_position(cli):
 def test_drive_bearing_status_codes_never_overlap():
     """Every bearing's every failure has a code of its own, apart from the drive's."""
     drive = KINDS["bevel-drive"]
-    own, per_bearing = len(bevel_drive.STATUS_REASONS), len(ball_bearing.STATUS_REASONS)
+    own = len(bevel_drive.STATUS_REASONS)
+    per_bearing = len(bevel_drive.BEARINGS.solver.status_reasons)
     bearings = len(bevel_drive.BEARINGS.names)
     assert len(drive.status_reasons) == own + bearings * per_bearing + 1  # + the last guard
-    assert max(set(drive.status_reasons) - {99}) < 99
+    assert max(bevel_drive.STATUS_REASONS) < 99 < min(set(drive.status_reasons)
+                                                      - set(bevel_drive.STATUS_REASONS) - {99})
+    assert max(drive.status_reasons) <= np.iinfo(STATUS_DTYPE).max
     assert drive.status_reasons[drive._member_offset(3) + 1] == (
         "gear_bearings.2.ball_diameter", ball_bearing.STATUS_REASONS[1][1])
     assert drive.status_reasons[drive._member_offset(0) + 7][0] == "input_speed"
     assert drive.status_reasons[drive._member_offset(1) + 13][0] == "lubrication.temperature"
+    assert drive.status_reasons[drive._member_offset(2) + 18][0] == (
+        "gear_bearings.1.roller_diameter")
 
 
 # --- a tolerance box crossing a validity edge ---------------------------------------------

@@ -36,7 +36,8 @@ def refused(cli, spec, vary):
 @pytest.mark.parametrize(("vary", "message"), [
     ("pinion_bearings.2=100mm:200mm:5",
      "pinion_bearings.2 is an item of pinion_bearings, not a number: vary one of its fields, "
-     "like pinion_bearings.2.dynamic_load_rating; its fields are type, dynamic_load_rating, "),
+     "like pinion_bearings.2.dynamic_load_rating; its fields are type, arrangement, "
+     "dynamic_load_rating, "),
     ("pinion_bearings=100mm:200mm:5",
      "pinion_bearings is a list of 2 items, not a number: vary a field of one item, like "
      "pinion_bearings.1.dynamic_load_rating"),

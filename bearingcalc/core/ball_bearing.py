@@ -16,39 +16,38 @@ from collections.abc import Collection, Mapping
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from bearingcalc.core.arrangements import (
+    DOUBLE_ROW_PAIRS,
+    PAIRS,
+    double_row_ball_factors,
+    pair_ratings_used,
+)
 from bearingcalc.core.ball_bearing_contacts import ball_contacts
 from bearingcalc.core.ball_bearing_kinematics import ball_kinematics
-from bearingcalc.core.common import Family, balls_fit, first_failure
+from bearingcalc.core.bearing_life import rating_life
+from bearingcalc.core.common import Family, balls_fit, packed
 from bearingcalc.core.iso76 import static_equivalent_load, static_load_rating, static_safety_factor
-from bearingcalc.core.iso281 import (
-    AISO_CAP,
-    KAPPA_CAP,
-    KAPPA_MIN,
-    MAX_OPERATING_VISCOSITY,
-    basic_rating_life,
-    dynamic_load_rating,
-    equivalent_dynamic_load,
-    fatigue_load_limit,
-    life_modification_factor,
-    reference_viscosity,
-    reliability_factor,
-    walther_viscosity,
-)
+from bearingcalc.core.iso281 import dynamic_load_rating, equivalent_dynamic_load
 from bearingcalc.core.solver import Solution, Solver
 
 #: The rolling elements of every bearing this solver takes.
 FAMILY: Family = "ball"
 
 #: Bearing types, as the spec names them, and their codes in solver inputs.
-TYPES = ("deep-groove", "angular-contact", "thrust")
+TYPES = ("deep-groove", "angular-contact", "self-aligning-ball", "thrust")
+SELF_ALIGNING = "self-aligning-ball"
+#: ISO 281:2007 Table 3, self-aligning ball bearings: X for Fa/Fr > e.
+SELF_ALIGNING_X = 0.65
 
 #: Result keys, their SI unit and meaning, in report order.
 RESULTS: dict[str, tuple[str, str]] = {
-    "dynamic_load_rating": ("N", "C used for the life"),
+    "dynamic_load_rating": ("N", "C of one bearing (a pair's life uses the pair's)"),
     "dynamic_load_rating_iso": ("N", "C from the geometry (ISO 281)"),
-    "static_load_rating": ("N", "C0 used"),
+    "static_load_rating": ("N", "C0 of one bearing (a pair's s0 uses the pair's)"),
     "static_load_rating_iso": ("N", "C0 from the geometry (ISO 76)"),
-    "rating_factor": ("1", "fc (ISO 281 Table 2 or 4)"),
+    "pair_dynamic_load_rating": ("N", "C of the matched pair, used for the life"),
+    "pair_static_load_rating": ("N", "C0 of the matched pair, used for s0"),
+    "rating_factor": ("1", "fc (ISO 281 Table 2 or 4; roller bearings Table 7)"),
     "static_rating_factor": ("1", "f0 used"),
     "fatigue_load_limit": ("N", "Cu used"),
     "radial_factor": ("1", "X applied"),
@@ -97,7 +96,8 @@ RESULTS: dict[str, tuple[str, str]] = {
 #: Headings of the table, each with its results.
 GROUPS: dict[str, tuple[str, ...]] = {
     "ratings": ("dynamic_load_rating", "dynamic_load_rating_iso", "static_load_rating",
-                "static_load_rating_iso", "rating_factor", "static_rating_factor",
+                "static_load_rating_iso", "pair_dynamic_load_rating",
+                "pair_static_load_rating", "rating_factor", "static_rating_factor",
                 "fatigue_load_limit"),
     "loads": ("radial_factor", "axial_factor", "axial_ratio_limit", "equivalent_dynamic_load",
               "load_ratio"),
@@ -197,10 +197,18 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
     c = _given_or(inputs.get("dynamic_load_rating"), c_iso)
     c0 = _given_or(inputs.get("static_load_rating"), c0_iso)
     f0 = _given_or(inputs.get("static_factor"), f0_iso)
-    p = _equivalent_dynamic_load(inputs, bearing_type, alpha, fr, fa, f0, c0, out, flags,
-                                 bad_checks)
-    _life(inputs, thrust, speed, c, c0, p, out, flags, bad_checks)
-    p0 = _static(inputs, bearing_type, alpha, fr, fa, c0, f0, out)
+    arrangement = str(inputs.get("arrangement") or "single")
+    double_row = arrangement in DOUBLE_ROW_PAIRS or bearing_type == SELF_ALIGNING
+    c_used, c0_used = pair_ratings_used(arrangement, c, c0, FAMILY, out)
+    if double_row:
+        p = _double_row_load(inputs, bearing_type, alpha, fr, fa, out, bad_checks)
+    else:
+        p = _equivalent_dynamic_load(inputs, bearing_type, alpha, fr, fa, f0, c0, out,
+                                     flags, bad_checks)
+    rating_life(inputs, thrust, speed, c_used, c0_used, p, out, flags, bad_checks,
+         pair=arrangement in PAIRS)
+    out["dynamic_load_rating"] = c
+    p0 = _static(inputs, bearing_type, alpha, fr, fa, c0, c0_used, f0, double_row, out)
 
     if has_geometry:
         out.update(ball_kinematics(z, dw, dpw, alpha, inputs["inner_speed"],
@@ -214,7 +222,9 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
         fi = np.asarray(inputs["inner_groove_conformity"], dtype=float)
         fo = np.asarray(inputs["outer_groove_conformity"], dtype=float)
         bad_checks += [(10, ~(fi > 0.5)), (11, ~(fo > 0.5))]
-        contacts = ball_contacts(z, dw, dpw, alpha, thrust, p0, fi, fo,
+        sets = 2.0 if arrangement in PAIRS else 1.0
+        contacts = ball_contacts(np.asarray(z, dtype=float) * sets, dw, dpw, alpha, thrust,
+                                 p0, fi, fo,
                                  inputs["elastic_modulus"], inputs["poisson_ratio"],
                                  inputs["max_contact_pressure"])
         out.update(contacts)
@@ -222,13 +232,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
                              contacts["outer_contact_semi_major"])
         bad_checks.append((15 if thrust else 14, ~(largest <= np.asarray(dw) / 2.0)))
 
-    shape = np.broadcast_shapes(*(np.shape(v) for v in (*out.values(), *flags.values())))
-    status = first_failure(bad_checks, shape)
-    ordered = {key: np.broadcast_to(np.asarray(out[key], dtype=float), shape)
-               for key in RESULTS if key in out}
-    warnings = {key: np.broadcast_to(np.asarray(flag, dtype=bool), shape)
-                for key, flag in flags.items()}
-    return Solution(ordered, status, warnings)
+    return Solution(*packed(RESULTS, out, flags, bad_checks))
 
 
 def _ratings(z: ArrayLike, dw: ArrayLike, dpw: ArrayLike, alpha: NDArray, thrust: bool,
@@ -275,65 +279,56 @@ def _equivalent_dynamic_load(inputs: Mapping[str, ArrayLike | str | None], beari
     return p
 
 
-def _life(inputs: Mapping[str, ArrayLike | str | None], thrust: bool, speed: NDArray,
-          c: NDArray | None, c0: NDArray | None, p: NDArray, out: dict[str, ArrayLike],
-          flags: dict[str, ArrayLike], bad_checks: list[tuple[int, ArrayLike]]) -> None:
-    """L10, a1 and, with lubrication data, ν, ν1, κ, Cu and aISO (ISO 281); Lnm."""
-    revolutions_per_second = speed / (2.0 * np.pi)
-    l10 = basic_rating_life(c, p, family=FAMILY)
-    a1 = reliability_factor(inputs["reliability"])
-    a_iso = np.ones_like(l10)
-    if inputs.get("contamination_factor") is not None:
-        mean_diameter = np.asarray(inputs["mean_diameter"], dtype=float)
-        nu = inputs.get("viscosity")
-        if nu is None:
-            nu = walther_viscosity(inputs["viscosity_40"], inputs["viscosity_100"],
-                                   inputs["temperature"])
-            bad_checks.append((9, ~(np.asarray(inputs["viscosity_40"], dtype=float)
-                                    > np.asarray(inputs["viscosity_100"], dtype=float))))
-            bad_checks.append((13, ~(nu <= MAX_OPERATING_VISCOSITY)))
-        nu = np.asarray(nu, dtype=float)
-        nu1 = reference_viscosity(speed, mean_diameter)
-        kappa_raw = nu / nu1
-        bad_checks.append((5, ~(kappa_raw >= KAPPA_MIN)))
-        flags["kappa_capped"] = kappa_raw > KAPPA_CAP
-        kappa = np.minimum(kappa_raw, KAPPA_CAP)
-        cu = inputs.get("fatigue_load_limit")
-        if cu is None:
-            cu = fatigue_load_limit(c0, mean_diameter, family=FAMILY)
-        a_iso = life_modification_factor(kappa, inputs["contamination_factor"], cu, p, thrust,
-                                         family=FAMILY)
-        flags["aiso_capped"] = a_iso >= AISO_CAP
-        out.update({"fatigue_load_limit": cu, "reference_viscosity": nu1,
-                    "operating_viscosity": nu, "viscosity_ratio": kappa})
-    lnm = a1 * a_iso * l10
-    out.update({
-        "dynamic_load_rating": c, "equivalent_dynamic_load": p, "load_ratio": c / p,
-        "basic_rating_life": l10 / revolutions_per_second,
-        "basic_rating_life_revolutions": l10, "reliability_factor": a1,
-        "life_modification_factor": a_iso,
-        "modified_rating_life": lnm / revolutions_per_second,
-        "modified_rating_life_revolutions": lnm,
-    })
-    min_life = inputs.get("min_rating_life")
-    if min_life is not None:
-        out["life_margin"] = lnm / revolutions_per_second / np.asarray(min_life) - 1.0
-
-
 def _static(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str, alpha: NDArray,
-            fr: NDArray, fa: NDArray, c0: NDArray | None, f0: NDArray | None,
-            out: dict[str, ArrayLike]) -> NDArray:
-    """P0 and, where C0 is known, s0 (ISO 76)."""
-    p0 = static_equivalent_load(fr, fa, bearing_type, alpha, radial_factor=inputs.get("load_x0"),
-                                axial_factor=inputs.get("load_y0"), family=FAMILY)
-    if c0 is not None:
-        s0 = static_safety_factor(c0, p0)
+            fr: NDArray, fa: NDArray, c0: NDArray | None, c0_used: NDArray | None,
+            f0: NDArray | None, double_row: bool, out: dict[str, ArrayLike]) -> NDArray:
+    """P0 and, where C0 is known, s0 (ISO 76); a pair's s0 from its C0."""
+    if double_row:
+        y0 = inputs.get("load_y0")
+        if y0 is None:
+            y0 = 0.0 if bearing_type == SELF_ALIGNING else double_row_ball_factors(alpha).y0
+        p0 = fr + np.asarray(y0, dtype=float) * fa
+    else:
+        p0 = static_equivalent_load(fr, fa, bearing_type, alpha,
+                                    radial_factor=inputs.get("load_x0"),
+                                    axial_factor=inputs.get("load_y0"), family=FAMILY)
+    if c0_used is not None:
+        s0 = static_safety_factor(c0_used, p0)
         out.update({"static_load_rating": c0, "static_equivalent_load": p0,
                     "static_safety_factor": s0,
                     "static_safety_margin": s0 - np.asarray(inputs["min_static_safety"])})
         if f0 is not None:
             out["static_rating_factor"] = f0
     return p0
+
+
+def _double_row_load(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str,
+                     alpha: NDArray, fr: NDArray, fa: NDArray, out: dict[str, ArrayLike],
+                     bad_checks: list[tuple[int, ArrayLike]]) -> NDArray:
+    """P of a double-row bearing (ISO 281 Table 3): a back-to-back or face-to-face pair
+    of angular-contact bearings, or a self-aligning ball bearing: X = 1, Y = Y1 up to e;
+    X2, Y2 above. The catalogue's e, Y1, X, Y2 replace the table's; a self-aligning
+    bearing has X2 = 0.65 and takes its Y from the catalogue (or none: a radial load)."""
+    table = double_row_ball_factors(alpha)
+    given = inputs.get("load_e") is not None
+    if not given and bearing_type == SELF_ALIGNING:
+        table = table._replace(y_below=0.0, y_above=0.0, e=np.inf + 0.0 * alpha)
+    e = np.asarray(inputs["load_e"], dtype=float) if given else table.e
+    y_below = np.asarray(inputs["load_y1"], dtype=float) if given else table.y_below
+    x_default = SELF_ALIGNING_X if bearing_type == SELF_ALIGNING else table.x_above
+    x_above = (np.asarray(inputs["load_x"], dtype=float)
+               if inputs.get("load_x") is not None else x_default)
+    y_above = np.asarray(inputs["load_y2"], dtype=float) if given else table.y_above
+    with np.errstate(divide="ignore", invalid="ignore"):
+        combined = (fa > 0) & ~(fa / fr <= e)
+    x = np.where(combined, x_above, 1.0)
+    y = np.where(combined, y_above, y_below)
+    p = x * fr + y * fa
+    bad_checks.append((12, ~(p > 0) & ((fr > 0) | (fa > 0))))
+    out.update(radial_factor=x, axial_factor=y)
+    if given or bearing_type != SELF_ALIGNING:
+        out["axial_ratio_limit"] = e + 0.0 * p
+    return p
 
 
 def _given_or(given: ArrayLike | None, computed: NDArray | None) -> NDArray | None:

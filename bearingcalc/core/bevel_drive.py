@@ -1,9 +1,11 @@
-"""A bevel drive: a bevel pair on two shafts, each on two ball bearings, from the input
-torque to every bearing's life (``docs/physics.md`` §9).
+"""A bevel drive: a bevel pair on two shafts, each on two rolling bearings, from the
+input torque to every bearing's life (``docs/physics.md`` §9).
 
 The pair is solved by :mod:`bearingcalc.core.bevel_gears` and each bearing by
-:mod:`bearingcalc.core.ball_bearing`; this module adds the statics of each shaft and
-the system life. Inputs are SI floats or broadcasting arrays.
+:mod:`bearingcalc.core.rolling_bearing`; this module adds the statics of each shaft,
+the axial loads of a locating bearing or of two bearings adjusted against each other
+(:mod:`bearingcalc.core.arrangements`), and the system life. Inputs are SI floats or
+broadcasting arrays.
 """
 
 from __future__ import annotations
@@ -14,16 +16,33 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core import ball_bearing, bevel_gears
+from bearingcalc.core import bevel_gears, rolling_bearing
+from bearingcalc.core.arrangements import (
+    adjusted_axial_loads,
+    induced_axial_factor_ball,
+    induced_axial_factor_tapered,
+    supports_positive,
+)
 from bearingcalc.core.common import broadcast_all, first_failure
+from bearingcalc.core.roller_bearing import TYPES as ROLLER_TYPES
 from bearingcalc.core.solver import Members, Solution, Solver
 
-#: The Weibull slope of ball bearings in bearing makers' system-life formula.
+#: The Weibull slope of bearing makers' system-life formula: 10/9 when every bearing is a
+#: ball bearing, 9/8 when any is a roller bearing.
 WEIBULL_SLOPE = 10.0 / 9.0
+ROLLER_WEIBULL_SLOPE = 9.0 / 8.0
+#: How a shaft's two bearings share its axial force.
+ARRANGEMENTS = ("locating-floating", "back-to-back", "face-to-face")
+#: The load cases of an adjusted pair, as the table shows them.
+LOAD_CASES = {1.0: "1a", 2.0: "1b", 3.0: "1c", 4.0: "2a", 5.0: "2b", 6.0: "2c"}
 SHAFTS = ("pinion", "gear")
 BEARING_RESULTS: dict[str, tuple[str, str]] = {
     "radial_load": ("N", "radial load from the shaft's statics"),
-    "axial_load": ("N", "axial load (the locating bearing takes the gear's whole thrust)"),
+    "axial_load": ("N", "axial load (a locating bearing takes the gear's whole thrust; an "
+                        "adjusted pair shares it by the load cases)"),
+    "induced_axial_load": ("N", "R·Fr, the axial force the radial load induces in an "
+                                "adjusted bearing"),
+    "load_case": ("1", "the adjusted pair's load case, 1 to 6 (1a to 2c)"),
     "equivalent_dynamic_load": ("N", "P (ISO 281)"),
     "basic_rating_life": ("s", "L10 in time"),
     "modified_rating_life": ("s", "Lnm in time"),
@@ -41,8 +60,10 @@ RESULTS: dict[str, tuple[str, str]] = {
     "gear_speed": ("rad/s", "the gear shaft's speed, input_speed·z1/z2"),
     **{f"{name}_{key}": value for name in _bearing_names()
        for key, value in BEARING_RESULTS.items()},
-    "system_basic_rating_life": ("s", "(Σ L10ᵢ^(−e))^(−1/e), e = 10/9"),
-    "system_modified_rating_life": ("s", "(Σ Lnmᵢ^(−e))^(−1/e), e = 10/9"),
+    "system_basic_rating_life": ("s", "(Σ L10ᵢ^(−e))^(−1/e), e = 10/9 (9/8 with a roller "
+                                      "bearing)"),
+    "system_modified_rating_life": ("s", "(Σ Lnmᵢ^(−e))^(−1/e), e = 10/9 (9/8 with a "
+                                         "roller bearing)"),
     "life_margin": ("1", "system_modified_rating_life / min_rating_life − 1"),
     "static_safety_margin": ("1", "the smallest s0 − min_static_safety"),
 }
@@ -72,11 +93,11 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
     **{code: (f"{shaft}_bearings.2.position", "two bearings at the same position cannot "
               "carry the shaft's moment") for shaft, code in COINCIDING_BEARINGS.items()},
 }
-#: The bearings, by their names in the spec, each solved as a ``kind: ball-bearing``.
+#: The bearings, by their names in the spec, each solved as a ``kind: rolling-bearing``.
 #: Their loads and speeds come from the drive: a bearing refused for its load or speed
 #: names the drive's torque or input_speed, and one refused for its lubrication the
 #: drive's lubrication.
-BEARINGS = Members(ball_bearing.SOLVER,
+BEARINGS = Members(rolling_bearing.SOLVER,
                    tuple(f"{shaft}_bearings.{i}" for shaft in SHAFTS for i in (1, 2)),
                    {"lubrication": "lubrication", "speed": "input_speed",
                     "radial_load": "torque", "axial_load": "torque"})
@@ -117,14 +138,48 @@ def shaft_reactions(positions: tuple[ArrayLike, ArrayLike], mesh_position: Array
     return np.hypot(wr - r2y, wt - r2z), np.hypot(r2y, r2z)
 
 
-def system_life(lives: list[NDArray]) -> NDArray:
-    r"""L_sys = (Σ L_i^(−e))^(−1/e) with e = 10/9, the ball bearings' Weibull slope.
+def system_life(lives: list[NDArray], slope: float = WEIBULL_SLOPE) -> NDArray:
+    r"""L_sys = (Σ L_i^(−e))^(−1/e), e the Weibull slope: 10/9 for ball bearings, 9/8
+    when any bearing is a roller bearing.
 
     Source: Lundberg & Palmgren; the system-life formula of bearing makers' catalogues
     (e.g. SKF, *Rolling bearings*, "System life").
     """
     stacked = np.stack(np.broadcast_arrays(*(np.asarray(life, dtype=float) for life in lives)))
-    return np.sum(stacked ** -WEIBULL_SLOPE, axis=0) ** (-1.0 / WEIBULL_SLOPE)
+    return np.sum(stacked ** -slope, axis=0) ** (-1.0 / slope)
+
+
+def induced_axial_factor(bearing: Mapping[str, Any]) -> NDArray:
+    """R of one bearing of an adjusted pair: the spec's ``induced_axial_factor``, else
+    0.5/Y for a tapered roller bearing (the catalogue's Y above e, or ISO's 0.4·cotα) and
+    the makers' table against α for an angular-contact ball bearing."""
+    if bearing.get("induced_axial_factor") is not None:
+        return np.asarray(bearing["induced_axial_factor"], dtype=float)
+    alpha = np.asarray(bearing["contact_angle"], dtype=float)
+    if bearing["bearing_type"] == "tapered-roller":
+        y = bearing.get("load_y")
+        return induced_axial_factor_tapered(0.4 / np.tan(alpha) if y is None else y)
+    return induced_axial_factor_ball(alpha)
+
+
+def shaft_axial_loads(arrangement: str, bearings: list[Mapping[str, Any]],
+                      radial: tuple[NDArray, NDArray], axial_force: NDArray
+                      ) -> tuple[list[NDArray], dict[str, list[NDArray]]]:
+    """Each bearing's axial load, and for an adjusted pair the induced forces and the
+    load case of each. Locating-floating: the locating bearing takes the whole force."""
+    if arrangement == "locating-floating":
+        return [axial_force if bearing["locating"] == "locating"
+                else np.zeros_like(axial_force) for bearing in bearings], {}
+    factors = [induced_axial_factor(bearing) for bearing in bearings]
+    positions = [np.asarray(bearing["position"], dtype=float) for bearing in bearings]
+    # Cases 1: Ka acts in the direction the second bearing supports.
+    second_positive = supports_positive(positions[1], positions[0], arrangement)
+    loads = adjusted_axial_loads(radial[0], radial[1], factors[0], factors[1], axial_force,
+                                 second_positive == (axial_force >= 0))
+    case = loads.case
+    return [loads.first, loads.second], {
+        "induced_axial_load": [factors[0] * radial[0], factors[1] * radial[1]],
+        "load_case": [case, case]}
 
 
 def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -> Solution:
@@ -132,7 +187,8 @@ def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -
     system's (see :meth:`bearingcalc.models.bevel_drive.BevelDriveSpec.solver_inputs`).
 
     ``inputs["shafts"]`` maps a shaft to its two bearings' inputs: ``position``,
-    ``locating`` and a ball bearing's inputs without loads and speeds. Each bearing's
+    ``locating``, ``induced_axial_factor`` and a rolling bearing's inputs without loads
+    and speeds; ``inputs["arrangements"]`` maps a shaft to its arrangement. Each bearing's
     status codes are reported by its name in the spec (``pinion_bearings.2``).
     """
     pair = bevel_gears.evaluate(inputs)
@@ -146,6 +202,7 @@ def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -
     modified, basic, safety, names = [], [], [], []
     checks: list[tuple[int, NDArray]] = []
     members: dict[str, NDArray] = {}
+    rollers = False
     for shaft, speed, delta, gear in (
             ("pinion", input_speed, pair.results["gear_a_pitch_angle"], "a"),
             ("gear", input_speed * ratio, pair.results["gear_b_pitch_angle"], "b")):
@@ -160,16 +217,20 @@ def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -
             positions, mean_cone * np.cos(delta), mean_cone * np.sin(delta),
             pair.results["tangential_force"], pair.results[f"gear_{gear}_radial_force"],
             axial_force)
-        for i, (bearing, radial) in enumerate(zip(bearings, loads, strict=True), 1):
+        axial_loads, adjusted = shaft_axial_loads(inputs["arrangements"][shaft], bearings,
+                                                  loads, axial_force)
+        for i, (bearing, radial, axial) in enumerate(zip(bearings, loads, axial_loads,
+                                                         strict=True), 1):
             name = f"{shaft}_bearing_{i}"
-            axial = axial_force if bearing["locating"] == "locating" else np.zeros_like(
-                axial_force)
-            solved = ball_bearing.evaluate({
+            solved = rolling_bearing.evaluate({
                 **bearing, "radial_load": radial, "axial_load": axial, "speed": speed,
                 "inner_speed": speed, "outer_speed": 0.0, "min_rating_life": None})
             members[f"{shaft}_bearings.{i}"] = solved.status
+            rollers |= bearing["bearing_type"] in ROLLER_TYPES
             out[f"{name}_radial_load"] = radial
             out[f"{name}_axial_load"] = axial
+            for key, values in adjusted.items():
+                out[f"{name}_{key}"] = values[i - 1]
             for key in ("equivalent_dynamic_load", "basic_rating_life", "modified_rating_life",
                         "static_safety_factor"):
                 if key in solved.results:
@@ -179,8 +240,9 @@ def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -
             names.append(name)
             if "static_safety_factor" in solved.results:
                 safety.append(solved.results["static_safety_factor"])
-    out["system_basic_rating_life"] = system_life(basic)
-    out["system_modified_rating_life"] = system_life(modified)
+    slope = ROLLER_WEIBULL_SLOPE if rollers else WEIBULL_SLOPE
+    out["system_basic_rating_life"] = system_life(basic, slope)
+    out["system_modified_rating_life"] = system_life(modified, slope)
     if inputs.get("min_rating_life") is not None:
         out["life_margin"] = out["system_modified_rating_life"] / np.asarray(
             inputs["min_rating_life"], dtype=float) - 1.0
@@ -202,4 +264,5 @@ def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS, MATRICES,
-                members=BEARINGS)
+                members=BEARINGS,
+                labels={f"{name}_load_case": LOAD_CASES for name in _bearing_names()})

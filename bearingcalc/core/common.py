@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from typing import Literal
 
 import numpy as np
@@ -13,6 +13,9 @@ from numpy.typing import ArrayLike, NDArray
 MM = 1e3
 NEWTON = 1.0
 RPM = 60.0 / (2.0 * np.pi)
+
+#: Status codes per design: a composite's members need codes past 127.
+STATUS_DTYPE = np.int16
 
 #: Relative slack of the balls-fit test, a few ulps of π.
 FIT_SLACK = 8 * np.finfo(float).eps
@@ -30,10 +33,10 @@ def first_failure(checks: Sequence[tuple[int, ArrayLike]], shape: tuple[int, ...
     ``checks`` holds (code, failed) pairs in the order they should be reported;
     ``failed`` arrays broadcast to ``shape``.
     """
-    status = np.zeros(shape, dtype=np.int8)
+    status = np.zeros(shape, dtype=STATUS_DTYPE)
     for code, failed in reversed(checks):
         if np.any(failed):   # usually none fails: no selection pass then
-            status = np.where(failed, np.int8(code), status)
+            status = np.where(failed, STATUS_DTYPE(code), status)
     return status
 
 
@@ -42,6 +45,20 @@ def broadcast_all(results: dict[str, ArrayLike]) -> dict[str, NDArray]:
     shape = np.broadcast_shapes(*(np.shape(value) for value in results.values()))
     return {key: np.broadcast_to(np.asarray(value, dtype=float), shape)
             for key, value in results.items()}
+
+
+def packed(order: Iterable[str], results: Mapping[str, ArrayLike],
+           flags: Mapping[str, ArrayLike], checks: Sequence[tuple[int, ArrayLike]]
+           ) -> tuple[dict[str, NDArray], NDArray, dict[str, NDArray]]:
+    """A solver's results (in ``order``, those it has), status codes (see
+    :func:`first_failure`) and warning flags, all broadcast to one shape."""
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (*results.values(), *flags.values())))
+    status = first_failure(checks, shape)
+    ordered = {key: np.broadcast_to(np.asarray(results[key], dtype=float), shape)
+               for key in order if key in results}
+    warnings = {key: np.broadcast_to(np.asarray(flag, dtype=bool), shape)
+                for key, flag in flags.items()}
+    return ordered, status, warnings
 
 
 def nan_where(bad: NDArray, value: ArrayLike) -> NDArray:
@@ -76,19 +93,24 @@ def table_lookup(x: ArrayLike, xs: NDArray, ys: NDArray) -> NDArray:
     return np.where(inside, np.interp(x, xs, ys), np.nan)
 
 
+def known_family(family: str) -> None:
+    """Refuse a rolling-element family that is neither "ball" nor "roller" (ValueError)."""
+    if family not in FAMILIES:
+        raise ValueError(f"unknown rolling-element family {family!r}: expected one of "
+                         f"{', '.join(FAMILIES)}")
+
+
 def ball_family_only(family: str, formula: str) -> None:
     """Refuse a rolling-element family whose form of ``formula`` is not implemented.
 
     Raises
     ------
-    NotImplementedError : for "roller": the standards' roller-bearing formulas are not
-        implemented.
+    NotImplementedError : for "roller": the roller-bearing form of the formula, which
+        needs the roller's length and the number of rows, has a function of its own.
     ValueError : for a family that is neither "ball" nor "roller".
     """
-    if family == "ball":
-        return
+    known_family(family)
     if family == "roller":
-        raise NotImplementedError(f"{formula} is implemented for ball bearings only; the "
-                                  "roller-bearing form of the standard is not")
-    raise ValueError(f"unknown rolling-element family {family!r}: expected one of "
-                     f"{', '.join(FAMILIES)}")
+        raise NotImplementedError(f"{formula} is implemented here for ball bearings only; "
+                                  "the roller-bearing form is in "
+                                  "bearingcalc.core.roller_ratings")

@@ -8,8 +8,9 @@ numpy arrays, which broadcast, and returns arrays; inside, the standard's formul
 written in its own units (N, mm, r/min, mm²/s) and converted at the edge. See
 ``docs/physics.md`` §5 for the relations, their ranges and the sources.
 
-The standard gives ball and roller bearings formulas of their own. Functions whose
-formula depends on the rolling elements take a ``family``; only "ball" is implemented.
+The standard gives ball and roller bearings formulas of their own. The life, Cu and
+aISO take a ``family``; the roller bearings' C and P, which need the roller's length and
+the number of rows, are in :mod:`bearingcalc.core.roller_ratings`.
 """
 
 from __future__ import annotations
@@ -19,7 +20,15 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core.common import MM, NEWTON, RPM, Family, ball_family_only, table_lookup
+from bearingcalc.core.common import (
+    MM,
+    NEWTON,
+    RPM,
+    Family,
+    ball_family_only,
+    known_family,
+    table_lookup,
+)
 
 #: ISO 281:2007 bm, the rating factor for contemporary, normally used material. [1]
 MATERIAL_FACTOR = 1.3
@@ -52,6 +61,11 @@ ANGULAR_Y = np.array([1.00, 0.87, 0.76, 0.66, 0.57, 0.50])
 ANGULAR_E = np.array([0.57, 0.68, 0.80, 0.95, 1.14, 1.34])
 #: ISO 281:2007 aISO for radial ball bearings: (κ from, A, b) of each viscosity band.
 AISO_BANDS = ((0.1, 2.2649, 0.054381), (0.4, 1.9987, 0.19087), (1.0, 1.9987, 0.071739))
+#: ISO 281:2007 aISO for radial roller bearings: (κ from, A, b) of each viscosity band.
+ROLLER_AISO_BANDS = ((0.1, 1.3993, 0.054381), (0.4, 1.2348, 0.19087),
+                     (1.0, 1.2348, 0.071739))
+#: The load-life exponent p of L10 = (C/P)^p.
+LIFE_EXPONENT = {"ball": 3.0, "roller": 10.0 / 3.0}
 AISO_CAP = 50.0
 KAPPA_CAP = 4.0
 KAPPA_MIN = 0.1
@@ -184,27 +198,30 @@ def equivalent_dynamic_load(radial_load: ArrayLike, axial_load: ArrayLike,
 
 def basic_rating_life(dynamic_load_rating: ArrayLike, equivalent_load: ArrayLike, *,
                       family: Family = "ball") -> NDArray:
-    r"""Basic rating life L10 of a ball bearing, in revolutions.
+    r"""Basic rating life L10 of a ball or roller bearing, in revolutions.
 
-    .. math:: L_{10} = \left(\frac{C}{P}\right)^3 \cdot 10^6
+    .. math:: L_{10} = \left(\frac{C}{P}\right)^p \cdot 10^6, \qquad p = 3 \ (\text{ball}),
+              \ 10/3 \ (\text{roller})
 
     Parameters
     ----------
     dynamic_load_rating, equivalent_load : C, P. [N]
-    family : the rolling elements; "ball" only (roller bearings: exponent 10/3).
+    family : the rolling elements, "ball" or "roller".
 
     Returns
     -------
     L10. [1] (revolutions)
 
-    Source: ISO 281:2007, the basic rating life; docs/physics.md §5.
+    Source: ISO 281:2007, 7.1 (eqs. 14 and 15); docs/physics.md §5.
 
     >>> round(float(basic_rating_life(55300.0, 10000.0)) / 1e6, 1)
     169.1
+    >>> round(float(basic_rating_life(2.0, 1.0, family="roller")) / 1e6, 4)
+    10.0794
     """
-    ball_family_only(family, "ISO 281's basic rating life L10")
+    known_family(family)
     return (np.asarray(dynamic_load_rating, dtype=float)
-            / np.asarray(equivalent_load, dtype=float)) ** 3 * 1e6
+            / np.asarray(equivalent_load, dtype=float)) ** LIFE_EXPONENT[family] * 1e6
 
 
 def reliability_factor(reliability: ArrayLike) -> NDArray:
@@ -297,41 +314,52 @@ def _walther_line(viscosity_40: ArrayLike, viscosity_100: ArrayLike) -> tuple[ND
 
 def fatigue_load_limit(static_load_rating: ArrayLike, mean_diameter: ArrayLike, *,
                        family: Family = "ball") -> NDArray:
-    r"""Fatigue load limit Cu of a ball bearing estimated from its static load rating.
+    r"""Fatigue load limit Cu of a bearing estimated from its static load rating.
 
-    .. math:: C_u = \frac{C_0}{22} \quad (d_m \le 100\,mm), \qquad
-              \frac{C_0}{22}\left(\frac{100}{d_m}\right)^{0.5} \quad (d_m > 100\,mm)
+    .. math:: C_u = \frac{C_0}{22}\left(\frac{100}{d_m}\right)^{0.5} \ (\text{ball}),
+              \qquad \frac{C_0}{8.2}\left(\frac{100}{d_m}\right)^{0.3} \ (\text{roller})
+
+    with dm in mm; the bracket is 1 up to dm = 100 mm.
 
     Parameters
     ----------
     static_load_rating : C0. [N]
     mean_diameter : dm. [m]
-    family : the rolling elements; "ball" only (roller bearings: C0/8.2).
+    family : the rolling elements, "ball" or "roller".
 
     Returns
     -------
     Cu. [N]
 
-    Source: ISO 281:2007, Annex B.3.2.2 (simplified, ball bearings).
+    Source: ISO 281:2007, Annex B.3.2.2 (simplified).
     """
-    ball_family_only(family, "ISO 281's fatigue load limit Cu")
+    known_family(family)
+    divisor, exponent = {"ball": (22.0, 0.5), "roller": (8.2, 0.3)}[family]
     dm = np.asarray(mean_diameter, dtype=float)
-    return np.asarray(static_load_rating, dtype=float) / 22.0 * np.where(
-        dm * MM <= 100.0, 1.0, (100.0 / (dm * MM)) ** 0.5)
+    return np.asarray(static_load_rating, dtype=float) / divisor * np.where(
+        dm * MM <= 100.0, 1.0, (100.0 / (dm * MM)) ** exponent)
 
 
 def life_modification_factor(viscosity_ratio: ArrayLike, contamination_factor: ArrayLike,
                              fatigue_load_limit: ArrayLike, equivalent_load: ArrayLike,
                              thrust: ArrayLike = False, *, family: Family = "ball"
                              ) -> NDArray:
-    r"""aISO for ball bearings, capped at 50.
+    r"""aISO, capped at 50.
+
+    Ball bearings (thrust: eC·Cu/(3P)):
 
     .. math:: a_{ISO} = 0.1\left[1 - \left(2.5671 - \frac{A}{\kappa^{b}}\right)^{0.83}
               \left(\frac{e_C C_u}{P}\right)^{1/3}\right]^{-9.3}
 
     with (A, b) = (2.2649, 0.054381) for 0.1 <= κ < 0.4, (1.9987, 0.19087) for
-    0.4 <= κ < 1 and (1.9987, 0.071739) for 1 <= κ <= 4; thrust ball bearings use
-    eC·Cu/(3P). A bracket <= 0 gives the cap.
+    0.4 <= κ < 1 and (1.9987, 0.071739) for 1 <= κ <= 4. Roller bearings (thrust:
+    eC·Cu/(2.5P)):
+
+    .. math:: a_{ISO} = 0.1\left[1 - \left(1.5859 - \frac{A}{\kappa^{b}}\right)
+              \left(\frac{e_C C_u}{P}\right)^{0.4}\right]^{-9.185}
+
+    with (A, b) = (1.3993, 0.054381), (1.2348, 0.19087) and (1.2348, 0.071739) in the
+    same bands. A bracket <= 0 gives the cap.
 
     Parameters
     ----------
@@ -339,21 +367,27 @@ def life_modification_factor(viscosity_ratio: ArrayLike, contamination_factor: A
     contamination_factor : eC, 0 to 1. [1]
     fatigue_load_limit : Cu. [N]
     equivalent_load : P. [N]
-    thrust : True for thrust ball bearings.
-    family : the rolling elements; "ball" only (roller bearings have coefficients and
-        exponents of their own in 9.3.2).
+    thrust : True for thrust bearings.
+    family : the rolling elements, "ball" or "roller".
 
-    Source: ISO 281:2007, 9.3.2 (eqs. 13 and 17).
+    Source: ISO 281:2007, 9.3.2 (eqs. 13 to 20).
     """
-    ball_family_only(family, "ISO 281's life modification factor aISO")
+    known_family(family)
     kappa = np.asarray(viscosity_ratio, dtype=float)
-    a_coeff = np.where(kappa < 0.4, AISO_BANDS[0][1], AISO_BANDS[1][1])
-    b_coeff = np.where(kappa < 0.4, AISO_BANDS[0][2],
-                       np.where(kappa < 1.0, AISO_BANDS[1][2], AISO_BANDS[2][2]))
+    bands = AISO_BANDS if family == "ball" else ROLLER_AISO_BANDS
+    a_coeff = np.where(kappa < 0.4, bands[0][1], bands[1][1])
+    b_coeff = np.where(kappa < 0.4, bands[0][2],
+                       np.where(kappa < 1.0, bands[1][2], bands[2][2]))
     load = np.asarray(contamination_factor, dtype=float) * np.asarray(
         fatigue_load_limit, dtype=float) / np.asarray(equivalent_load, dtype=float)
-    load = np.where(np.asarray(thrust, dtype=bool), load / 3.0, load)
-    bracket = 1.0 - (2.5671 - a_coeff / kappa ** b_coeff) ** 0.83 * load ** (1.0 / 3.0)
+    if family == "ball":
+        load = np.where(np.asarray(thrust, dtype=bool), load / 3.0, load)
+        bracket = 1.0 - (2.5671 - a_coeff / kappa ** b_coeff) ** 0.83 * load ** (1.0 / 3.0)
+        exponent = -9.3
+    else:
+        load = np.where(np.asarray(thrust, dtype=bool), load / 2.5, load)
+        bracket = 1.0 - (1.5859 - a_coeff / kappa ** b_coeff) * load ** 0.4
+        exponent = -9.185
     with np.errstate(divide="ignore", invalid="ignore"):
-        factor = 0.1 * bracket ** -9.3
+        factor = 0.1 * bracket ** exponent
     return np.where(bracket > 0, np.minimum(factor, AISO_CAP), AISO_CAP)

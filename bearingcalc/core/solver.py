@@ -69,3 +69,6 @@ class Solver:
     display: Mapping[str, tuple[str, float]] = field(default_factory=dict)
     #: the members of a composite solver, or None
     members: Members | None = None
+    #: result key -> {value: text}: results a table shows as words (a load case "1a"),
+    #: while JSON and CSV keep the number
+    labels: Mapping[str, Mapping[float, str]] = field(default_factory=dict)

@@ -25,7 +25,7 @@ from collections.abc import Collection, Mapping
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core.common import balls_fit, broadcast_all, first_failure
+from bearingcalc.core.common import STATUS_DTYPE, balls_fit, broadcast_all, first_failure
 from bearingcalc.core.solver import Solution, Solver
 from bearingcalc.core.thrust_bearing_contacts import ball_contact_loads
 from bearingcalc.core.thrust_bearing_geometry import (
@@ -277,7 +277,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
     status = thrust_bearing_status(r, theta, b, inputs.get("ball_count"), cos)
     if inputs["pitch_radius"] is not None and inputs["contact_angle"] is None:
         # θ came out NaN because no pure-rolling angle exists: say why.
-        status = np.where((status == 3) & ~(b > r), np.int8(6), status)
+        status = np.where((status == 3) & ~(b > r), STATUS_DTYPE(6), status)
     solved = any(inputs[key] is None for key in ("ball_radius", "contact_angle", "pitch_radius"))
     if wanted is not None and set(wanted) <= _RATIO_ONLY:
         rho = spin_to_roll_from(r, b, np.sin(theta), cos)
@@ -298,7 +298,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
             inputs["elastic_modulus"], inputs["poisson_ratio"], inputs["density"],
             inputs["max_contact_pressure"]))
         largest = results.pop("_largest_semi_major")
-        status = np.where((status == FEASIBLE) & ~(largest <= r), np.int8(CONTACT_TOO_LARGE),
+        status = np.where((status == FEASIBLE) & ~(largest <= r), STATUS_DTYPE(CONTACT_TOO_LARGE),
                           status)
         results = broadcast_all(results)
     return Solution(results, status)

@@ -1,5 +1,6 @@
-"""Spec of ``kind: ball-bearing``: ISO 281 rating life and ISO 76 static safety
-(``docs/physics.md`` §5)."""
+"""Spec of ``kind: rolling-bearing`` (and its alias ``kind: ball-bearing``): ISO 281
+rating life and ISO 76 static safety of ball and roller bearings (``docs/physics.md``
+§5)."""
 
 from __future__ import annotations
 
@@ -13,7 +14,13 @@ from bearingcalc.models.ball_bearing_rules import GeometryRules, OperatingRules
 from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.lubrication import Lubrication
 from bearingcalc.models.materials import ElasticMaterial
-from bearingcalc.models.plain_numbers import BallCount, Ratio, ranged_number, reliability
+from bearingcalc.models.plain_numbers import (
+    BallCount,
+    Ratio,
+    RollerCount,
+    ranged_number,
+    reliability,
+)
 from bearingcalc.models.quantities import (
     Angle,
     AngularSpeed,
@@ -24,28 +31,44 @@ from bearingcalc.models.quantities import (
     PositiveStress,
     PositiveTime,
 )
+from bearingcalc.models.roller_bearing_rules import ROLLER_TYPES, RollerRules
 
 RELIABILITY_RANGE = (0.90, 0.9995)
-#: ISO 76:2006 6.1: the contact pressure at C0 of a ball bearing. [Pa]
+#: ISO 76:2006 6.1: the contact pressure at C0 of a ball bearing and of a roller bearing.
+#: [Pa]
 ISO_76_PRESSURE = 4.2e9
+ISO_76_ROLLER_PRESSURE = 4.0e9
 #: How far a given pitch diameter may lie from (d + D)/2 before it is questioned: real
 #: bearings are not exactly symmetric, but a larger offset is usually a typing slip.
 PITCH_OFF_CENTRE = 0.05
-DEFAULT_CONTACT_ANGLE = {"deep-groove": 0.0, "thrust": math.pi / 2}
+DEFAULT_CONTACT_ANGLE = {"deep-groove": 0.0, "thrust": math.pi / 2, "thrust-ball": math.pi / 2,
+                         "self-aligning-ball": 0.0, "cylindrical-roller": 0.0,
+                         "needle-roller": 0.0, "thrust-cylindrical-roller": math.pi / 2}
+BearingType = Literal["deep-groove", "angular-contact", "self-aligning-ball", "thrust",
+                      "thrust-ball", "cylindrical-roller", "needle-roller", "tapered-roller",
+                      "spherical-roller", "thrust-cylindrical-roller",
+                      "thrust-spherical-roller", "thrust-tapered-roller"]
+Arrangement = Literal["single", "back-to-back", "face-to-face", "tandem"]
 
 
 Reliability = reliability(*RELIABILITY_RANGE, "ISO 281's range for a1")
+RollerRows = Literal[1, 2]
 
 
 UnitFraction = ranged_number(0.0, 1.0, "a fraction", "0.5")
 
 
 class LoadFactors(SpecModel):
-    """Catalogue X, Y, e (and X0, Y0) in place of ISO 281's and ISO 76's tables."""
+    """Catalogue X, Y, e (and X0, Y0) in place of ISO 281's and ISO 76's tables. A ball
+    bearing takes x, y, e; a single-row roller bearing e and y (the Y above e); a double
+    row, a back-to-back or face-to-face pair, or a self-aligning ball bearing e, y1, y2."""
 
-    x: Ratio = Field(description="radial factor X")
-    y: Ratio = Field(description="axial factor Y")
-    e: Ratio = Field(description="limit of Fa/Fr below which P = Fr")
+    x: Ratio | None = Field(None, description="radial factor X (above e)")
+    y: Ratio | None = Field(None, description="axial factor Y (above e)")
+    e: Ratio | None = Field(None, description="limit of Fa/Fr between the two sets of "
+                            "factors")
+    y1: Ratio | None = Field(None, description="double row: Y for Fa/Fr <= e (X = 1)")
+    y2: Ratio | None = Field(None, description="double row: Y for Fa/Fr > e")
     x0: Ratio | None = Field(None, description="static radial factor X0")
     y0: Ratio | None = Field(None, description="static axial factor Y0")
 
@@ -56,18 +79,20 @@ class BallBearingLimits(SpecModel):
     min_static_safety: Ratio = Field(1.0, description="smallest static safety factor s0")
     max_spin_to_roll: Ratio | None = Field(None, description="largest |spin/roll|, judged "
                                            "at the race that is not controlling")
-    max_contact_pressure: PositiveStress = Field(
-        ISO_76_PRESSURE, description="largest Hertz pressure (ISO 76: 4200 MPa for ball "
-        "bearings)")
+    max_contact_pressure: PositiveStress | None = Field(
+        None, description="largest Hertz pressure; ISO 76's by default: 4200 MPa for ball "
+        "bearings, 4000 MPa for roller bearings")
 
 
 class BearingFields(SpecModel):
-    """What a ball bearing is, apart from how it is loaded and run: its type, catalogue
-    ratings, internal geometry, load factors, grooves, material and race control.
-    ``kind: ball-bearing`` adds loads, speeds and lubrication; a drive's bearing entry
-    (``kind: bevel-drive``) adds its position on the shaft."""
+    """What a rolling bearing is, apart from how it is loaded and run: its type,
+    arrangement, catalogue ratings, internal geometry, load factors, grooves, material
+    and race control. ``kind: rolling-bearing`` adds loads, speeds and lubrication; a
+    drive's bearing entry (``kind: bevel-drive``) adds its position on the shaft."""
 
-    type: Literal["deep-groove", "angular-contact", "thrust"] = "deep-groove"
+    type: BearingType = "deep-groove"
+    arrangement: Arrangement = Field("single", description="a matched pair of single-row "
+                                     "angular-contact ball or tapered roller bearings")
     dynamic_load_rating: PositiveForce | None = Field(None, description="C, catalogue")
     static_load_rating: PositiveForce | None = Field(None, description="C0, catalogue")
     fatigue_load_limit: PositiveForce | None = Field(None, description="Cu, catalogue")
@@ -77,8 +102,20 @@ class BearingFields(SpecModel):
     pitch_diameter: PositiveLength | None = Field(None, description="Dpw")
     bore_diameter: PositiveLength | None = Field(None, description="d (for dm only)")
     outside_diameter: PositiveLength | None = Field(None, description="D (for dm only)")
+    roller_count: RollerCount | None = Field(None, description="Z, per row")
+    roller_diameter: PositiveLength | None = Field(None, description="Dwe (a tapered "
+                                                   "roller's mean diameter)")
+    roller_length: PositiveLength | None = Field(None, description="Lwe, the effective "
+                                                 "contact length")
+    rows: RollerRows = Field(1, description="i, the rows of rollers")
+    roller_profile_radius: PositiveLength | None = Field(
+        None, description="a spherical roller's crown radius")
+    raceway_radius: PositiveLength | None = Field(
+        None, description="a spherical roller bearing's raceway radius across the rolling "
+        "direction")
     contact_angle: Angle | None = Field(None, description="α; 0 deg for deep-groove, "
-                                        "90 deg for thrust by default")
+                                        "cylindrical and needle, 90 deg for thrust by "
+                                        "default")
     race_control: Literal["outer", "inner"] = Field(
         "outer", description="the race at which the ball does not spin (Jones)")
     load_factors: LoadFactors | None = None
@@ -89,10 +126,10 @@ class BearingFields(SpecModel):
     material: ElasticMaterial = ElasticMaterial()
 
 
-class BallBearingSpec(OperatingRules, GeometryRules, BearingFields, Spec):
-    """A rolling ball bearing sized by ISO 281 (life) and ISO 76 (static safety)."""
+class BallBearingSpec(RollerRules, OperatingRules, GeometryRules, BearingFields, Spec):
+    """A rolling bearing sized by ISO 281 (life) and ISO 76 (static safety)."""
 
-    kind: Literal["ball-bearing"]
+    kind: Literal["rolling-bearing", "ball-bearing"]
     name: str | None = None
     radial_load: Force = Field(0.0, description="Fr")
     axial_load: Force = Field(0.0, description="Fa")
@@ -129,8 +166,17 @@ class BallBearingSpec(OperatingRules, GeometryRules, BearingFields, Spec):
                 0.0 if self.outer_speed is None else self.outer_speed)
 
     @property
+    def rollers(self) -> bool:
+        """Whether the rolling elements are rollers."""
+        return self.type in ROLLER_TYPES
+
+    @property
     def has_geometry(self) -> bool:
-        """Ball count, ball diameter and a pitch diameter (given, or the rings' mean)."""
+        """The rolling elements' count and diameter (and a roller's length) and a pitch
+        diameter (given, or the rings' mean)."""
+        if self.rollers:
+            return None not in (self.roller_count, self.roller_diameter, self.roller_length,
+                                self.mean_diameter)
         return None not in (self.ball_count, self.ball_diameter, self.mean_diameter)
 
     @property
@@ -153,9 +199,10 @@ class BallBearingSpec(OperatingRules, GeometryRules, BearingFields, Spec):
         if self.lubrication is None:
             notes.append("no lubrication given: aISO = 1, so the modified life ignores "
                          "lubrication and contamination")
-        if self.type == "thrust" and self.static_load_rating is None:
+        if self.type in ("thrust", "thrust-ball") and self.static_load_rating is None:
             notes.append("no static_load_rating: ISO 76's thrust f0 is not implemented, so "
                          "the static results are left out")
+        notes += self.roller_notes()
         envelope = self._envelope_mm()
         if envelope is not None:
             middle = (envelope[0] + envelope[1]) / 2
@@ -174,13 +221,15 @@ class BallBearingSpec(OperatingRules, GeometryRules, BearingFields, Spec):
         lubrication = self.lubrication
         factors = self.load_factors
         return {
-            "bearing_type": self.type,
+            "bearing_type": "thrust" if self.type == "thrust-ball" else self.type,
+            "arrangement": self.arrangement,
             "dynamic_load_rating": self.dynamic_load_rating,
             "static_load_rating": self.static_load_rating,
             "fatigue_load_limit": self.fatigue_load_limit,
             "static_factor": self.static_factor,
             "ball_count": self.ball_count,
             "ball_diameter": self.ball_diameter,
+            **self._roller_inputs(),
             "pitch_diameter": self.mean_diameter,
             "mean_diameter": self.mean_diameter,
             "contact_angle": self.angle,
@@ -200,6 +249,8 @@ class BallBearingSpec(OperatingRules, GeometryRules, BearingFields, Spec):
             "load_x": factors.x if factors else None,
             "load_y": factors.y if factors else None,
             "load_e": factors.e if factors else None,
+            "load_y1": factors.y1 if factors else None,
+            "load_y2": factors.y2 if factors else None,
             "load_x0": factors.x0 if factors else None,
             "load_y0": factors.y0 if factors else None,
             "min_rating_life": self.limits.min_rating_life,
@@ -208,5 +259,23 @@ class BallBearingSpec(OperatingRules, GeometryRules, BearingFields, Spec):
             "outer_groove_conformity": self.outer_groove_conformity,
             "elastic_modulus": self.material.elastic_modulus,
             "poisson_ratio": self.material.poisson_ratio,
-            "max_contact_pressure": self.limits.max_contact_pressure,
+            "max_contact_pressure": self.contact_pressure_limit,
         }
+
+    @property
+    def contact_pressure_limit(self) -> float:
+        """The limit given, else ISO 76's pressure at C0 for the rolling elements. [Pa]"""
+        if self.limits.max_contact_pressure is not None:
+            return self.limits.max_contact_pressure
+        return ISO_76_ROLLER_PRESSURE if self.rollers else ISO_76_PRESSURE
+
+    def _roller_inputs(self) -> dict[str, Any]:
+        """The roller bearing's own solver inputs; none for a ball bearing, whose results
+        do not depend on them."""
+        if not self.rollers:
+            return {}
+        spherical = self.type in ("spherical-roller", "thrust-spherical-roller")
+        return {"roller_count": self.roller_count, "roller_diameter": self.roller_diameter,
+                "roller_length": self.roller_length, "rows": float(self.rows),
+                "roller_profile_radius": self.roller_profile_radius if spherical else None,
+                "raceway_radius": self.raceway_radius if spherical else None}

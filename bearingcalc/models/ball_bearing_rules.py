@@ -10,6 +10,10 @@ from typing import TYPE_CHECKING, Any
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.rules import rule
 
+#: Bearing types whose rolling elements are balls; thrust ball bearings by both names.
+BALL_TYPES = ("deep-groove", "angular-contact", "self-aligning-ball", "thrust", "thrust-ball")
+THRUST_BALL = ("thrust", "thrust-ball")
+
 
 class _ReadsBallBearing:
     """What the rules read of a ball bearing's spec model."""
@@ -74,7 +78,7 @@ class OperatingRules(_ReadsBallBearing):
         if self.radial_load == 0 and self.axial_load == 0:
             return SpecFieldError("radial_load", "both loads are zero, so the life is "
                                   "undefined: give radial_load or axial_load, like 10 kN")
-        if self.type == "thrust" and self.radial_load > 0:
+        if self.type in THRUST_BALL and self.radial_load > 0:
             return SpecFieldError("radial_load", "a thrust ball bearing (α = 90°) carries no "
                                   "radial load; use angular-contact, or set it to 0 kN")
         return None
@@ -89,7 +93,9 @@ class OperatingRules(_ReadsBallBearing):
 
     @rule
     def _contact_angle(self) -> SpecFieldError | None:
-        thrust = self.type == "thrust"
+        if self.type not in BALL_TYPES:  # a roller bearing's angle: RollerRules
+            return None
+        thrust = self.type in THRUST_BALL
         if thrust and self.contact_angle is not None and not math.isclose(
                 self.contact_angle, math.pi / 2, rel_tol=1e-12):
             return SpecFieldError("contact_angle", "a thrust ball bearing has α = 90 deg; "
@@ -152,7 +158,7 @@ class OperatingRules(_ReadsBallBearing):
                                   "for ν1: give pitch_diameter, or bore_diameter and "
                                   "outside_diameter", at="lubrication")
         if (self.fatigue_load_limit is None and self.static_load_rating is None
-                and (self.type == "thrust" or not self.has_geometry)):
+                and (self.type in THRUST_BALL or not self.has_geometry)):
             return SpecFieldError("fatigue_load_limit", "aISO needs Cu: give "
                                   "fatigue_load_limit, or static_load_rating to find it",
                                   at="lubrication")
@@ -207,6 +213,8 @@ class GeometryRules(_ReadsBallBearing):
 
     @rule
     def _rated(self) -> SpecFieldError | None:
+        if self.type not in BALL_TYPES:  # a roller bearing's ratings: RollerRules
+            return None
         if self.dynamic_load_rating is None and not self.has_geometry:
             return SpecFieldError("dynamic_load_rating", "missing: give dynamic_load_rating "
                                   "(C from the catalogue, like 55.3 kN), or the geometry "
@@ -216,6 +224,8 @@ class GeometryRules(_ReadsBallBearing):
 
     @rule
     def _grooves(self) -> SpecFieldError | None:
+        if self.type not in BALL_TYPES:  # no grooves: RollerRules refuses the fields
+            return None
         if (self.inner_groove_conformity is None) != (self.outer_groove_conformity is None):
             missing, given = (("inner_groove_conformity", "outer_groove_conformity")
                               if self.inner_groove_conformity is None

@@ -1,8 +1,9 @@
-"""Spec of ``kind: bevel-drive``: a bevel pair on two shafts, each on two ball bearings
-(``docs/physics.md`` §9)."""
+"""Spec of ``kind: bevel-drive``: a bevel pair on two shafts, each on two rolling bearings,
+located by one of them or adjusted against each other (``docs/physics.md`` §9)."""
 
 from __future__ import annotations
 
+import math
 from typing import Any, Literal
 
 from pydantic import Field, model_validator
@@ -24,15 +25,28 @@ from bearingcalc.models.rules import own_problems, rule
 #: Keys of a ball-bearing spec that the drive sets for every bearing itself.
 _DRIVE_SETS = ("radial_load", "axial_load", "speed", "inner_speed", "outer_speed")
 SHAFTS = ("pinion", "gear")
+THRUST_TYPES = ("thrust", "thrust-ball", "thrust-cylindrical-roller", "thrust-spherical-roller",
+                "thrust-tapered-roller")
+
+
+ShaftArrangement = Literal["locating-floating", "back-to-back", "face-to-face"]
+#: Bearings that can be adjusted against each other.
+ADJUSTABLE = ("angular-contact", "tapered-roller")
 
 
 class DriveBearing(BearingFields):
-    """One ball bearing of a shaft: where it sits, whether it locates the shaft axially,
-    and every field of ``kind: ball-bearing`` except loads and speeds."""
+    """One rolling bearing of a shaft: where it sits, whether it locates the shaft
+    axially, and every field of ``kind: rolling-bearing`` except loads and speeds."""
 
     position: Length = Field(description="along the shaft axis, from the pitch-cone apex "
-                             "toward the gear's back face")
-    locating: bool = Field(False, description="takes the shaft's whole axial force")
+                             "toward the gear's back face; in an adjusted arrangement, the "
+                             "bearing's pressure centre (the catalogue's distance a)")
+    locating: bool = Field(False, description="takes the shaft's whole axial force "
+                           "(locating-floating arrangement only)")
+    induced_axial_factor: Ratio | None = Field(
+        None, description="R, the induced axial force over the radial load in an adjusted "
+        "arrangement (by default 0.5/Y for tapered rollers, the makers' table for "
+        "angular-contact balls)")
 
     @model_validator(mode="before")
     @classmethod
@@ -61,6 +75,11 @@ class BevelDriveSpec(BevelPair):
                                                 "shaft")
     gear_bearings: list[DriveBearing] | None = Field(None, description="exactly two, on the "
                                                      "gear shaft (optional)")
+    pinion_arrangement: ShaftArrangement = Field(
+        "locating-floating", description="how the pinion shaft's bearings share its axial "
+        "force: one locating, or two adjusted against each other")
+    gear_arrangement: ShaftArrangement = Field(
+        "locating-floating", description="the same for the gear shaft")
     reliability: Reliability = 0.9
     lubrication: Lubrication | None = None
     contamination_factor: UnitFraction | None = None
@@ -103,18 +122,59 @@ class BevelDriveSpec(BevelPair):
                 problems.append(SpecFieldError(f"{field}.2.position", "two bearings at the "
                                                "same position cannot carry the shaft's "
                                                "moment"))
-            locating = [i for i, bearing in enumerate(bearings, 1) if bearing.locating]
-            if len(locating) != 1:
-                problems.append(SpecFieldError(
-                    f"{field}.1.locating" if not locating else f"{field}.{locating[1]}.locating",
-                    "exactly one bearing of a shaft is locating: it takes the whole axial "
-                    f"force (got {len(locating)})"))
+            arrangement = self.arrangement(shaft)
+            if arrangement == "locating-floating":
+                problems += self._one_locating(field, bearings)
+            else:
+                problems += self._adjusted(field, arrangement, bearings)
             for i, bearing in enumerate(bearings, 1):
-                if bearing.type == "thrust":
+                if bearing.type in THRUST_TYPES:
                     problems.append(SpecFieldError(
-                        f"{field}.{i}.type", "a thrust ball bearing takes no radial load, and "
+                        f"{field}.{i}.type", "a thrust bearing takes no radial load, and "
                         "the gear forces load every bearing of the shaft radially"))
+                if bearing.arrangement != "single":
+                    problems.append(SpecFieldError(
+                        f"{field}.{i}.arrangement", "a drive's bearing is one bearing: give "
+                        f"{shaft}_arrangement for two bearings adjusted against each other"))
         return problems
+
+    @staticmethod
+    def _one_locating(field: str, bearings: list[DriveBearing]) -> list[SpecFieldError]:
+        locating = [i for i, bearing in enumerate(bearings, 1) if bearing.locating]
+        if len(locating) == 1:
+            return []
+        return [SpecFieldError(
+            f"{field}.1.locating" if not locating else f"{field}.{locating[1]}.locating",
+            "exactly one bearing of a shaft is locating: it takes the whole axial force "
+            f"(got {len(locating)})")]
+
+    @staticmethod
+    def _adjusted(field: str, arrangement: str, bearings: list[DriveBearing]
+                  ) -> list[SpecFieldError]:
+        problems = []
+        for i, bearing in enumerate(bearings, 1):
+            where = f"{field}.{i}"
+            if "locating" in bearing.model_fields_set:
+                problems.append(SpecFieldError(
+                    f"{where}.locating", f"not used in a {arrangement} arrangement: each "
+                    "bearing carries the axial force in one direction; leave it out"))
+            if bearing.type not in ADJUSTABLE:
+                problems.append(SpecFieldError(
+                    f"{where}.type", f"a {arrangement} arrangement adjusts two single-row "
+                    f"angular-contact ball or tapered-roller bearings, not {bearing.type}"))
+            elif (bearing.type == "angular-contact" and bearing.induced_axial_factor is None
+                  and bearing.contact_angle is not None
+                  and not math.radians(20) - 1e-12 <= bearing.contact_angle
+                  <= math.radians(40) + 1e-12):
+                problems.append(SpecFieldError(
+                    f"{where}.induced_axial_factor", "the makers' table of R covers 20 to 40 "
+                    "deg: give induced_axial_factor from the catalogue",
+                    at=f"{where}.contact_angle"))
+        return problems
+
+    def arrangement(self, shaft: str) -> str:
+        """The arrangement of a shaft's bearings."""
+        return self.pinion_arrangement if shaft == "pinion" else self.gear_arrangement
 
     @rule
     def _bearings_as_ball_bearings(self) -> list[SpecFieldError]:
@@ -122,9 +182,11 @@ class BevelDriveSpec(BevelPair):
         reliability, lubrication and contamination."""
         problems: list[SpecFieldError] = []
         for shaft, bearings in self.shafts():
+            adjusted = self.arrangement(shaft) != "locating-floating"
             for i, bearing in enumerate(bearings, 1):
-                if bearing.type != "thrust":
-                    problems += self._as_ball_bearing(f"{shaft}_bearings.{i}", bearing)
+                if bearing.type not in THRUST_TYPES:
+                    problems += self._as_ball_bearing(f"{shaft}_bearings.{i}", bearing,
+                                                      adjusted)
         # A rule of the drive's shared fields (lubrication, contamination) fails for every
         # bearing alike: report it once.
         return list({(p.field, p.message): p for p in problems}.values())
@@ -165,17 +227,20 @@ class BevelDriveSpec(BevelPair):
         definition of the rules and results for a bearing alone and in a drive. Its fields
         were validated by the drive's own (the same) field types."""
         fields = {name: getattr(bearing, name) for name in BearingFields.model_fields}
-        fields.update(kind="ball-bearing", radial_load=radial, axial_load=axial, speed=speed,
+        fields.update(_fields_set=bearing.model_fields_set & set(BearingFields.model_fields),
+                      kind="rolling-bearing", radial_load=radial, axial_load=axial, speed=speed,
                       reliability=self.reliability, lubrication=self.lubrication,
                       contamination_factor=self.contamination_factor,
                       limits=BallBearingLimits(min_static_safety=self.limits.min_static_safety))
         return BallBearingSpec.model_construct(**fields)
 
-    def _as_ball_bearing(self, where: str, bearing: DriveBearing) -> list[SpecFieldError]:
-        """Everything ``kind: ball-bearing`` refuses of the bearing, checked by that kind's
-        own rules under the load it will carry (axial too where it locates)."""
-        spec = self.ball_bearing(bearing, radial=1.0, axial=1.0 if bearing.locating else 0.0,
-                                 speed=1.0)
+    def _as_ball_bearing(self, where: str, bearing: DriveBearing, adjusted: bool
+                         ) -> list[SpecFieldError]:
+        """Everything ``kind: rolling-bearing`` refuses of the bearing, checked by that
+        kind's own rules under the load it will carry (axial too where it locates, or is
+        adjusted against the other)."""
+        axial = 1.0 if bearing.locating or adjusted else 0.0
+        spec = self.ball_bearing(bearing, radial=1.0, axial=axial, speed=1.0)
         problems = []
         for problem in own_problems(spec):
             if problem.field in ("lubrication", "contamination_factor", "reliability"):
@@ -199,10 +264,12 @@ class BevelDriveSpec(BevelPair):
         inputs["min_static_safety"] = self.limits.min_static_safety
         inputs["shafts"] = {shaft: [self._bearing_inputs(bearing) for bearing in bearings]
                             for shaft, bearings in self.shafts()}
+        inputs["arrangements"] = {shaft: self.arrangement(shaft) for shaft, _ in self.shafts()}
         return inputs
 
     def _bearing_inputs(self, bearing: DriveBearing) -> dict[str, Any]:
         own = {key: value for key, value in self.ball_bearing(bearing).solver_inputs().items()
                if key not in (*_DRIVE_SETS, "min_rating_life")}
         return {"position": bearing.position,
-                "locating": "locating" if bearing.locating else "floating", **own}
+                "locating": "locating" if bearing.locating else "floating",
+                "induced_axial_factor": bearing.induced_axial_factor, **own}

@@ -57,6 +57,7 @@ def _plain_number(value: Any) -> float:
 
 
 BallCount = _count(1, "balls")
+RollerCount = _count(1, "rollers")
 ToothCount = _count(5, "teeth")
 Ratio = Annotated[float, BeforeValidator(_plain_number),
                   WithJsonSchema({"type": "number", "minimum": 0})]

@@ -91,13 +91,15 @@ def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
                 value = evaluation.results[key]
                 unit, factor = kind.display.get(key) or to_display(1.0, evaluation.units[key])[::-1]
                 shown = "unbounded" if value is None else format_number(value * factor)
+                if value is not None and key in kind.labels:
+                    shown = kind.labels[key].get(value, shown)
                 style = "bold" if key in evaluation.margins else None
                 table.add_row(key, shown, unit, kind.results[key][1], style=style)
             if heading:
                 table.add_section()
         out.print(table)
         for heading, (rows, columns) in kind.matrices.items():
-            _print_matrix(out, evaluation, heading, rows, columns)
+            _print_matrix(out, evaluation, heading, rows, columns, kind.labels)
         if not evaluation.margins:
             out.print(f"[bold green]PASS[/]: {safe_text(_no_margins(kind))}")
         elif evaluation.within_limits:
@@ -119,14 +121,15 @@ def _no_margins(kind: Kind) -> str:
 
 
 def _print_matrix(out: Any, evaluation: Evaluation, heading: str, rows: Sequence[str],
-                  columns: Sequence[str]) -> None:
-    """Results named ``{row}_{column}`` as a table with a row per member; nothing when the
-    evaluation has none of them."""
+                  columns: Sequence[str], labels: Mapping[str, Mapping[float, str]]) -> None:
+    """Results named ``{row}_{column}`` as a table with a row per member and a column per
+    quantity any member has; nothing when the evaluation has none of them."""
     from rich.table import Table
 
     present = [row for row in rows if any(f"{row}_{c}" in evaluation.results for c in columns)]
     if not present:
         return
+    columns = [c for c in columns if any(f"{row}_{c}" in evaluation.results for row in present)]
     table = Table(title=heading, title_justify="left")
     table.add_column("")
     for column in columns:
@@ -137,6 +140,9 @@ def _print_matrix(out: Any, evaluation: Evaluation, heading: str, rows: Sequence
         for column in columns:
             value = evaluation.results.get(f"{row}_{column}")
             key = f"{row}_{column}"
+            if value is not None and key in labels:
+                cells.append(labels[key].get(value, format_number(value)))
+                continue
             cells.append("" if value is None else format_number(
                 to_display(value, evaluation.units[key])[0]))
         table.add_row(row, *cells)

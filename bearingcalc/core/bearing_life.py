@@ -1,0 +1,83 @@
+"""The rating life of a rolling bearing, ball or roller: ISO 281:2007's L10, a1 and,
+with the lubrication, κ, Cu and aISO, composed into Lnm (``docs/physics.md`` §5)."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from bearingcalc.core.common import Family
+from bearingcalc.core.iso281 import (
+    AISO_CAP,
+    KAPPA_CAP,
+    KAPPA_MIN,
+    MAX_OPERATING_VISCOSITY,
+    basic_rating_life,
+    fatigue_load_limit,
+    life_modification_factor,
+    reference_viscosity,
+    reliability_factor,
+    walther_viscosity,
+)
+
+
+def rating_life(inputs: Mapping[str, ArrayLike | str | None], thrust: bool, speed: NDArray,
+                c: NDArray | None, c0: NDArray | None, p: NDArray,
+                out: dict[str, ArrayLike], flags: dict[str, ArrayLike],
+                bad_checks: list[tuple[int, ArrayLike]], *, family: Family = "ball",
+                pair: bool = False) -> None:
+    r"""The modified rating life, into ``out``; its warnings into ``flags`` and the status
+    checks it adds into ``bad_checks``.
+
+    .. math:: L_{nm} = a_1 a_{ISO} L_{10}, \qquad L_{10} = (C/P)^p
+
+    in revolutions and, at the speed n [rad/s], in seconds. With lubrication data, κ =
+    ν/ν1 (capped at 4) and Cu (the catalogue's, or estimated from C0) give aISO; without,
+    aISO = 1. A pair's C and C0 are the pair's, and a catalogue Cu (of one bearing)
+    counts twice.
+
+    Source: ISO 281:2007, 9.1 to 9.3 (eqs. 13 to 20, Annex B).
+    """
+    revolutions_per_second = speed / (2.0 * np.pi)
+    l10 = basic_rating_life(c, p, family=family)
+    a1 = reliability_factor(inputs["reliability"])
+    a_iso = np.ones_like(l10)
+    if inputs.get("contamination_factor") is not None:
+        mean_diameter = np.asarray(inputs["mean_diameter"], dtype=float)
+        nu = inputs.get("viscosity")
+        if nu is None:
+            nu = walther_viscosity(inputs["viscosity_40"], inputs["viscosity_100"],
+                                   inputs["temperature"])
+            bad_checks.append((9, ~(np.asarray(inputs["viscosity_40"], dtype=float)
+                                    > np.asarray(inputs["viscosity_100"], dtype=float))))
+            bad_checks.append((13, ~(nu <= MAX_OPERATING_VISCOSITY)))
+        nu = np.asarray(nu, dtype=float)
+        nu1 = reference_viscosity(speed, mean_diameter)
+        kappa_raw = nu / nu1
+        bad_checks.append((5, ~(kappa_raw >= KAPPA_MIN)))
+        flags["kappa_capped"] = kappa_raw > KAPPA_CAP
+        kappa = np.minimum(kappa_raw, KAPPA_CAP)
+        cu = inputs.get("fatigue_load_limit")
+        if cu is None:
+            cu = fatigue_load_limit(c0, mean_diameter, family=family)
+        elif pair:
+            cu = 2.0 * np.asarray(cu, dtype=float)
+        a_iso = life_modification_factor(kappa, inputs["contamination_factor"], cu, p, thrust,
+                                         family=family)
+        flags["aiso_capped"] = a_iso >= AISO_CAP
+        out.update({"fatigue_load_limit": cu, "reference_viscosity": nu1,
+                    "operating_viscosity": nu, "viscosity_ratio": kappa})
+    lnm = a1 * a_iso * l10
+    out.update({
+        "equivalent_dynamic_load": p, "load_ratio": c / p,
+        "basic_rating_life": l10 / revolutions_per_second,
+        "basic_rating_life_revolutions": l10, "reliability_factor": a1,
+        "life_modification_factor": a_iso,
+        "modified_rating_life": lnm / revolutions_per_second,
+        "modified_rating_life_revolutions": lnm,
+    })
+    min_life = inputs.get("min_rating_life")
+    if min_life is not None:
+        out["life_margin"] = lnm / revolutions_per_second / np.asarray(min_life) - 1.0
