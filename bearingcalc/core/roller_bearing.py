@@ -29,6 +29,7 @@ from bearingcalc.core.roller_bearing_contacts import (
 from bearingcalc.core.roller_ratings import (
     RADIAL_ROLLER_TYPES,
     STRAIGHT_ROLLER_TYPES,
+    THRUST_FC,
     THRUST_ROLLER_TYPES,
     roller_dynamic_load_rating,
     roller_equivalent_dynamic_load,
@@ -144,8 +145,9 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
                                            thrust=thrust)
         if c is None:
             bad.append((18, np.isnan(fc)))
-        out.update(dynamic_load_rating_iso=c_iso, rating_factor=fc,
-                   static_load_rating_iso=c0_iso)
+        out["static_load_rating_iso"] = c0_iso
+        if not (thrust and THRUST_FC is None):  # no thrust fc table: C from the catalogue
+            out.update(dynamic_load_rating_iso=c_iso, rating_factor=fc)
         c = c_iso if c is None else c
         c0 = c0_iso if c0 is None else c0
     out["dynamic_load_rating"] = c
