@@ -40,7 +40,6 @@ from bearingcalc.cli_output import (
 )
 from bearingcalc.errors import SpecError
 from bearingcalc.output import StagedFiles
-from bearingcalc.wording import did_you_mean
 
 app = typer.Typer(add_completion=False, pretty_exceptions_enable=False, no_args_is_help=True,
                   context_settings={"help_option_names": ["-h", "--help"]},
@@ -186,13 +185,11 @@ def schema(
     """Print the JSON Schema (draft 2020-12) of the spec format, for editors and CI."""
     import json
 
-    from bearingcalc.kinds import KINDS
+    from bearingcalc.kinds import KINDS, unknown_kind
     from bearingcalc.schema import spec_schema
 
     if kind is not None and kind not in KINDS:
-        print(f"error: --kind: unknown kind {kind!r}{did_you_mean(kind, KINDS)}; known kinds: "
-              f"{', '.join(KINDS)}",
-              file=sys.stderr)
+        print(f"error: --kind: {unknown_kind(kind)}", file=sys.stderr)
         raise typer.Exit(EXIT_INVALID)
     text = json.dumps(spec_schema(kind), indent=2, ensure_ascii=False) + "\n"
     with errors_as_exit(debug=False):
@@ -209,23 +206,20 @@ def new(
     list_kinds: Annotated[bool, typer.Option("--list", help="List the kinds.")] = False,
 ) -> None:
     """Print a commented template spec of KIND, ready for 'bearingcalc check'."""
-    from bearingcalc.kinds import KINDS
-    from bearingcalc.templates import template_text, template_types
+    from bearingcalc.kinds import KINDS, unknown_kind
+    from bearingcalc.templates import template_text
 
     if list_kinds or kind is None:
         text = "".join(f"{name:16} {entry.summary}\n" for name, entry in KINDS.items())
     elif kind not in KINDS:
-        print(f"error: unknown kind {kind!r}{did_you_mean(kind, KINDS)}; known kinds: "
-              f"{', '.join(KINDS)}", file=sys.stderr)
-        raise typer.Exit(EXIT_INVALID)
-    elif bearing_type is not None and bearing_type not in template_types(kind):
-        types = template_types(kind)
-        print(f"error: --type: no {kind} template of type {bearing_type!r}"
-              f"{did_you_mean(bearing_type, types)}; templates: {', '.join(types)}",
-              file=sys.stderr)
+        print(f"error: {unknown_kind(kind)}", file=sys.stderr)
         raise typer.Exit(EXIT_INVALID)
     else:
-        text = template_text(kind, bearing_type)
+        try:
+            text = template_text(kind, bearing_type)
+        except LookupError as error:
+            print(f"error: --type: {error}", file=sys.stderr)
+            raise typer.Exit(EXIT_INVALID) from None
     with errors_as_exit(debug=False):
         write_stdout(lambda stream: stream.write(text))
     if kind is None and not list_kinds:

@@ -19,7 +19,7 @@ import numpy as np
 from pydantic import BaseModel, ValidationError
 
 from bearingcalc.errors import SpecError, SpecFieldError
-from bearingcalc.kinds import KINDS, Kind
+from bearingcalc.kinds import KINDS, Kind, unknown_kind
 from bearingcalc.models.base import Spec, nested_model
 from bearingcalc.models.field_path import FieldPath, is_list_field
 from bearingcalc.models.rules import problems_despite
@@ -63,8 +63,7 @@ def parse_document(document: Document) -> tuple[Kind, Spec]:
         raise document.error(f"missing key 'kind': one of {', '.join(KINDS)}", field="kind")
     kind = KINDS.get(kind_name) if isinstance(kind_name, str) else None
     if kind is None:
-        raise document.error(f"unknown kind {kind_name!r}{did_you_mean(str(kind_name), KINDS)}; "
-                             f"known kinds: {', '.join(KINDS)}", field="kind")
+        raise document.error(unknown_kind(kind_name), field="kind")
     try:
         spec = kind.model.model_validate(data)
     except ValidationError as exc:

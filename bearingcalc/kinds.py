@@ -230,3 +230,11 @@ KINDS: dict[str, Kind] = {
              governing=("life_margin", "system_modified_rating_life", "static_safety_margin")),
     )
 }
+
+
+def unknown_kind(name: object) -> str:
+    """Why ``name`` is not a kind, with the nearest kind's name and every kind's."""
+    from bearingcalc.wording import did_you_mean
+
+    return (f"unknown kind {name!r}{did_you_mean(str(name), KINDS)}; known kinds: "
+            f"{', '.join(KINDS)}")

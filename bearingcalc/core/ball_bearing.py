@@ -24,7 +24,7 @@ from bearingcalc.core.arrangements import (
 )
 from bearingcalc.core.ball_bearing_contacts import ball_contacts
 from bearingcalc.core.ball_bearing_kinematics import ball_kinematics
-from bearingcalc.core.bearing_life import rating_life
+from bearingcalc.core.bearing_life import operating_point, rating_life
 from bearingcalc.core.common import Family, balls_fit, packed
 from bearingcalc.core.iso76 import static_equivalent_load, static_load_rating, static_safety_factor
 from bearingcalc.core.iso281 import dynamic_load_rating, equivalent_dynamic_load
@@ -180,10 +180,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
     thrust = bearing_type == "thrust"
     z, dw, dpw = (inputs.get(k) for k in ("ball_count", "ball_diameter", "pitch_diameter"))
     has_geometry = z is not None and dw is not None and dpw is not None
-    alpha = np.asarray(inputs["contact_angle"], dtype=float)
-    fr = np.asarray(inputs["radial_load"], dtype=float)
-    fa = np.asarray(inputs["axial_load"], dtype=float)
-    speed = np.asarray(inputs["speed"], dtype=float)
+    alpha, fr, fa, speed = operating_point(inputs)
     out: dict[str, ArrayLike] = {}
     flags: dict[str, ArrayLike] = {}
     # Checks in the order they are reported: the first that fails names the fault.
@@ -206,7 +203,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
         p = _equivalent_dynamic_load(inputs, bearing_type, alpha, fr, fa, f0, c0, out,
                                      flags, bad_checks)
     rating_life(inputs, thrust, speed, c_used, c0_used, p, out, flags, bad_checks,
-         pair=arrangement in PAIRS)
+                pair=arrangement in PAIRS)
     out["dynamic_load_rating"] = c
     p0 = _static(inputs, bearing_type, alpha, fr, fa, c0, c0_used, f0, double_row, out)
 

@@ -1,5 +1,6 @@
 """The rating life of a rolling bearing, ball or roller: ISO 281:2007's L10, a1 and,
-with the lubrication, κ, Cu and aISO, composed into Lnm (``docs/physics.md`` §5)."""
+with the lubrication, κ, Cu and aISO, composed into Lnm (``docs/physics.md`` §5); and
+the operating point both families' solvers read."""
 
 from __future__ import annotations
 
@@ -21,6 +22,13 @@ from bearingcalc.core.iso281 import (
     reliability_factor,
     walther_viscosity,
 )
+
+
+def operating_point(inputs: Mapping[str, ArrayLike | str | None]
+                    ) -> tuple[NDArray, NDArray, NDArray, NDArray]:
+    """(α [rad], Fr [N], Fa [N], n [rad/s]) of a bearing's solver inputs, as arrays."""
+    return tuple(np.asarray(inputs[key], dtype=float)  # type: ignore[return-value]
+                 for key in ("contact_angle", "radial_load", "axial_load", "speed"))
 
 
 def rating_life(inputs: Mapping[str, ArrayLike | str | None], thrust: bool, speed: NDArray,

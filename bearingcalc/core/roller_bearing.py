@@ -18,7 +18,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core import ball_bearing
 from bearingcalc.core.arrangements import DOUBLE_ROW_PAIRS, PAIRS, pair_ratings_used
-from bearingcalc.core.bearing_life import rating_life
+from bearingcalc.core.bearing_life import operating_point, rating_life
 from bearingcalc.core.common import Family, balls_fit, packed
 from bearingcalc.core.iso76 import static_safety_factor
 from bearingcalc.core.roller_bearing_contacts import (
@@ -124,10 +124,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
     z, dwe, lwe, dpw = (inputs.get(k) for k in ("roller_count", "roller_diameter",
                                                  "roller_length", "pitch_diameter"))
     has_geometry = None not in (z, dwe, lwe, dpw)
-    alpha = np.asarray(inputs["contact_angle"], dtype=float)
-    fr = np.asarray(inputs["radial_load"], dtype=float)
-    fa = np.asarray(inputs["axial_load"], dtype=float)
-    speed = np.asarray(inputs["speed"], dtype=float)
+    alpha, fr, fa, speed = operating_point(inputs)
     out: dict[str, ArrayLike] = {}
     flags: dict[str, ArrayLike] = {}
     angle_ok = ((alpha > np.pi / 4) & (alpha <= np.pi / 2) if thrust

@@ -45,6 +45,25 @@ class _ReadsBallBearing:
         inner_groove_conformity: float | None
         outer_groove_conformity: float | None
 
+    def _element_fits(self, field: str, element: str, *, in_section: bool
+                      ) -> SpecFieldError | None:
+        """A rolling element of diameter ``field`` smaller than the pitch diameter and,
+        where ``in_section``, than the ring section (D − d)/2."""
+        diameter = getattr(self, field)
+        if diameter is None:
+            return None
+        if self.pitch_diameter is not None and not diameter < self.pitch_diameter:
+            return SpecFieldError(field, "must be smaller than pitch_diameter")
+        envelope = self._envelope_mm()
+        if envelope is None or not in_section:
+            return None
+        section = (envelope[1] - envelope[0]) / 2
+        if diameter * 1e3 < section:
+            return None
+        return SpecFieldError(field, f"{diameter * 1e3:g} mm does not fit the ring section: "
+                              f"the {element} must be smaller than "
+                              f"(outside_diameter − bore_diameter)/2 = {section:g} mm")
+
     def _envelope_mm(self) -> tuple[float, float] | None:
         """(d, D) in mm where both are given and in order, else None."""
         if self.bore_diameter is None or self.outside_diameter is None or not (
@@ -198,18 +217,7 @@ class GeometryRules(_ReadsBallBearing):
 
     @rule
     def _ball_in_section(self) -> SpecFieldError | None:
-        if self.ball_diameter is not None and self.pitch_diameter is not None and not (
-                self.ball_diameter < self.pitch_diameter):
-            return SpecFieldError("ball_diameter", "must be smaller than pitch_diameter")
-        envelope = self._envelope_mm()
-        if envelope is None or self.ball_diameter is None:
-            return None
-        section = (envelope[1] - envelope[0]) / 2
-        if self.ball_diameter * 1e3 < section:
-            return None
-        return SpecFieldError("ball_diameter", f"{self.ball_diameter * 1e3:g} mm does not "
-                              f"fit the ring section: the ball must be smaller than "
-                              f"(outside_diameter − bore_diameter)/2 = {section:g} mm")
+        return self._element_fits("ball_diameter", "ball", in_section=True)
 
     @rule
     def _rated(self) -> SpecFieldError | None:

@@ -52,7 +52,8 @@ class _ReadsRollerBearing:
         outside_diameter: float | None
         model_fields_set: set[str]
 
-        def _envelope_mm(self) -> tuple[float, float] | None: ...
+        def _element_fits(self, field: str, element: str, *, in_section: bool
+                          ) -> SpecFieldError | None: ...
 
 
 class RollerRules(_ReadsRollerBearing):
@@ -144,19 +145,9 @@ class RollerRules(_ReadsRollerBearing):
 
     @rule
     def _roller_in_section(self) -> SpecFieldError | None:
-        if self.roller_diameter is None:
-            return None
-        if self.pitch_diameter is not None and not self.roller_diameter < self.pitch_diameter:
-            return SpecFieldError("roller_diameter", "must be smaller than pitch_diameter")
-        envelope = self._envelope_mm()
-        if envelope is None or self.type in THRUST_ROLLER_TYPES:
-            return None
-        section = (envelope[1] - envelope[0]) / 2
-        if self.roller_diameter * 1e3 < section:
-            return None
-        return SpecFieldError("roller_diameter", f"{self.roller_diameter * 1e3:g} mm does not "
-                              f"fit the ring section: the roller must be smaller than "
-                              f"(outside_diameter − bore_diameter)/2 = {section:g} mm")
+        # A thrust roller's diameter lies along the axis: the ring section does not bound it.
+        return self._element_fits("roller_diameter", "roller",
+                                  in_section=self.type not in THRUST_ROLLER_TYPES)
 
     @rule
     def _spherical_profile(self) -> SpecFieldError | None:

@@ -6,16 +6,27 @@ from __future__ import annotations
 import re
 from importlib import resources
 
+from bearingcalc.wording import did_you_mean
+
 _TYPE_LINE = re.compile(r"^type:\s*([\w-]+)", re.MULTILINE)
 
 
 def template_text(kind: str, type_name: str | None = None) -> str:
     """The template of ``kind``, or of its type ``type_name`` (the kind's own template
-    where that is its type)."""
+    where that is its type).
+
+    Raises
+    ------
+    LookupError : the kind has no template of that type; the message names those it has.
+    """
     folder = resources.files(__name__)
     default = folder.joinpath(f"{kind}.yaml").read_text("utf-8")
     if type_name is None or _default_type(default) == type_name:
         return default
+    types = template_types(kind)
+    if type_name not in types:
+        raise LookupError(f"no {kind} template of type {type_name!r}"
+                          f"{did_you_mean(type_name, types)}; templates: {', '.join(types)}")
     return folder.joinpath(f"{kind}.{type_name}.yaml").read_text("utf-8")
 
 
