@@ -199,9 +199,9 @@ class BallBearingSpec(RollerRules, OperatingRules, GeometryRules, BearingFields,
         if self.lubrication is None:
             notes.append("no lubrication given: aISO = 1, so the modified life ignores "
                          "lubrication and contamination")
-        if self.type in ("thrust", "thrust-ball") and self.static_load_rating is None:
-            notes.append("no static_load_rating: ISO 76's thrust f0 is not implemented, so "
-                         "the static results are left out")
+        static = self.static_left_out()
+        if static is not None:
+            notes.append(static)
         notes += self.roller_notes()
         envelope = self._envelope_mm()
         if envelope is not None:
@@ -215,6 +215,19 @@ class BallBearingSpec(RollerRules, OperatingRules, GeometryRules, BearingFields,
                              f"{PITCH_OFF_CENTRE:.0%} from the rings' mean (d + D)/2 = "
                              f"{middle:g} mm: check it against the catalogue")
         return notes
+
+    def static_left_out(self) -> str | None:
+        """Why the static results are left out, or None: no C0, from the catalogue or the
+        geometry."""
+        if self.static_load_rating is not None:
+            return None
+        if self.type in ("thrust", "thrust-ball"):
+            return ("no static_load_rating: ISO 76's thrust f0 is not implemented, so the "
+                    "static results are left out")
+        if not self.has_geometry:
+            return ("no static_load_rating (or geometry): the static results are left "
+                    "out")
+        return None
 
     def solver_inputs(self) -> dict[str, Any]:
         """SI inputs of :func:`bearingcalc.core.ball_bearing.evaluate`."""

@@ -21,6 +21,7 @@ class _ReadsBallBearing:
     if TYPE_CHECKING:  # the spec model's fields and properties these rules read; not
         # annotations pydantic would see, or it would take them for fields of its own
         type: str
+        arrangement: str
         speed: Any
         inner_speed: Any
         outer_speed: Any
@@ -135,10 +136,13 @@ class OperatingRules(_ReadsBallBearing):
                 math.radians(20) - 1e-12 <= alpha <= math.radians(45) + 1e-12):
             return None
         factors = self.load_factors
-        if factors is None or factors.x0 is None or factors.y0 is None:
+        paired = self.arrangement in ("back-to-back", "face-to-face")
+        static = ("y0",) if paired else ("x0", "y0")  # a pair's X0 is 1
+        if factors is None or any(getattr(factors, name) is None for name in static):
+            needed = "e, y1, x, y2, y0" if paired else "x, y, e, x0, y0"
             return SpecFieldError("load_factors", "ISO 281 tables X, Y, e (and ISO 76 "
                                   "X0, Y0) only for 20 deg <= α <= 45 deg: give "
-                                  "load_factors: {x, y, e, x0, y0} from the catalogue",
+                                  f"load_factors: {{{needed}}} from the catalogue",
                                   at="contact_angle")
         return None
 

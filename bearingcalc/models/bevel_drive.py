@@ -204,10 +204,13 @@ class BevelDriveSpec(BevelPair):
             for i, bearing in enumerate(bearings, 1):
                 name = f"{shaft}_bearings.{i}"
                 spec = self.ball_bearing(bearing)
+                static = spec.static_left_out()
                 for note in spec.warnings():
+                    if note == static:  # said once for all bearings, below
+                        continue
                     shared = note.startswith("no lubrication given")
                     notes[note if shared else f"{name}: {note}"] = None
-                if bearing.static_load_rating is None and not spec.has_geometry:
+                if static is not None:
                     without_c0.append(name)
         if without_c0:
             notes[f"no static_load_rating (or geometry) for {', '.join(without_c0)}: "

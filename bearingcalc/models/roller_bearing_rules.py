@@ -51,6 +51,7 @@ class _ReadsRollerBearing:
         bore_diameter: float | None
         outside_diameter: float | None
         model_fields_set: set[str]
+        limits: Any
 
         def _element_fits(self, field: str, element: str, *, in_section: bool
                           ) -> SpecFieldError | None: ...
@@ -82,6 +83,10 @@ class RollerRules(_ReadsRollerBearing):
                 if field in given:
                     problems.append(SpecFieldError(field, f"applies to roller bearings only, "
                                                    f"not to a {self.type} ball bearing"))
+        if self.type in ROLLER_TYPES and self.limits.max_spin_to_roll is not None:
+            problems.append(SpecFieldError("limits.max_spin_to_roll", "judges the spin of "
+                                           "balls on their races; a roller bearing's rollers "
+                                           "do not spin so: leave it out"))
         if "rows" in given and self.type in THRUST_ROLLER_TYPES and self.rows != 1:
             problems.append(SpecFieldError("rows", "a thrust roller bearing here has one "
                                            "row: give 1"))
@@ -126,6 +131,8 @@ class RollerRules(_ReadsRollerBearing):
         missing = [name for name, value in geometry.items() if value is None]
         if self.mean_diameter is None:
             missing.append("pitch_diameter")
+        if {"ball_count", "ball_diameter"} & self.model_fields_set:
+            return None  # _family_fields names the roller field to give instead
         if self.dynamic_load_rating is not None:
             if len(missing) in (0, len(geometry) + 1) or (
                     self.mean_diameter is not None and len(missing) == len(geometry)):

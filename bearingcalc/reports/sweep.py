@@ -75,6 +75,11 @@ def print_sweep_table(sweep: Sweep, keys: Sequence[str], stream: IO[str] | None 
             return "—"
         return f"{to_display(value, si_unit)[0]:.{digits}g}"
 
+    def result(key: str, value: float, digits: int = 7) -> str:
+        """A result as the solve table shows it: in words where the kind labels it."""
+        text = shown(value, units[key], digits)
+        return sweep.kind.labels.get(key, {}).get(value, text)
+
     def label(name: str, si_unit: str) -> str:
         unit = to_display(0.0, si_unit)[1]
         return escape(f"{name} [{unit}]") if unit else name
@@ -89,7 +94,7 @@ def print_sweep_table(sweep: Sweep, keys: Sequence[str], stream: IO[str] | None 
         for i, value in enumerate(sweep.inputs[axis.name].tolist()):
             code = int(sweep.status[i])
             table.add_row(shown(value, axis.unit),
-                          *(shown(sweep.results[k][i], units[k]) for k in keys),
+                          *(result(k, sweep.results[k][i]) for k in keys),
                           sweep.reason(code) if code else "")
         out.print(table)
         return
@@ -106,7 +111,7 @@ def print_sweep_table(sweep: Sweep, keys: Sequence[str], stream: IO[str] | None 
         table.add_column(shown(second.values[j], second.unit, 4), justify="right")
     for i in rows:
         table.add_row(shown(first.values[i], first.unit, 4),
-                      *(shown(values[i, j], units[key], 4) for j in cols))
+                      *(result(key, values[i, j], 4) for j in cols))
     out.print(table)
     if len(rows) < len(first.values) or len(cols) < len(second.values):
         out.print(f"(every point of the {len(first.values)} × {len(second.values)} grid is "
