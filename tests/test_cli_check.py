@@ -15,6 +15,7 @@ import yaml
 
 from bearingcalc import batch, reports
 from bearingcalc.kinds import KINDS
+from bearingcalc.templates import template_types
 from tests.conftest import ROOT
 
 GOOD = (ROOT / "specs" / "thrust-bearing.yaml").read_text()
@@ -281,6 +282,26 @@ def test_new_templates_pass_check_as_printed(cli, tmp_path, kind):
     path.write_text(run.out)
     assert cli("check", path).code == 0
     assert run.out == (ROOT / "specs" / f"{kind}.yaml").read_text()
+
+
+@pytest.mark.parametrize(("kind", "type_name"), [
+    (kind, type_name) for kind in sorted(KINDS) for type_name in template_types(kind)[1:]])
+def test_every_type_template_passes_check_and_is_an_example(cli, tmp_path, kind, type_name):
+    run = cli("new", kind, "--type", type_name)
+    assert run.code == 0
+    path = tmp_path / f"{kind}-{type_name}.yaml"
+    path.write_text(run.out)
+    assert cli("check", path).code == 0
+    assert f"type: {type_name}" in run.out
+    assert run.out == (ROOT / "specs" / f"{kind}-{type_name}.yaml").read_text()
+
+
+def test_new_type_of_the_default_template_and_unknown_types(cli):
+    assert cli("new", "rolling-bearing", "--type", "tapered-roller").out == cli(
+        "new", "rolling-bearing").out
+    run = cli("new", "rolling-bearing", "--type", "cylindrical")
+    assert run.code == 2 and run.err.count("\n") == 1
+    assert "cylindrical-roller" in run.err and run.out == ""
 
 
 def test_new_list_and_unknown_kind(cli):

@@ -46,8 +46,8 @@ KOYO_BETWEEN_ROWS = [
     (32.0, 0.73, 0.62, 1.17, 0.86, 0.63),
 ]
 
-#: The 7208 pair back-to-back (40°) of specs/rolling-bearing-angular-pair.yaml.
-PAIR_SPEC = ROOT / "specs" / "rolling-bearing-angular-pair.yaml"
+#: The 7208 pair back-to-back (40°) of specs/rolling-bearing-angular-contact.yaml.
+PAIR_SPEC = ROOT / "specs" / "rolling-bearing-angular-contact.yaml"
 
 
 def factors_at(alpha_deg: float) -> tuple[float, ...]:
