@@ -147,7 +147,7 @@ def test_static_load_rating_of_thrust_roller_bearings(z, dwe, lwe, dpw, alpha):
 # --- 5. equivalent loads P and P0 --------------------------------------------------------------
 
 def p_iso(fr, fa, alpha_deg, kind, double, e=None, y=None, y1=None, y2=None, x=None):
-    """ISO 281:2007, 7.2.2 (radial roller) and 8.2.2 (thrust roller), catalogue factors
+    """ISO 281:2007, 7.2 (radial roller) and 8.2 (thrust roller), catalogue factors
     replacing the standard's where given."""
     a = alpha_deg * DEG
     if kind in ("cylindrical-roller", "needle-roller"):

@@ -48,7 +48,8 @@ def pair_ratings(dynamic_load_rating: ArrayLike, static_load_rating: ArrayLike |
     .. math:: C_{pair} = 2^{0.7} C \ (\text{ball}), \quad 2^{7/9} C \ (\text{roller}),
               \qquad C_{0,pair} = 2 C_0
 
-    Source: ISO 281:2007, 6.1.2 and 7.1.2 (bearing combinations); ISO 76:2006, 6.1.
+    Source: ISO 281:2007, 5.1 and 7.1 (bearing combinations); ISO 76:2006 (bearing
+    combinations).
     """
     c = np.asarray(dynamic_load_rating, dtype=float) * 2.0 ** PAIR_RATING_EXPONENT[family]
     c0 = None if static_load_rating is None else 2.0 * np.asarray(static_load_rating,

@@ -102,7 +102,7 @@ def dynamic_load_rating(ball_count: ArrayLike, ball_diameter: ArrayLike,
     -------
     (C [N], fc [1]); NaN where γ is outside the table.
 
-    Source: ISO 281:2007, 6.1.1 and 6.2.1 (eqs. 2, 3; Tables 2 and 4).
+    Source: ISO 281:2007, 5.1 and 6.1 (Tables 2 and 4).
 
     >>> c, fc = dynamic_load_rating(8, 17.462e-3, 72.5e-3, 0.0)
     >>> round(float(fc), 2), round(float(c))
@@ -212,7 +212,7 @@ def basic_rating_life(dynamic_load_rating: ArrayLike, equivalent_load: ArrayLike
     -------
     L10. [1] (revolutions)
 
-    Source: ISO 281:2007, 7.1 (eqs. 14 and 15); docs/physics.md §5.
+    Source: ISO 281:2007, 5.3, 6.3, 7.3 and 8.3; docs/physics.md §5.
 
     >>> round(float(basic_rating_life(55300.0, 10000.0)) / 1e6, 1)
     169.1

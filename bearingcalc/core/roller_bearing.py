@@ -105,7 +105,7 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
     19: ("contact_angle", "must be from 0 deg to 45 deg for a radial roller bearing, and "
                           "above 45 deg up to 90 deg for a thrust roller bearing"),
     20: ("axial_load", "a thrust roller bearing with α < 90° needs Fa/Fr > e = 1.5·tanα "
-                       "(ISO 281 8.2.2): raise the axial load or lower the radial load"),
+                       "(ISO 281 8.2): raise the axial load or lower the radial load"),
     21: ("radial_load", "a thrust roller bearing with α = 90° carries no radial load"),
     22: ("radial_load", _CONTACT_TOO_WIDE),
     23: ("axial_load", _CONTACT_TOO_WIDE),

@@ -76,7 +76,7 @@ def roller_dynamic_load_rating(roller_count: ArrayLike, roller_diameter: ArrayLi
     (C [N], fc [1]); NaN where γ is outside the table (thrust bearings: always, while
     the thrust table is not entered).
 
-    Source: ISO 281:2007, 7.1.1 and 8.1.1 (eqs. 7, 9, 10; Tables 1 and 7).
+    Source: ISO 281:2007, 7.1 and 8.1 (Table 1, bm; Table 7, fc).
 
     >>> c, fc = roller_dynamic_load_rating(14, 11e-3, 11e-3, 64e-3, 0.0,
     ...                                    bearing_type="cylindrical-roller")
@@ -148,7 +148,7 @@ def roller_equivalent_dynamic_load(radial_load: ArrayLike, axial_load: ArrayLike
     -------
     :class:`RollerLoad`.
 
-    Source: ISO 281:2007, 7.2.2 and 8.2.2 (Tables 8 and 9).
+    Source: ISO 281:2007, 7.2 and 8.2 (their tables of X and Y).
     """
     fr = np.asarray(radial_load, dtype=float)
     fa = np.asarray(axial_load, dtype=float)
@@ -207,7 +207,7 @@ def roller_static_load_rating(roller_count: ArrayLike, roller_diameter: ArrayLik
     -------
     C0. [N]
 
-    Source: ISO 76:2006, 6.1.2 and 7.1.2 (eqs. 2, 6, 7).
+    Source: ISO 76:2006, the static load ratings of radial and thrust roller bearings.
 
     >>> round(float(roller_static_load_rating(14, 11e-3, 11e-3, 64e-3, 0.0,
     ...                                       thrust=False)))
@@ -253,7 +253,8 @@ def roller_static_equivalent_load(radial_load: ArrayLike, axial_load: ArrayLike,
     -------
     P0. [N]
 
-    Source: ISO 76:2006, 6.2.2 and 7.2.2.
+    Source: ISO 76:2006, the static equivalent loads of radial and thrust roller
+    bearings.
     """
     fr = np.asarray(radial_load, dtype=float)
     fa = np.asarray(axial_load, dtype=float)

@@ -204,7 +204,7 @@ class RollerRules(_ReadsRollerBearing):
         if self.radial_load > 0 and not self.axial_load > limit * self.radial_load:
             return SpecFieldError("axial_load", f"a thrust roller bearing at α = "
                                   f"{math.degrees(alpha):g} deg needs Fa/Fr > e = "
-                                  f"1.5·tanα = {limit:.3g} (ISO 281 8.2.2); Fa/Fr is "
+                                  f"1.5·tanα = {limit:.3g} (ISO 281 8.2); Fa/Fr is "
                                   f"{self.axial_load / self.radial_load:.3g}")
         return None
 
