@@ -9,7 +9,8 @@ import pytest
 from bearingcalc.core.solver import Solution, Solver
 from bearingcalc.evaluation import load_one_spec
 from bearingcalc.kinds import KINDS
-from bearingcalc.models.base import Spec
+from bearingcalc.models.base import Spec, nested_model
+from bearingcalc.models.rules import rule, rules_of
 from tests.conftest import ROOT
 
 
@@ -36,3 +37,29 @@ def test_a_solver_returns_a_solution_with_warnings_apart_from_results(name):
     assert set(solution.warnings) <= set(KINDS[name].warnings)
     for flags in solution.warnings.values():
         assert np.asarray(flags).dtype == bool
+
+
+def test_no_method_shadows_a_rule():
+    """A rule is collected by name through the bases: a plain method of the same name in
+    a subclass would drop it without a word, so the collection refuses that."""
+    class Base(Spec):
+        @rule
+        def _checked(self) -> None:
+            return None
+
+    class Shadowing(Base):
+        def _checked(self) -> None:  # type: ignore[override]
+            return None
+
+    with pytest.raises(TypeError, match="shadows the rule"):
+        rules_of(Shadowing)
+
+
+@pytest.mark.parametrize("name", sorted(KINDS))
+def test_every_model_of_a_kind_collects_its_rules(name):
+    model = KINDS[name].model
+    rules_of(model)  # raises where a method shadows a rule
+    for field in model.model_fields.values():
+        held = nested_model(field)
+        if held is not None:
+            rules_of(held)

@@ -182,11 +182,10 @@ class BevelDriveSpec(BevelPair):
         reliability, lubrication and contamination."""
         problems: list[SpecFieldError] = []
         for shaft, bearings in self.shafts():
-            adjusted = self.arrangement(shaft) != "locating-floating"
             for i, bearing in enumerate(bearings, 1):
                 if bearing.type not in THRUST_TYPES:
-                    problems += self._as_ball_bearing(f"{shaft}_bearings.{i}", bearing,
-                                                      adjusted)
+                    problems += self._as_ball_bearing(f"{shaft}_bearings.{i}",
+                                                      self._bearing_under_load(shaft, bearing))
         # A rule of the drive's shared fields (lubrication, contamination) fails for every
         # bearing alike: report it once.
         return list({(p.field, p.message): p for p in problems}.values())
@@ -203,7 +202,7 @@ class BevelDriveSpec(BevelPair):
         for shaft, bearings in self.shafts():
             for i, bearing in enumerate(bearings, 1):
                 name = f"{shaft}_bearings.{i}"
-                spec = self.ball_bearing(bearing)
+                spec = self._bearing_under_load(shaft, bearing)
                 static = spec.static_left_out()
                 for note in spec.warnings():
                     if note == static:  # said once for all bearings, below
@@ -237,13 +236,15 @@ class BevelDriveSpec(BevelPair):
                       limits=BallBearingLimits(min_static_safety=self.limits.min_static_safety))
         return BallBearingSpec.model_construct(**fields)
 
-    def _as_ball_bearing(self, where: str, bearing: DriveBearing, adjusted: bool
-                         ) -> list[SpecFieldError]:
-        """Everything ``kind: rolling-bearing`` refuses of the bearing, checked by that
-        kind's own rules under the load it will carry (axial too where it locates, or is
-        adjusted against the other)."""
-        axial = 1.0 if bearing.locating or adjusted else 0.0
-        spec = self.ball_bearing(bearing, radial=1.0, axial=axial, speed=1.0)
+    def _bearing_under_load(self, shaft: str, bearing: DriveBearing) -> BallBearingSpec:
+        """The bearing as a ``kind: rolling-bearing`` spec under the kind of load it will
+        carry: radial, and axial too where it locates or is adjusted against the other."""
+        axial = bearing.locating or self.arrangement(shaft) != "locating-floating"
+        return self.ball_bearing(bearing, radial=1.0, axial=1.0 if axial else 0.0, speed=1.0)
+
+    def _as_ball_bearing(self, where: str, spec: BallBearingSpec) -> list[SpecFieldError]:
+        """Everything ``kind: rolling-bearing`` refuses of the bearing (``spec``, from
+        :meth:`_bearing_under_load`), checked by that kind's own rules."""
         problems = []
         for problem in own_problems(spec):
             if problem.field in ("lubrication", "contamination_factor", "reliability"):

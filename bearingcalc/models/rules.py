@@ -43,6 +43,10 @@ def rules_of(model: type[BaseModel]) -> tuple[Rule, ...]:
             if getattr(attribute, _RULE_MARK, False):
                 found.pop(name, None)
                 found[name] = attribute
+            elif name in found:
+                # A plain method of the same name would silently drop the rule.
+                raise TypeError(f"{klass.__qualname__}.{name} shadows the rule of that "
+                                "name of a base class: rename one of them")
     return tuple(found.values())
 
 
