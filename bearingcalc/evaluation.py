@@ -41,6 +41,8 @@ class Evaluation:
     units: dict[str, str]
     margins: dict[str, float]
     warnings: list[str] = field(default_factory=list)
+    #: names of the rows of the kind's tables of results (a duty cycle's bins)
+    row_names: dict[str, str] = field(default_factory=dict)
 
     @property
     def within_limits(self) -> bool:
@@ -177,6 +179,8 @@ def _layout(inputs: Any) -> Any:
         return tuple((key, _layout(value)) for key, value in inputs.items())
     if isinstance(inputs, list):
         return tuple(_layout(item) for item in inputs)
+    if isinstance(inputs, np.ndarray):  # a duty cycle's bins: their number must agree
+        return np.shape(inputs)
     return inputs if inputs is None or isinstance(inputs, str) else float
 
 
@@ -187,6 +191,8 @@ def _stacked(inputs: list[Any]) -> Any:
         return {key: _stacked([each[key] for each in inputs]) for key in first}
     if isinstance(first, list):
         return [_stacked([each[i] for each in inputs]) for i in range(len(first))]
+    if isinstance(first, np.ndarray):  # the bins stay on the first axis, the specs follow
+        return np.stack(inputs, axis=-1)
     return first if first is None or isinstance(first, str) else np.array(inputs)
 
 
@@ -261,7 +267,9 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
     margins = {key: value for key in kind.margins
                if (value := results.get(key)) is not None}
     name = spec.name or _default_name(document)
-    return Evaluation(document.source, kind.name, name, results, units, margins, warnings)
+    warnings += spec.result_notes(results)
+    return Evaluation(document.source, kind.name, name, results, units, margins, warnings,
+                      spec.row_names())
 
 
 def _default_name(document: Document) -> str:

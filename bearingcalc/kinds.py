@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import functools
 import importlib
-from collections.abc import Collection, Mapping
+import re
+from collections.abc import Collection, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -87,10 +88,13 @@ class Kind:
         """:meth:`evaluate`, plus where each of the solver's warnings holds."""
         with np.errstate(all="ignore"):
             solution = self.solver.evaluate(inputs, wanted)
+            duty = self.solver.duty
+            if duty is not None and inputs.get("duty_time") is not None:
+                solution = duty.combine(solution, inputs)
             status = self._with_member_failures(solution)
             for key, values in solution.results.items():
                 finite = np.isfinite(values)
-                if key in self.unbounded:
+                if key in self.unbounded or _bin_column(key) in self._unbounded_columns:
                     finite |= values == np.inf
                 if not finite.all():
                     status = np.where(finite | (status != 0), status, STATUS_DTYPE(OUT_OF_RANGE))
@@ -127,22 +131,35 @@ class Kind:
                 ok = ok & (results[margin] >= 0)
         return ok
 
-    @property
+    @functools.cached_property
     def results(self) -> Mapping[str, tuple[str, str]]:
-        """Result key -> (SI unit, meaning), in report order."""
-        return self.solver.results
+        """Result key -> (SI unit, meaning), in report order; with a duty cycle also the
+        cycle's own results and each bin's (``duty_3_speed``)."""
+        duty = self.solver.duty
+        if duty is None:
+            return self.solver.results
+        return ResultCatalogue({**self.solver.results, **duty.results}, duty.columns)
+
+    @property
+    def _unbounded_columns(self) -> tuple[str, ...]:
+        return () if self.solver.duty is None else self.solver.duty.unbounded
 
     @property
     def groups(self) -> Mapping[str, tuple[str, ...]]:
         """Table heading -> its results, for kinds with many results (else empty)."""
         return self.solver.groups
 
-    @property
+    @functools.cached_property
     def matrices(self) -> Mapping[str, tuple[tuple[str, ...], tuple[str, ...]]]:
         """Table heading -> (row prefixes, column suffixes): results shown as a small
-        table of their own, a row per member (``pinion_bearing_1``) and a column per
-        quantity (``radial_load``), whose keys are ``{row}_{column}``."""
-        return self.solver.matrices
+        table of their own, a row per member (``pinion_bearing_1``) or per bin of a duty
+        cycle (``duty_1``) and a column per quantity (``radial_load``), whose keys are
+        ``{row}_{column}``."""
+        duty = self.solver.duty
+        if duty is None:
+            return self.solver.matrices
+        bins = tuple(f"{DUTY_PREFIX}{k}" for k in range(1, MAX_BINS + 1))
+        return {**self.solver.matrices, "duty cycle": (bins, tuple(duty.columns))}
 
     @property
     def display(self) -> Mapping[str, tuple[str, float]]:
@@ -177,6 +194,52 @@ class Kind:
                                               else f"at {name}, {why}")
         reasons[OUT_OF_RANGE] = OUT_OF_RANGE_REASON
         return reasons
+
+
+#: The per-bin results of a duty cycle are keyed ``duty_{k}_{column}``, k from 1.
+DUTY_PREFIX = "duty_"
+MAX_BINS = 1000
+_BIN_KEY = re.compile(rf"{DUTY_PREFIX}(\d+)_(.+)")
+
+
+def _bin_column(key: str) -> str | None:
+    """The column of a per-bin result key (``duty_3_speed`` -> ``speed``), else None."""
+    found = _BIN_KEY.fullmatch(key)
+    return found.group(2) if found else None
+
+
+class ResultCatalogue(Mapping[str, tuple[str, str]]):
+    """A kind's results, (SI unit, meaning) by key, with the per-bin results of a duty
+    cycle found by their column; iterating gives the kind's own results only."""
+
+    def __init__(self, results: Mapping[str, tuple[str, str]],
+                 columns: Mapping[str, tuple[str, str]]) -> None:
+        self._results = dict(results)
+        self._columns = dict(columns)
+
+    def __getitem__(self, key: str) -> tuple[str, str]:
+        if key in self._results:
+            return self._results[key]
+        column = _bin_column(key)
+        if column is None or column not in self._columns:
+            raise KeyError(key)
+        unit, meaning = self._columns[column]
+        return unit, f"bin {_BIN_KEY.fullmatch(key).group(1)}: {meaning}"  # type: ignore[union-attr]
+
+    def __contains__(self, key: object) -> bool:
+        if not isinstance(key, str):
+            return False
+        try:
+            self[key]  # type: ignore[index]
+        except KeyError:
+            return False
+        return True
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._results)
+
+    def __len__(self) -> int:
+        return len(self._results)
 
 
 def _member_field(members: Members, name: str, field: str) -> str:

@@ -155,7 +155,7 @@ def _physics_cases() -> dict[str, str]:
     geometry = (SPECS / "ball-bearing-geometry.yaml").read_text()
     loaded = (SPECS / "thrust-bearing-loaded.yaml").read_text()
     oil = "lubrication: {viscosity_40: 68 mm^2/s, viscosity_100: 8.7 mm^2/s, temperature: %s}"
-    return {**_roller_cases(), **{
+    return {**_roller_cases(), **_duty_cases(), **{
         # Contradictory geometry: every size valid, together impossible.
         "ball-pitch-outside-rings.yaml": _mutate(ball, "pitch_diameter", "150 mm")
         + "bore_diameter: 45 mm\noutside_diameter: 100 mm\n",
@@ -263,6 +263,40 @@ def _physics_cases() -> dict[str, str]:
         "bevel-sizing-huge-reliability.yaml": sizing.replace("reliability: 0.99",
                                                              "reliability: 1" + "0" * 400),
     }}
+
+
+def _duty_cases() -> dict[str, str]:
+    """Duty cycles their rules refuse: each names the cycle, or the bin and its field."""
+    duty = (SPECS / "rolling-bearing-duty-cycle.yaml").read_text()
+    head, _, _ = duty.partition("duty_cycle:\n")
+    tail = "limits:\n" + duty.partition("limits:\n")[2]
+
+    def cycle(*bins: str) -> str:
+        return head + "duty_cycle:\n" + "".join(f"  - {{{item}}}\n" for item in bins) + tail
+
+    return {
+        "rolling-duty-shares-90.yaml": cycle("time: 50 %, radial_load: 6 kN",
+                                             "time: 40 %, radial_load: 9 kN"),
+        "rolling-duty-share-negative.yaml": cycle("time: 110 %, radial_load: 6 kN",
+                                                  "time: -10 %, radial_load: 9 kN"),
+        "rolling-duty-share-text.yaml": cycle("time: most, radial_load: 6 kN"),
+        "rolling-duty-unknown-field.yaml": cycle("time: 100 %, radial_load: 6 kN, colour: red"),
+        "rolling-duty-geometry-field.yaml": cycle("time: 100 %, radial_load: 6 kN, "
+                                                  "ball_diameter: 17 mm"),
+        "rolling-duty-all-at-rest.yaml": cycle("time: 50 %, radial_load: 6 kN, speed: 0 rpm",
+                                               "time: 50 %, radial_load: 9 kN, speed: 0 rpm"),
+        "rolling-duty-empty.yaml": head + "duty_cycle: []\n" + tail,
+        "rolling-duty-too-many.yaml": cycle(*["time: 0.000999, radial_load: 6 kN"] * 1001),
+        "rolling-duty-bad-load.yaml": cycle("time: 100 %, radial_load: 6 kNx"),
+        "rolling-duty-thrust-radial.yaml": cycle("time: 100 %, radial_load: 6 kN").replace(
+            "type: deep-groove", "type: thrust").replace("static_factor: 13\n", ""),
+        "rolling-duty-viscosity-with-grade.yaml": cycle("time: 100 %, radial_load: 6 kN, "
+                                                        "viscosity: 30 mm^2/s"),
+        "rolling-duty-speed-missing.yaml": cycle("time: 50 %, radial_load: 6 kN, "
+                                                 "speed: 1000 rpm",
+                                                 "time: 50 %, radial_load: 9 kN").replace(
+            "speed: 1500 rpm                # every bin's, unless the bin gives its own\n", ""),
+    }
 
 
 def _roller_cases() -> dict[str, str]:

@@ -12,7 +12,12 @@ from collections.abc import Collection, Mapping
 from numpy.typing import ArrayLike
 
 from bearingcalc.core import ball_bearing, roller_bearing
-from bearingcalc.core.solver import Solution, Solver
+from bearingcalc.core.duty_cycle import (
+    BEARING_COLUMNS,
+    BEARING_CYCLE_RESULTS,
+    rolling_bearing_cycle,
+)
+from bearingcalc.core.solver import DutyCycle, Solution, Solver
 
 #: Every type of the kind, ball types first.
 TYPES = (*ball_bearing.TYPES, *roller_bearing.TYPES)
@@ -58,4 +63,6 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
-                display=ball_bearing.DISPLAY)
+                display=ball_bearing.DISPLAY,
+                duty=DutyCycle(rolling_bearing_cycle, BEARING_CYCLE_RESULTS, BEARING_COLUMNS,
+                               unbounded=("modified_rating_life",)))

@@ -46,6 +46,28 @@ class Members:
 
 
 @dataclass(frozen=True)
+class DutyCycle:
+    """How a solver combines the bins of a duty cycle.
+
+    With a duty cycle, every numeric solver input carries the bins along its first axis
+    (the designs follow), with ``duty_time`` (each bin's share of the time) and
+    ``duty_speed`` (its speed, 0 for a bin that counts for the static safety only). The
+    solver solves every bin at once; ``combine`` turns that per-bin :class:`Solution`
+    into the cycle's, whose results keep their keys and meanings for the whole cycle,
+    add ``results``, and per bin ``duty_{k}_{column}`` (k from 1) for each of
+    ``columns``."""
+
+    #: ``combine(per_bin, inputs)`` -> the cycle's Solution
+    combine: Callable[[Solution, Mapping[str, Any]], Solution]
+    #: results only a cycle has: key -> (SI unit, meaning)
+    results: Mapping[str, tuple[str, str]]
+    #: per-bin results: column -> (SI unit, meaning)
+    columns: Mapping[str, tuple[str, str]]
+    #: columns that are +inf for a bin that does not turn
+    unbounded: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
 class Solver:
     """A solver module's description of itself."""
 
@@ -72,3 +94,5 @@ class Solver:
     #: result key -> {value: text}: results a table shows as words (a load case "1a"),
     #: while JSON and CSV keep the number
     labels: Mapping[str, Mapping[float, str]] = field(default_factory=dict)
+    #: how the solver combines a duty cycle's bins, or None (no duty cycles)
+    duty: DutyCycle | None = None

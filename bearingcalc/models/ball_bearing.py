@@ -5,13 +5,16 @@ rating life and ISO 76 static safety of ball and roller bearings (``docs/physics
 from __future__ import annotations
 
 import math
-from typing import Any, Literal
+from collections.abc import Mapping
+from typing import Any, ClassVar, Literal
 
 import numpy as np
 from pydantic import Field
 
+from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.ball_bearing_rules import GeometryRules, OperatingRules
 from bearingcalc.models.base import Spec, SpecModel
+from bearingcalc.models.duty import DutyCycleRules, bin_model
 from bearingcalc.models.lubrication import Lubrication
 from bearingcalc.models.materials import ElasticMaterial
 from bearingcalc.models.plain_numbers import (
@@ -30,8 +33,11 @@ from bearingcalc.models.quantities import (
     PositiveLength,
     PositiveStress,
     PositiveTime,
+    PositiveViscosity,
+    Temperature,
 )
 from bearingcalc.models.roller_bearing_rules import ROLLER_TYPES, RollerRules
+from bearingcalc.models.rules import whole_spec_rule
 
 RELIABILITY_RANGE = (0.90, 0.9995)
 #: ISO 76:2006 6.1: the contact pressure at C0 of a ball bearing and of a roller bearing.
@@ -126,8 +132,25 @@ class BearingFields(SpecModel):
     material: ElasticMaterial = ElasticMaterial()
 
 
-class BallBearingSpec(RollerRules, OperatingRules, GeometryRules, BearingFields, Spec):
-    """A rolling bearing sized by ISO 281 (life) and ISO 76 (static safety)."""
+BearingBin = bin_model("BearingBin", {
+    "radial_load": (Force, "Fr"), "axial_load": (Force, "Fa"),
+    "speed": (AngularSpeed, "the rotating ring relative to the other; 0: at rest"),
+    "inner_speed": (AngularSpeed, "inner ring, fixed frame"),
+    "outer_speed": (AngularSpeed, "outer ring, fixed frame"),
+    "temperature": (Temperature, "operating temperature (with the oil's grade)"),
+    "viscosity": (PositiveViscosity, "operating viscosity ν"),
+})
+
+
+class BallBearingSpec(DutyCycleRules, RollerRules, OperatingRules, GeometryRules,
+                      BearingFields, Spec):
+    """A rolling bearing sized by ISO 281 (life) and ISO 76 (static safety), at one
+    operating point or over a duty cycle."""
+
+    BIN_FIELDS: ClassVar[Mapping[str, str]] = {
+        "radial_load": "radial_load", "axial_load": "axial_load", "speed": "speed",
+        "inner_speed": "inner_speed", "outer_speed": "outer_speed",
+        "temperature": "lubrication.temperature", "viscosity": "lubrication.viscosity"}
 
     kind: Literal["rolling-bearing", "ball-bearing"]
     name: str | None = None
@@ -141,6 +164,36 @@ class BallBearingSpec(RollerRules, OperatingRules, GeometryRules, BearingFields,
     lubrication: Lubrication | None = None
     contamination_factor: UnitFraction | None = Field(None, description="eC, 0 to 1")
     limits: BallBearingLimits = BallBearingLimits()
+    duty_cycle: list[BearingBin] | None = Field(  # type: ignore[valid-type]
+        None, description="load cases with their shares of the time, in place of one "
+        "operating point (a field a bin leaves out is the spec's)")
+
+    def turning_speed(self) -> Any:
+        """The speed whose revolutions the life counts: the rings' relative speed; None
+        where the spec gives no speed."""
+        if self.speed is None and self.inner_speed is None and self.outer_speed is None:
+            return None
+        return self.relative_speed
+
+    def with_turning_speed(self, speed: Any) -> BallBearingSpec:
+        """The bearing with its inner ring at ``speed`` and its outer ring fixed."""
+        return self.model_copy(update={"speed": speed, "inner_speed": None,
+                                       "outer_speed": None})
+
+    @whole_spec_rule
+    def _bins_and_oil(self) -> SpecFieldError | None:
+        """A bin's temperature needs the oil's grade, a bin's viscosity the oil given by
+        its viscosity: the spec's lubrication says which."""
+        lubrication = self.lubrication
+        for k, item in enumerate(self.duty_cycle or [], 1):
+            for field, needed in (("temperature", "viscosity_40"), ("viscosity", "viscosity")):
+                if getattr(item, field) is not None and (
+                        lubrication is None or getattr(lubrication, needed) is None):
+                    return SpecFieldError(
+                        f"duty_cycle.{k}.{field}", f"bin {self.bin_label(k)}: a bin's {field} "
+                        f"needs lubrication: {{{needed}: ...}} in the spec itself"
+                        + (", with viscosity_100" if needed == "viscosity_40" else ""))
+        return None
 
     @property
     def angle(self) -> float:
@@ -230,7 +283,10 @@ class BallBearingSpec(RollerRules, OperatingRules, GeometryRules, BearingFields,
         return None
 
     def solver_inputs(self) -> dict[str, Any]:
-        """SI inputs of :func:`bearingcalc.core.ball_bearing.evaluate`."""
+        """SI inputs of :func:`bearingcalc.core.rolling_bearing.evaluate`: of the
+        operating point, or of every bin of the duty cycle."""
+        if self.duty_cycle is not None:
+            return self.cycle_inputs()
         lubrication = self.lubrication
         factors = self.load_factors
         return {

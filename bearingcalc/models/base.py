@@ -5,12 +5,13 @@ from __future__ import annotations
 import functools
 import math
 import typing
+from collections.abc import Mapping
 from typing import Any
 
 from pydantic import BaseModel, ConfigDict, ValidationInfo, model_validator
 from pydantic.fields import FieldInfo
 
-from bearingcalc.models.plain_numbers import _Count, _plain_number, _RangedNumber, _Reliability
+from bearingcalc.models.plain_numbers import _Count, _Percentage, _plain_number, _RangedNumber
 from bearingcalc.models.quantities import _Quantity
 from bearingcalc.models.rules import problems_of
 from bearingcalc.units import Dimension, parse_quantity
@@ -61,6 +62,14 @@ class Spec(SpecModel):
         """What the reader should know about how the results were found."""
         return []
 
+    def row_names(self) -> dict[str, str]:
+        """Names for the rows of the kind's tables of results (a duty cycle's bins)."""
+        return {}
+
+    def result_notes(self, results: Mapping[str, float | None]) -> list[str]:
+        """What the reader should know that only the results tell."""
+        return []
+
 
 def nested_model(info: FieldInfo) -> type[BaseModel] | None:
     """The spec model a field holds (``gear_a`` -> Gear), or None for a plain value."""
@@ -94,7 +103,7 @@ def field_parser(info: FieldInfo) -> tuple[str, Any, str] | None:
                     func.dimension.si_unit)
         if isinstance(func, _Count):
             return "integer", _whole_number, "1"
-        if func is _plain_number or isinstance(func, (_RangedNumber, _Reliability)):
+        if func is _plain_number or isinstance(func, (_Percentage, _RangedNumber)):
             return "number", _finite_number, "1"
     return None
 

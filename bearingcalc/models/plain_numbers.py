@@ -9,7 +9,7 @@ from typing import Annotated, Any
 
 from pydantic import BeforeValidator, WithJsonSchema
 
-from bearingcalc.number_grammar import UNSIGNED_DECIMAL
+from bearingcalc.number_grammar import DECIMAL, UNSIGNED_DECIMAL
 from bearingcalc.units import MAX_MAGNITUDE
 
 #: Largest count of balls or teeth: far above any real part, and small enough that
@@ -106,21 +106,26 @@ def ranged_number(low: float, high: float, what: str, example: str, *,
 PoissonRatio = ranged_number(-1.0, 0.5, "Poisson's ratio", "0.3", exclusive=True)
 
 
-class _Reliability:
-    """Validator of a reliability: '99 %' or the fraction 0.99, from ``low`` to ``high``.
+class _Percentage:
+    """Validator of a percentage: '99 %' or the fraction 0.99, from ``low`` to ``high``
+    (a reliability, a share of the time).
 
     A bare number above 1 is refused (it is a percentage written without its sign).
-    ``source`` names the rule the range comes from, for the message.
+    ``what`` names the quantity and ``source`` the rule the range comes from, for the
+    message; ``example`` is written as a percentage.
     """
 
-    def __init__(self, low: float, high: float, source: str) -> None:
+    def __init__(self, low: float, high: float, source: str, what: str = "reliability",
+                 example: str = "99") -> None:
         self.low, self.high, self.source = low, high, source
+        self.what, self.example = what, example
 
     def __call__(self, value: Any) -> float:
+        written = f"write a {self.what} as '{self.example} %' or {float(self.example) / 100:g}"
         if isinstance(value, str):
-            match = re.fullmatch(rf"\s*({UNSIGNED_DECIMAL})\s*%\s*", value, re.ASCII)
+            match = re.fullmatch(rf"\s*({DECIMAL})\s*%\s*", value, re.ASCII)
             if match is None:
-                raise ValueError(f"write a reliability as '99 %' or 0.99, got {value!r}")
+                raise ValueError(f"{written}, got {value!r}")
             fraction = float(match[1]) / 100.0
         elif isinstance(value, (int, float)) and not isinstance(value, bool):
             if isinstance(value, int) and value > 100:
@@ -130,16 +135,24 @@ class _Reliability:
                                  f"'{value:g} %'")
             fraction = float(value)
         else:
-            raise ValueError(f"write a reliability as '99 %' or 0.99, got {value!r}")
+            raise ValueError(f"{written}, got {value!r}")
         if not self.low <= fraction <= self.high:
             raise ValueError(f"must be from {100 * self.low:g} % to {100 * self.high:g} % "
                              f"({self.source}), got {100 * fraction:g} %")
         return fraction
 
 
-def reliability(low: float, high: float, source: str) -> Any:
-    """A reliability field: '99 %' or the fraction 0.99, from ``low`` to ``high``."""
-    return Annotated[float, BeforeValidator(_Reliability(low, high, source)), WithJsonSchema({
+def percentage(low: float, high: float, source: str, what: str = "reliability",
+               example: str = "99") -> Any:
+    """A percentage field: '99 %' or the fraction 0.99, from ``low`` to ``high``."""
+    validator = _Percentage(low, high, source, what, example)
+    return Annotated[float, BeforeValidator(validator), WithJsonSchema({
         "anyOf": [{"type": "string", "pattern": rf"^\s*{UNSIGNED_DECIMAL}\s*%\s*$"},
                   {"type": "number", "minimum": low, "maximum": high}],
-        "description": f"reliability, '99 %' or 0.99, from {100 * low:g} % to {100 * high:g} %"})]
+        "description": f"{what}, '{example} %' or {float(example) / 100:g}, from "
+                       f"{100 * low:g} % to {100 * high:g} %"})]
+
+
+def reliability(low: float, high: float, source: str) -> Any:
+    """A reliability field: '99 %' or the fraction 0.99, from ``low`` to ``high``."""
+    return percentage(low, high, source)

@@ -14,7 +14,7 @@ from __future__ import annotations
 import functools
 import inspect
 import types
-from collections.abc import Callable, Collection, Iterator
+from collections.abc import Callable, Collection, Iterator, Sequence
 from typing import Any
 
 from pydantic import BaseModel
@@ -23,7 +23,10 @@ from bearingcalc.errors import SpecFieldError
 
 #: A rule returns the problem it finds, a list of them, or None.
 Rule = Callable[[Any], "SpecFieldError | list[SpecFieldError] | None"]
+#: How a subject's problem reads in the whole spec: (problem, every subject has it) -> it.
+Renamer = Callable[[SpecFieldError, bool], SpecFieldError]
 _RULE_MARK = "_is_spec_rule"
+_WHOLE_MARK = "_is_whole_spec_rule"
 
 
 def rule(method: Rule) -> Rule:
@@ -32,6 +35,14 @@ def rule(method: Rule) -> Rule:
     problems are then reported in the order of their lines."""
     setattr(method, _RULE_MARK, True)
     return method
+
+
+def whole_spec_rule(method: Rule) -> Rule:
+    """A :func:`rule` of the spec as a whole, checked once even where the spec has
+    subjects of its own (``rule_subjects``: the bins of a duty cycle), which every other
+    rule checks one by one."""
+    setattr(method, _WHOLE_MARK, True)
+    return rule(method)
 
 
 @functools.cache
@@ -68,18 +79,61 @@ def _problems(model: BaseModel, invalid: frozenset[str]) -> Iterator[SpecFieldEr
             continue
         for problem in _problems(value, frozenset()):
             yield _within(name, problem)
+    subjects = _subjects(model, invalid)
     for check in rules_of(type(model)):
-        if not invalid:
-            problem = check(model)
+        if subjects is None or getattr(check, _WHOLE_MARK, False):
+            yield from _checked(check, model, invalid)
         else:
-            reads: set[str] = set()
-            try:
-                problem = check(_ReadRecorder(model, reads))
-            except (TypeError, ValueError, AttributeError, ArithmeticError):
-                continue  # a stand-in value the rule cannot use: its fields are invalid
-            if reads & invalid:
-                continue
-        yield from _as_list(problem)
+            yield from _checked_in_each(check, subjects, invalid)
+
+
+def _subjects(model: BaseModel, invalid: frozenset[str]
+              ) -> Sequence[tuple[BaseModel, Renamer]] | None:
+    """What a model's rules check in place of the model itself (``rule_subjects``, the
+    bins of a duty cycle), or None: the model. Where the fields that make the subjects
+    (``SUBJECT_FIELDS``) are invalid, or the subjects cannot be made, nothing: those
+    rules would judge the spec by what it does not say."""
+    make = getattr(model, "rule_subjects", None)
+    if make is None:
+        return None
+    if invalid & set(getattr(model, "SUBJECT_FIELDS", ())):
+        return []
+    try:
+        return make()  # type: ignore[no-any-return]
+    except (TypeError, ValueError, AttributeError, ArithmeticError):
+        return []
+
+
+def _checked(check: Rule, model: BaseModel, invalid: frozenset[str]
+             ) -> list[SpecFieldError]:
+    """The problems one rule finds in ``model``; with ``invalid`` fields, only if the
+    rule reads none of them."""
+    if not invalid:
+        return _as_list(check(model))
+    reads: set[str] = set()
+    try:
+        problem = check(_ReadRecorder(model, reads))
+    except (TypeError, ValueError, AttributeError, ArithmeticError):
+        return []  # a stand-in value the rule cannot use: its fields are invalid
+    return [] if reads & invalid else _as_list(problem)
+
+
+def _checked_in_each(check: Rule, subjects: Sequence[tuple[BaseModel, Renamer]],
+                     invalid: frozenset[str]) -> Iterator[SpecFieldError]:
+    """A rule's problems in each of a spec's subjects (the bins of a duty cycle): those
+    every subject has once, as the spec's, the others each as its subject's."""
+    found = [(rename, _checked(check, subject, invalid)) for subject, rename in subjects]
+    keys = [{(problem.field, problem.message) for problem in problems} for _, problems in found]
+    common = set.intersection(*keys) if keys else set()
+    said: set[tuple[str, str]] = set()
+    for rename, problems in found:
+        for problem in problems:
+            key = (problem.field, problem.message)
+            if key not in common:
+                yield rename(problem, False)
+            elif key not in said:
+                said.add(key)
+                yield rename(problem, True)
 
 
 def _held_models(model: BaseModel) -> Iterator[tuple[str, BaseModel]]:

@@ -145,7 +145,7 @@ def _print_matrix(out: Any, evaluation: Evaluation, heading: str, rows: Sequence
                 continue
             cells.append("" if value is None else format_number(
                 to_display(value, evaluation.units[key])[0]))
-        table.add_row(row, *cells)
+        table.add_row(safe_text(evaluation.row_names.get(row, row)), *cells)
     out.print(table)
 
 

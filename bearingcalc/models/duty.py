@@ -1,0 +1,223 @@
+"""Duty cycles in specs: a list of bins, each a share of the time with the operating
+fields that differ from the spec's own (``docs/specs.md``, "Duty cycles").
+
+A kind that takes a duty cycle mixes in :class:`DutyCycleRules`, declares
+``duty_cycle: list[<its bin model>] | None`` (made by :func:`bin_model`) and names its
+bin fields in ``BIN_FIELDS``. Each bin is the spec with the bin's fields in place of the
+spec's (the spec's own values are the defaults): the kind's rules check every bin as a
+spec of its own, and the solver receives every bin at once, along the first axis of
+each input (:class:`bearingcalc.core.solver.DutyCycle`).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from typing import TYPE_CHECKING, Any, ClassVar
+
+import numpy as np
+from pydantic import Field, create_model
+
+from bearingcalc.errors import SpecFieldError
+from bearingcalc.models.base import SpecModel
+from bearingcalc.models.field_path import FieldPath, replaced
+from bearingcalc.models.plain_numbers import percentage
+from bearingcalc.models.rules import whole_spec_rule
+
+#: At most this many bins (a spectrum from a load measurement is binned coarser).
+MAX_BINS = 1000
+#: How far the time shares may add up from 100 %.
+SHARE_TOLERANCE = 0.001
+
+TimeShare = percentage(0.0, 1.0, "a share of the cycle's time", what="time share",
+                       example="15")
+
+
+class DutyBin(SpecModel):
+    """One bin of a duty cycle: a share of the time, and optionally a name."""
+
+    name: str | None = Field(None, description="the bin's name; its number by default")
+    time: TimeShare = Field(description="the bin's share of the time, like 15 % or 0.15")
+
+
+def bin_model(name: str, fields: Mapping[str, tuple[Any, str]]) -> type[DutyBin]:
+    """A kind's bin model: :class:`DutyBin` with each of ``fields`` (annotation,
+    description) optional."""
+    return create_model(name, __base__=DutyBin,  # type: ignore[call-overload, no-any-return]
+                        **{field: (annotation | None, Field(None, description=description))
+                           for field, (annotation, description) in fields.items()})
+
+
+class DutyCycleRules:
+    """The rules and solver inputs of a spec with an optional duty cycle."""
+
+    #: bin field -> the spec's dotted field it sets
+    BIN_FIELDS: ClassVar[Mapping[str, str]] = {}
+    #: the fields the rules' subjects are made from (see rules.whole_spec_rule)
+    SUBJECT_FIELDS: ClassVar[tuple[str, ...]] = ("duty_cycle",)
+
+    if TYPE_CHECKING:
+        duty_cycle: list[Any] | None
+
+        def solver_inputs(self) -> dict[str, Any]: ...
+
+        def model_copy(self, *, update: Mapping[str, Any] | None = None) -> Any: ...
+
+    def turning_speed(self) -> Any:
+        """The speed whose revolutions a life counts. [rad/s]"""
+        raise NotImplementedError
+
+    def with_turning_speed(self, speed: Any) -> Any:
+        """The spec turning at ``speed`` instead. [rad/s]"""
+        raise NotImplementedError
+
+    def bin_label(self, k: int) -> str:
+        """How messages name bin ``k`` (from 1): its number, and its name if it has one."""
+        assert self.duty_cycle is not None
+        name = self.duty_cycle[k - 1].name
+        return f"{k} ({name})" if name else str(k)
+
+    def bins(self, stand_in: bool = True) -> list[Any]:
+        """Each bin as a spec of its own (without a duty cycle). With ``stand_in``, a bin
+        at rest turns at the cycle's fastest speed, so the kind's rules and solver, which
+        need a turning spec, take it: its life counts for nothing."""
+        assert self.duty_cycle is not None
+        views = []
+        for item in self.duty_cycle:
+            changes = [(FieldPath.parse(path), getattr(item, field))
+                       for field, path in self.BIN_FIELDS.items()
+                       if getattr(item, field) is not None]
+            views.append(replaced(self.model_copy(update={"duty_cycle": None}), changes))
+        if not stand_in:
+            return views
+        speeds = [_speed(view) for view in views]
+        fastest = np.max(np.stack(np.broadcast_arrays(*speeds)), axis=0)
+        # A bin with no speed at all stays without: the kind's rules say so.
+        return [view if view.turning_speed() is None or np.all(speed > 0)
+                else view.with_turning_speed(np.where(speed > 0, speed, fastest))
+                for view, speed in zip(views, speeds, strict=True)]
+
+    def cycle_inputs(self) -> dict[str, Any]:
+        """The solver inputs of every bin, along the first axis of each, with
+        ``duty_time`` and ``duty_speed`` (0 for a bin at rest)."""
+        assert self.duty_cycle is not None
+        inputs = _over_bins([view.solver_inputs() for view in self.bins()])
+        inputs["duty_time"] = np.array([item.time for item in self.duty_cycle])
+        inputs["duty_speed"] = np.stack(np.broadcast_arrays(*(
+            _speed(view) for view in self.bins(stand_in=False))))
+        return _bins_first(inputs, _design_rank(inputs))
+
+    def row_names(self) -> dict[str, str]:
+        """Each bin's name, by the prefix of its results (``duty_1``)."""
+        if not self.duty_cycle:
+            return {}
+        return {f"duty_{k}": item.name or str(k) for k, item in enumerate(self.duty_cycle, 1)}
+
+    def result_notes(self, results: Mapping[str, float | None]) -> list[str]:
+        """The bin that does the most damage, with its shares of the time and the damage."""
+        if not self.duty_cycle or len(self.duty_cycle) < 2:
+            return []
+        shares = {k: results.get(f"duty_{k}_damage_share") for k in
+                  range(1, len(self.duty_cycle) + 1)}
+        if any(share is None for share in shares.values()):
+            return []
+        k = max(shares, key=lambda index: shares[index])  # type: ignore[arg-type, return-value]
+        item = self.duty_cycle[k - 1]
+        return [f"bin {self.bin_label(k)} does the most damage: {100 * item.time:.3g} % of "
+                f"the time, {100 * shares[k]:.3g} % of the damage"]  # type: ignore[operator]
+
+    def rule_subjects(self) -> list[tuple[Any, Callable[[SpecFieldError, bool],
+                                                        SpecFieldError]]] | None:
+        """What the kind's rules check: each bin as a spec, with how its problems read
+        (a field the bin sets named in the bin; one the bins share, once); None without
+        a duty cycle, none for a cycle its own rules refuse."""
+        if self.duty_cycle is None:
+            return None
+        if not self.duty_cycle or len(self.duty_cycle) > MAX_BINS or not self._turns():
+            return []
+        return [(view, self._renamer(k)) for k, view in enumerate(self.bins(), 1)]
+
+    def _renamer(self, k: int) -> Callable[[SpecFieldError, bool], SpecFieldError]:
+        assert self.duty_cycle is not None
+        item = self.duty_cycle[k - 1]
+        given = {path: field for field, path in self.BIN_FIELDS.items()
+                 if getattr(item, field) is not None}
+
+        def rename(problem: SpecFieldError, shared: bool) -> SpecFieldError:
+            if problem.field in given:
+                return SpecFieldError(f"duty_cycle.{k}.{given[problem.field]}",
+                                      f"bin {self.bin_label(k)}: {problem.message}")
+            if shared:
+                return problem
+            return SpecFieldError(problem.field, f"bin {self.bin_label(k)}: {problem.message}",
+                                  at=problem.at or f"duty_cycle.{k}.time")
+        return rename
+
+    def _turns(self) -> bool:
+        """Whether a bin turns (or leaves its speed out: the kind's rules judge that)."""
+        speeds = [view.turning_speed() for view in self.bins(stand_in=False)]
+        return any(speed is None or np.any(np.asarray(speed, dtype=float) != 0)
+                   for speed in speeds)
+
+    @whole_spec_rule
+    def _cycle_given_right(self) -> SpecFieldError | None:
+        bins = self.duty_cycle
+        if bins is None:
+            return None
+        if not bins:
+            return SpecFieldError("duty_cycle", "is empty: give at least one bin, like "
+                                  "[{time: 100 %, radial_load: 5 kN}], or leave it out")
+        if len(bins) > MAX_BINS:
+            return SpecFieldError("duty_cycle", f"has {len(bins)} bins; at most {MAX_BINS}: "
+                                  "bin the spectrum coarser")
+        total = math.fsum(item.time for item in bins)
+        if abs(total - 1.0) > SHARE_TOLERANCE:
+            return SpecFieldError("duty_cycle", f"the time shares add up to {100 * total:g} %"
+                                  f", not 100 % (within {100 * SHARE_TOLERANCE:g} %)")
+        if not self._turns():
+            return SpecFieldError("duty_cycle", "every bin is at rest: the life needs a bin "
+                                  "that turns (a bin at zero speed counts for the static "
+                                  "safety only)")
+        return None
+
+
+def _speed(view: Any) -> Any:
+    """A bin's turning speed, 0 where it gives none. [rad/s]"""
+    speed = view.turning_speed()
+    return np.abs(np.asarray(0.0 if speed is None else speed, dtype=float))
+
+
+def _over_bins(per_bin: list[Any]) -> Any:
+    """Solver inputs of the bins, of one layout, with each number replaced by an array
+    of the bins' along a new first axis; words must agree (a bearing type)."""
+    first = per_bin[0]
+    if isinstance(first, dict):
+        return {key: _over_bins([each[key] for each in per_bin]) for key in first}
+    if isinstance(first, list):
+        return [_over_bins([each[i] for each in per_bin]) for i in range(len(first))]
+    if first is None or isinstance(first, str):
+        return first
+    return np.stack(np.broadcast_arrays(*(np.asarray(each, dtype=float) for each in per_bin)))
+
+
+def _design_rank(inputs: Any) -> int:
+    """The most axes any input has after the bins' (those of a study's designs)."""
+    if isinstance(inputs, dict):
+        return max((_design_rank(value) for value in inputs.values()), default=0)
+    if isinstance(inputs, list):
+        return max((_design_rank(item) for item in inputs), default=0)
+    return np.ndim(inputs) - 1 if isinstance(inputs, np.ndarray) else 0
+
+
+def _bins_first(inputs: Any, rank: int) -> Any:
+    """Every input with the bins on its first axis and ``rank`` design axes after them
+    (length 1 where it does not vary), so that inputs broadcast bin by bin."""
+    if isinstance(inputs, dict):
+        return {key: _bins_first(value, rank) for key, value in inputs.items()}
+    if isinstance(inputs, list):
+        return [_bins_first(item, rank) for item in inputs]
+    if not isinstance(inputs, np.ndarray):
+        return inputs
+    design = inputs.shape[1:]
+    return inputs.reshape((inputs.shape[0], *(1,) * (rank - len(design)), *design))
+
