@@ -19,7 +19,7 @@ import numpy as np
 from pydantic import BaseModel, ValidationError
 
 from bearingcalc.errors import SpecError, SpecFieldError
-from bearingcalc.kinds import KINDS, Kind, unknown_kind
+from bearingcalc.kinds import KINDS, Kind, bin_column, unknown_kind
 from bearingcalc.models.base import Spec, nested_model
 from bearingcalc.models.field_path import FieldPath, is_list_field
 from bearingcalc.models.rules import problems_despite
@@ -259,7 +259,8 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
             raise document.error(f"{key} cannot be computed for this design; please report it")
         if math.isinf(value):
             warnings.append(f"{key} is unbounded (null in JSON): "
-                            "the limit holds however far it goes")
+                            + ("the bin is at rest" if bin_column(key) is not None
+                               else "the limit holds however far it goes"))
             results[key] = None
         else:
             results[key] = value

@@ -94,7 +94,7 @@ class Kind:
             status = self._with_member_failures(solution)
             for key, values in solution.results.items():
                 finite = np.isfinite(values)
-                if key in self.unbounded or _bin_column(key) in self._unbounded_columns:
+                if key in self.unbounded or bin_column(key) in self._unbounded_columns:
                     finite |= values == np.inf
                 if not finite.all():
                     status = np.where(finite | (status != 0), status, STATUS_DTYPE(OUT_OF_RANGE))
@@ -202,7 +202,7 @@ MAX_BINS = 1000
 _BIN_KEY = re.compile(rf"{DUTY_PREFIX}(\d+)_(.+)")
 
 
-def _bin_column(key: str) -> str | None:
+def bin_column(key: str) -> str | None:
     """The column of a per-bin result key (``duty_3_speed`` -> ``speed``), else None."""
     found = _BIN_KEY.fullmatch(key)
     return found.group(2) if found else None
@@ -220,7 +220,7 @@ class ResultCatalogue(Mapping[str, tuple[str, str]]):
     def __getitem__(self, key: str) -> tuple[str, str]:
         if key in self._results:
             return self._results[key]
-        column = _bin_column(key)
+        column = bin_column(key)
         if column is None or column not in self._columns:
             raise KeyError(key)
         unit, meaning = self._columns[column]

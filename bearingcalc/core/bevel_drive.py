@@ -24,8 +24,9 @@ from bearingcalc.core.arrangements import (
     supports_positive,
 )
 from bearingcalc.core.common import broadcast_all, first_failure
+from bearingcalc.core.duty_cycle_gears import DRIVE_COLUMNS, DRIVE_CYCLE_RESULTS, drive_cycle
 from bearingcalc.core.roller_bearing import TYPES as ROLLER_TYPES
-from bearingcalc.core.solver import Members, Solution, Solver
+from bearingcalc.core.solver import DutyCycle, Members, Solution, Solver
 
 #: The Weibull slope of bearing makers' system-life formula: 10/9 when every bearing is a
 #: ball bearing, 9/8 when any is a roller bearing.
@@ -265,4 +266,6 @@ def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS, MATRICES,
                 members=BEARINGS,
-                labels={f"{name}_load_case": LOAD_CASES for name in _bearing_names()})
+                labels={f"{name}_load_case": LOAD_CASES for name in _bearing_names()},
+                duty=DutyCycle(drive_cycle, DRIVE_CYCLE_RESULTS, DRIVE_COLUMNS,
+                               unbounded=("system_modified_rating_life",)))

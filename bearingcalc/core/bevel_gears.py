@@ -21,7 +21,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core import bevel_sizing
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
-from bearingcalc.core.solver import Solution, Solver
+from bearingcalc.core.duty_cycle_gears import GEAR_COLUMNS, GEAR_CYCLE_RESULTS, gear_pair_cycle
+from bearingcalc.core.solver import DutyCycle, Solution, Solver
 
 #: The key of the apex-mismatch margin, max_apex_mismatch − |apex_mismatch|. It reads
 #: "slip_margin" in every output, as the other rolling kinds name their margin, and stays
@@ -336,4 +337,5 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
     return out, checks
 
 
-SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS)
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
+                duty=DutyCycle(gear_pair_cycle, GEAR_CYCLE_RESULTS, GEAR_COLUMNS))

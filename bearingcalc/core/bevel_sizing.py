@@ -22,6 +22,12 @@ MOUNTING_FACTOR = {"both-straddle": 1.00, "one-straddle": 1.10, "neither-straddl
 STEEL_ELASTIC_COEFFICIENT = 190.0
 
 
+#: The slopes b of AGMA 2003's life factors K_L = 1.683·N^(−b) (bending) and
+#: C_L = 3.4822·N^(−b) (contact) for N > 10⁷ cycles, as Budynas & Nisbett give them.
+BENDING_LIFE_SLOPE = 0.0323
+CONTACT_LIFE_SLOPE = 0.0602
+
+
 def blank_geometry(pinion_teeth: ArrayLike, gear_teeth: ArrayLike, module: ArrayLike,
                    pinion_pitch_angle: ArrayLike, gear_pitch_angle: ArrayLike,
                    face_width: ArrayLike, pressure_angle: ArrayLike) -> dict[str, NDArray]:
@@ -234,7 +240,8 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
     hb = np.asarray(hardness, dtype=float)
     n = np.asarray(cycles, dtype=float)
     r = np.asarray(reliability, dtype=float)
-    k_l, c_l = 1.683 * n ** -0.0323, 3.4822 * n ** -0.0602
+    k_l = 1.683 * n ** -BENDING_LIFE_SLOPE
+    c_l = 3.4822 * n ** -CONTACT_LIFE_SLOPE
     k_r = np.where(r >= 0.99, 0.50 - 0.25 * np.log10(1.0 - r), 0.70 - 0.15 * np.log10(1.0 - r))
     bending_safety = (0.30 * hb + 14.48) * k_l / (k_r * bending)
     contact_safety = (2.35 * hb + 162.89) * c_l / (np.sqrt(k_r) * contact)

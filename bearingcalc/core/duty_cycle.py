@@ -81,7 +81,7 @@ def miner_life(shares: ArrayLike, lives: ArrayLike, governing: NDArray) -> NDArr
     governing : the index of the governing bin of each design.
     """
     lives = np.asarray(lives, dtype=float)
-    reference = _at(lives, governing)
+    reference = at_bin(lives, governing)
     return reference / np.sum(np.asarray(shares, dtype=float) * (reference / lives), axis=0)
 
 
@@ -103,7 +103,7 @@ def mean_load(shares: ArrayLike, loads: ArrayLike, exponent: float,
     Source: ISO 281:2007; SKF, *Rolling bearings*, 2018, "Fluctuating load".
     """
     loads = np.asarray(loads, dtype=float)
-    reference = _at(loads, governing)
+    reference = at_bin(loads, governing)
     return reference * np.sum(np.asarray(shares, dtype=float)
                               * (loads / reference) ** exponent, axis=0) ** (1.0 / exponent)
 
@@ -114,7 +114,7 @@ def first_failure_over_bins(status: NDArray) -> NDArray:
     status = np.asarray(status)
     failed = status != 0
     first = np.argmax(failed, axis=0)
-    return np.where(failed.any(axis=0), _at(status, first), 0).astype(status.dtype)
+    return np.where(failed.any(axis=0), at_bin(status, first), 0).astype(status.dtype)
 
 
 def rolling_bearing_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
@@ -145,10 +145,10 @@ def rolling_bearing_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solut
         elif key in LARGEST:
             out[key] = np.max(values, axis=0)
         else:
-            out[key] = _at(values, governing)
+            out[key] = at_bin(values, governing)
     rating = results.get("pair_dynamic_load_rating", results["dynamic_load_rating"])
     out.update({
-        "equivalent_dynamic_load": p_mean, "load_ratio": _at(rating, governing) / p_mean,
+        "equivalent_dynamic_load": p_mean, "load_ratio": at_bin(rating, governing) / p_mean,
         "basic_rating_life": basic / revolutions_per_second,
         "basic_rating_life_revolutions": basic,
         "modified_rating_life": modified / revolutions_per_second,
@@ -159,22 +159,41 @@ def rolling_bearing_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solut
         out["life_margin"] = modified / revolutions_per_second / np.asarray(
             inputs["min_rating_life"], dtype=float)[0] - 1.0
     bin_life = np.where(speed > 0, lives / (np.abs(speed) / (2.0 * np.pi)), np.inf)
-    columns = {"time_share": time_share, "speed": speed,
-               "radial_load": inputs["radial_load"], "axial_load": inputs["axial_load"],
-               "equivalent_dynamic_load": results["equivalent_dynamic_load"],
-               "modified_rating_life": bin_life,
-               "damage_share": damage / np.sum(damage, axis=0)}
-    shape = np.shape(modified)
+    per_bin_results(out, {
+        "time_share": time_share, "speed": speed, "radial_load": inputs["radial_load"],
+        "axial_load": inputs["axial_load"],
+        "equivalent_dynamic_load": results["equivalent_dynamic_load"],
+        "modified_rating_life": bin_life, "damage_share": damage / np.sum(damage, axis=0)})
+    return cycle_solution(per_bin, out)
+
+
+def per_bin_results(out: dict[str, NDArray], columns: Mapping[str, ArrayLike]) -> None:
+    """Each column's bins as results ``duty_{k}_{column}``."""
+    shape = np.broadcast_shapes(*(np.shape(np.asarray(values))[1:]
+                                  for values in columns.values()))
+    bins = len(np.asarray(next(iter(columns.values()))))
     for column, values in columns.items():
-        per_bin_values = np.broadcast_to(np.asarray(values, dtype=float),
-                                         (len(time_share), *shape))
-        for k, row in enumerate(per_bin_values, 1):
+        for k, row in enumerate(np.broadcast_to(np.asarray(values, dtype=float),
+                                                (bins, *shape)), 1):
             out[f"duty_{k}_{column}"] = row
-    return Solution(out, first_failure_over_bins(per_bin.status),
-                    {key: np.any(flag, axis=0) for key, flag in per_bin.warnings.items()})
 
 
-def _at(values: ArrayLike, index: NDArray) -> NDArray:
+def cycle_solution(per_bin: Solution, out: dict[str, NDArray],
+              warnings: Mapping[str, NDArray] | None = None) -> Solution:
+    """The cycle's Solution: a design fails where a bin does; a warning holds where it
+    holds in a bin (or as ``warnings`` say)."""
+    status = first_failure_over_bins(per_bin.status)
+    shape = np.broadcast_shapes(status.shape, *(np.shape(v) for v in out.values()))
+    flags = {key: np.any(flag, axis=0) for key, flag in per_bin.warnings.items()}
+    flags.update(warnings or {})
+    return Solution({key: np.broadcast_to(value, shape) for key, value in out.items()},
+                    np.broadcast_to(status, shape),
+                    {key: np.broadcast_to(flag, shape) for key, flag in flags.items()},
+                    {name: np.broadcast_to(first_failure_over_bins(codes), shape)
+                     for name, codes in per_bin.members.items()})
+
+
+def at_bin(values: ArrayLike, index: NDArray) -> NDArray:
     """``values`` along the first axis at each design's ``index``."""
     values = np.asarray(values)
     index = np.asarray(index)

@@ -123,7 +123,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
     double_row = (rows > 1) | (arrangement in DOUBLE_ROW_PAIRS)
     z, dwe, lwe, dpw = (inputs.get(k) for k in ("roller_count", "roller_diameter",
                                                  "roller_length", "pitch_diameter"))
-    has_geometry = None not in (z, dwe, lwe, dpw)
+    has_geometry = all(value is not None for value in (z, dwe, lwe, dpw))
     alpha, fr, fa, speed = operating_point(inputs)
     out: dict[str, ArrayLike] = {}
     flags: dict[str, ArrayLike] = {}

@@ -4,7 +4,8 @@ located by one of them or adjusted against each other (``docs/physics.md`` §9).
 from __future__ import annotations
 
 import math
-from typing import Any, Literal
+from collections.abc import Mapping
+from typing import Any, ClassVar, Literal
 
 from pydantic import Field, model_validator
 
@@ -17,9 +18,16 @@ from bearingcalc.models.ball_bearing import (
     UnitFraction,
 )
 from bearingcalc.models.bevel_gears import BevelGearsLimits, BevelPair
+from bearingcalc.models.duty import DutyCycleRules, bin_model
 from bearingcalc.models.lubrication import Lubrication
 from bearingcalc.models.plain_numbers import Ratio
-from bearingcalc.models.quantities import AngularSpeed, Length, PositiveTime
+from bearingcalc.models.quantities import (
+    AngularSpeed,
+    Length,
+    PositivePower,
+    PositiveTime,
+    Torque,
+)
 from bearingcalc.models.rules import own_problems, rule
 
 #: Keys of a ball-bearing spec that the drive sets for every bearing itself.
@@ -65,9 +73,18 @@ class BevelDriveLimits(BevelGearsLimits):
     min_static_safety: Ratio = Field(1.0, description="judged on the smallest s0")
 
 
-class BevelDriveSpec(BevelPair):
+DriveBin = bin_model("DriveBin", {
+    "torque": (Torque, "on the pinion"), "power": (PositivePower, "through the pinion"),
+    "input_speed": (AngularSpeed, "the pinion shaft's speed; 0: at rest")})
+
+
+class BevelDriveSpec(DutyCycleRules, BevelPair):
     """A right-angle (or any-angle) bevel drive: the pair, its two shafts and their
-    bearings, from the input torque to every bearing's life."""
+    bearings, from the input torque to every bearing's life, at one operating point or
+    over a duty cycle."""
+
+    BIN_FIELDS: ClassVar[Mapping[str, str]] = {
+        field: field for field in ("torque", "power", "input_speed")}
 
     kind: Literal["bevel-drive"]
     input_speed: AngularSpeed = Field(description="the pinion shaft's speed")
@@ -84,6 +101,17 @@ class BevelDriveSpec(BevelPair):
     lubrication: Lubrication | None = None
     contamination_factor: UnitFraction | None = None
     limits: BevelDriveLimits = BevelDriveLimits()
+    duty_cycle: list[DriveBin] | None = Field(  # type: ignore[valid-type]
+        None, description="load cases with their shares of the time (a field a bin leaves "
+        "out is the spec's)")
+
+    def turning_speed(self) -> Any:
+        """The pinion shaft's speed."""
+        return self.input_speed
+
+    def with_turning_speed(self, speed: Any) -> BevelDriveSpec:
+        """The drive with its pinion shaft at ``speed``."""
+        return self.model_copy(update={"input_speed": speed})
 
     @rule
     def _pair_sized(self) -> SpecFieldError | None:
@@ -260,7 +288,9 @@ class BevelDriveSpec(BevelPair):
         """SI inputs of :func:`bearingcalc.core.bevel_drive.evaluate`: the pair's (gear A
         turning at input_speed relative to a resting arm), and under ``shafts`` each
         shaft's bearings: position, locating, and its ball-bearing inputs without the
-        loads and speeds the drive finds."""
+        loads and speeds the drive finds; of every bin of a duty cycle."""
+        if self.duty_cycle is not None:
+            return self.cycle_inputs()
         ratio = self.gear_a.teeth / self.gear_b.teeth  # type: ignore[operator]
         inputs: dict[str, Any] = self.pair_inputs(0.0, -self.input_speed * ratio, self.limits)
         inputs["input_speed"] = self.input_speed

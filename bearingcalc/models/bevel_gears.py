@@ -4,15 +4,17 @@ from __future__ import annotations
 
 import math
 import re
-from typing import Annotated, Any, Literal
+from collections.abc import Mapping
+from typing import Annotated, Any, ClassVar, Literal
 
 from pydantic import BeforeValidator, Field, WithJsonSchema
 
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
+from bearingcalc.models.duty import DutyCycleRules, bin_model
 from bearingcalc.models.plain_numbers import Ratio, ToothCount, ranged_number, reliability, shown
 from bearingcalc.models.quantities import Angle, AngularSpeed, PositiveLength, PositivePower, Torque
-from bearingcalc.models.rules import rule
+from bearingcalc.models.rules import rule, whole_spec_rule
 from bearingcalc.number_grammar import UNSIGNED_DECIMAL
 
 MOUNTING_FACTOR = {"both-straddle": 1.00, "one-straddle": 1.10, "neither-straddle": 1.25}
@@ -190,14 +192,43 @@ class BevelPair(Spec):
         }
 
 
-class BevelGearsSpec(BevelPair):
+GearsBin = bin_model("GearsBin", {
+    "torque": (Torque, "on gear A"), "power": (PositivePower, "through gear A"),
+    "arm_speed": (AngularSpeed, "ω_Z"), "gear_b_speed": (AngularSpeed, "Ω")})
+
+
+class BevelGearsSpec(DutyCycleRules, BevelPair):
     """Gear B on a shaft turning at Ω; gear A meshing with it on an arm turning at ω_Z."""
+
+    BIN_FIELDS: ClassVar[Mapping[str, str]] = {
+        field: field for field in ("torque", "power", "arm_speed", "gear_b_speed")}
 
     kind: Literal["bevel-gears"]
     arm_speed: AngularSpeed = Field(description="ω_Z, the arm carrying gear A")
     gear_b_speed: AngularSpeed = Field(0.0, description="Ω, gear B's shaft")
     limits: BevelGearsLimits = BevelGearsLimits()
+    duty_cycle: list[GearsBin] | None = Field(  # type: ignore[valid-type]
+        None, description="load cases with their shares of the time, for the strength "
+        "rating (a field a bin leaves out is the spec's)")
+
+    def turning_speed(self) -> Any:
+        """ω_Z − Ω, to which gear A's speed relative to its arm is proportional."""
+        return self.arm_speed - self.gear_b_speed
+
+    def with_turning_speed(self, speed: Any) -> BevelGearsSpec:
+        """The pair with its arm at ``speed`` and gear B's shaft at rest."""
+        return self.model_copy(update={"arm_speed": speed, "gear_b_speed": 0.0})
+
+    @whole_spec_rule
+    def _cycle_rated(self) -> SpecFieldError | None:
+        if self.duty_cycle is not None and self.rating is None:
+            return SpecFieldError("duty_cycle", "a duty cycle is for the strength rating: "
+                                  "give face_width, torque or power, and rating too")
+        return None
 
     def solver_inputs(self) -> dict[str, Any]:
-        """SI inputs of :func:`bearingcalc.core.bevel_gears.evaluate`."""
+        """SI inputs of :func:`bearingcalc.core.bevel_gears.evaluate`: of the operating
+        point, or of every bin of the duty cycle."""
+        if self.duty_cycle is not None:
+            return self.cycle_inputs()
         return self.pair_inputs(self.arm_speed, self.gear_b_speed, self.limits)

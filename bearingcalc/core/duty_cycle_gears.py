@@ -1,0 +1,210 @@
+"""Duty cycles of bevel pairs and of drives: AGMA 2003's stress-cycle curves with Miner's
+rule for the pair, and each bearing's life over the cycle (``docs/physics.md`` §11).
+
+As in :mod:`bearingcalc.core.duty_cycle`, every per-bin array has the bins on its first
+axis.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from bearingcalc.core.bevel_sizing import BENDING_LIFE_SLOPE, CONTACT_LIFE_SLOPE
+from bearingcalc.core.duty_cycle import (
+    LIFE_EXPONENT,
+    ROLLER_TYPES,
+    at_bin,
+    cycle_solution,
+    mean_load,
+    miner_life,
+    per_bin_results,
+    revolution_shares,
+)
+from bearingcalc.core.solver import Solution
+
+GEAR_COLUMNS: dict[str, tuple[str, str]] = {
+    "time_share": ("1", "share of the time"),
+    "speed": ("rad/s", "the pinion's speed (0: at rest, no damage)"),
+    "bending_stress": ("Pa", "AGMA 2003 s_F"),
+    "contact_stress": ("Pa", "AGMA 2003 s_H"),
+    "bending_damage_share": ("1", "share of the bending damage"),
+    "contact_damage_share": ("1", "share of the contact damage"),
+}
+GEAR_CYCLE_RESULTS: dict[str, tuple[str, str]] = {
+    "bending_damage": ("1", "D = Σ nᵢ/Nᵢ in bending at the specified loads"),
+    "contact_damage": ("1", "D = Σ nᵢ/Nᵢ in contact at the specified loads"),
+}
+DRIVE_COLUMNS: dict[str, tuple[str, str]] = {
+    **{key: GEAR_COLUMNS[key] for key in ("time_share", "speed")},
+    "torque": ("N·m", "the pinion's torque"),
+    "system_modified_rating_life": ("s", "the bearings' system life at this bin alone"),
+    "damage_share": ("1", "share of the bearings' damage, tᵢ·L/Lᵢ"),
+    **{key: GEAR_COLUMNS[key] for key in ("bending_damage_share", "contact_damage_share")},
+}
+DRIVE_CYCLE_RESULTS: dict[str, tuple[str, str]] = {
+    "mean_speed": ("rad/s", "n_m = Σ tᵢ·nᵢ of the pinion shaft"),
+    **GEAR_CYCLE_RESULTS,
+}
+#: The pair's results that are the worst over the bins.
+GEAR_LARGEST = ("bending_stress", "contact_stress", "tangential_force")
+
+
+def spectrum_safety(shares: ArrayLike, safeties: ArrayLike, slope: float,
+                    governing: NDArray) -> NDArray:
+    r"""The safety factor of a load spectrum on a stress-cycle curve N ∝ S^(−1/b).
+
+    Each bin alone, at the design life N, has the safety Sᵢ (its stress against the
+    allowable stress at N cycles); it would fail after Nᵢ = N·Sᵢ^(1/b) cycles. Its
+    share Uᵢ of the N cycles does the damage Uᵢ·N/Nᵢ, so by Miner's rule
+
+    .. math:: D = \sum_i U_i S_i^{-1/b}, \qquad S = D^{-b}
+
+    S is the factor on every bin's stress that makes D = 1 (the curve is one power law,
+    so the root is closed). Written about the governing bin g (the smallest Sᵢ):
+    S = S_g·(Σ Uᵢ·(Sᵢ/S_g)^(−1/b))^(−b).
+
+    Parameters
+    ----------
+    shares : Uᵢ, each bin's share of the pinion's cycles (first axis). [1]
+    safeties : Sᵢ at the design life, stress-based. [1]
+    slope : b of the life factor, K_L or C_L ∝ N^(−b). [1]
+    governing : the index of the governing bin of each design.
+
+    Source: ANSI/AGMA 2003-B97 (the life factors K_L, C_L as the kind uses them) with
+    Miner's rule (ANSI/AGMA 2101-D04, Annex A, load spectra).
+    """
+    safeties = np.asarray(safeties, dtype=float)
+    reference = at_bin(safeties, governing)
+    return reference * np.sum(np.asarray(shares, dtype=float)
+                              * (safeties / reference) ** (-1.0 / slope), axis=0) ** -slope
+
+
+def spectrum_damage(shares: ArrayLike, safeties: ArrayLike, slope: float) -> NDArray:
+    """D = Σ Uᵢ·Sᵢ^(−1/b), the damage of the spectrum at its loads (see
+    :func:`spectrum_safety`)."""
+    return np.sum(np.asarray(shares, dtype=float)
+                  * np.asarray(safeties, dtype=float) ** (-1.0 / slope), axis=0)
+
+
+def _gear_cycle(results: Mapping[str, NDArray], shares: NDArray, inputs: Mapping[str, Any],
+                out: dict[str, NDArray]) -> tuple[NDArray, NDArray]:
+    """The pair's rating over the cycle into ``out``; (bending, contact) damage per bin."""
+    if "bending_safety" not in results:
+        return np.zeros_like(shares), np.zeros_like(shares)
+    per_bin = {}
+    for load, slope in (("bending", BENDING_LIFE_SLOPE), ("contact", CONTACT_LIFE_SLOPE)):
+        safeties = results[f"{load}_safety"]
+        damage = shares * safeties ** (-1.0 / slope)
+        governing = np.argmax(damage, axis=0)
+        safety = spectrum_safety(shares, safeties, slope, governing)
+        out[f"{load}_safety"] = safety
+        out[f"{load}_damage"] = np.sum(damage, axis=0)
+        out[f"{load}_safety_margin"] = safety - np.asarray(
+            inputs[f"min_{load}_safety"], dtype=float)[0]
+        per_bin[load] = damage
+    for key in GEAR_LARGEST:
+        if key in results:
+            out[key] = np.max(results[key], axis=0)
+    return per_bin["bending"], per_bin["contact"]
+
+
+def gear_pair_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
+    """The cycle of a bevel pair: the spectrum safeties and damages in bending and
+    contact, the largest stresses; every other result that of the bin doing the most
+    bending damage."""
+    results = per_bin.results
+    shares, _ = _shares(inputs)
+    out = _at_governing(results, shares, results.get("bending_safety"), BENDING_LIFE_SLOPE)
+    bending, contact = _gear_cycle(results, shares, inputs, out)
+    columns = {"time_share": inputs["duty_time"], "speed": inputs["duty_speed"],
+               "bending_stress": results.get("bending_stress"),
+               "contact_stress": results.get("contact_stress"),
+               "bending_damage_share": _normalised(bending),
+               "contact_damage_share": _normalised(contact)}
+    per_bin_results(out, {k: v for k, v in columns.items() if v is not None})
+    return cycle_solution(per_bin, out)
+
+
+def drive_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
+    """The cycle of a drive: the pair's as :func:`gear_pair_cycle`, each bearing's life
+    over the cycle (1/L = Σ tᵢ/Lᵢ over the bins that turn, in time; P_m by its family's
+    exponent), the system life of those, the smallest static safety."""
+    from bearingcalc.core import bevel_drive
+
+    results = per_bin.results
+    shares, mean_speed = _shares(inputs)
+    moving = np.asarray(inputs["duty_time"], dtype=float) * (
+        np.asarray(inputs["duty_speed"], dtype=float) > 0)
+    moving = moving / np.sum(moving, axis=0)
+    system = results["system_modified_rating_life"]
+    system_damage = moving / system
+    governing = np.argmax(system_damage, axis=0)
+    out = {key: at_bin(values, governing) for key, values in results.items()}
+    bending, contact = _gear_cycle(results, shares, inputs, out)
+    basic, modified, rollers = [], [], False
+    for shaft, bearings in inputs["shafts"].items():
+        for i, bearing in enumerate(bearings, 1):
+            name = f"{shaft}_bearing_{i}"
+            family = "roller" if bearing["bearing_type"] in ROLLER_TYPES else "ball"
+            rollers |= family == "roller"
+            for key, life in (("basic_rating_life", basic), ("modified_rating_life", modified)):
+                lives = results[f"{name}_{key}"]
+                out[f"{name}_{key}"] = miner_life(moving, lives,
+                                                  np.argmax(moving / lives, axis=0))
+                life.append(out[f"{name}_{key}"])
+            loads = results[f"{name}_equivalent_dynamic_load"]
+            out[f"{name}_equivalent_dynamic_load"] = mean_load(
+                shares, loads, LIFE_EXPONENT[family],
+                np.argmax(shares * loads ** LIFE_EXPONENT[family], axis=0))
+            for key in ("radial_load", "axial_load", "induced_axial_load"):
+                if f"{name}_{key}" in results:
+                    out[f"{name}_{key}"] = np.max(results[f"{name}_{key}"], axis=0)
+            if f"{name}_static_safety_factor" in results:
+                out[f"{name}_static_safety_factor"] = np.min(
+                    results[f"{name}_static_safety_factor"], axis=0)
+    slope = bevel_drive.ROLLER_WEIBULL_SLOPE if rollers else bevel_drive.WEIBULL_SLOPE
+    out["system_basic_rating_life"] = bevel_drive.system_life(basic, slope)
+    out["system_modified_rating_life"] = bevel_drive.system_life(modified, slope)
+    if "life_margin" in results:
+        out["life_margin"] = out["system_modified_rating_life"] / np.asarray(
+            inputs["min_rating_life"], dtype=float)[0] - 1.0
+    if "static_safety_margin" in results:
+        out["static_safety_margin"] = np.min(results["static_safety_margin"], axis=0)
+    out["mean_speed"] = mean_speed
+    bin_life = np.where(np.asarray(inputs["duty_speed"]) > 0, system, np.inf)
+    per_bin_results(out, {
+        "time_share": inputs["duty_time"], "speed": inputs["duty_speed"],
+        "torque": results["tangential_force"] * results["gear_a_mean_pitch_diameter"] / 2.0,
+        "system_modified_rating_life": bin_life,
+        "damage_share": _normalised(system_damage),
+        "bending_damage_share": _normalised(bending),
+        "contact_damage_share": _normalised(contact)})
+    names = [f"{shaft}_bearing_{i}" for shaft, bearings in inputs["shafts"].items()
+             for i in range(1, len(bearings) + 1)]
+    weakest = np.argmin(np.stack(np.broadcast_arrays(*modified)), axis=0)
+    return cycle_solution(per_bin, out, {f"weakest_{name}": weakest == i
+                                    for i, name in enumerate(names)})
+
+
+def _shares(inputs: Mapping[str, Any]) -> tuple[NDArray, NDArray]:
+    time_share = np.asarray(inputs["duty_time"], dtype=float)
+    return revolution_shares(time_share / np.sum(time_share, axis=0), inputs["duty_speed"])
+
+
+def _at_governing(results: Mapping[str, NDArray], shares: NDArray,
+                  safeties: NDArray | None, slope: float) -> dict[str, NDArray]:
+    """Every result at the bin doing the most damage (the first bin without a rating)."""
+    if safeties is None:
+        governing = np.zeros(np.shape(shares)[1:], dtype=int)
+    else:
+        governing = np.argmax(shares * np.asarray(safeties) ** (-1.0 / slope), axis=0)
+    return {key: at_bin(values, governing) for key, values in results.items()}
+
+
+def _normalised(damage: NDArray) -> NDArray:
+    total = np.sum(damage, axis=0)
+    return np.where(total > 0, damage / np.where(total > 0, total, 1.0), 0.0)
