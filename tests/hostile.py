@@ -292,6 +292,14 @@ def _duty_cases() -> dict[str, str]:
             "type: deep-groove", "type: thrust").replace("static_factor: 13\n", ""),
         "rolling-duty-viscosity-with-grade.yaml": cycle("time: 100 %, radial_load: 6 kN, "
                                                         "viscosity: 30 mm^2/s"),
+        "bevel-duty-not-rated.yaml": (SPECS / "bevel-gears.yaml").read_text()
+        + "duty_cycle:\n  - {time: 100 %, arm_speed: 100 rpm}\n",
+        "bevel-duty-face-width.yaml": (SPECS / "bevel-gears-sizing.yaml").read_text()
+        + "duty_cycle:\n  - {time: 100 %, face_width: 30 mm}\n",
+        "drive-duty-shares.yaml": (SPECS / "bevel-drive.yaml").read_text()
+        + "duty_cycle:\n  - {time: 60 %}\n  - {time: 60 %, torque: 70 N*m}\n",
+        "drive-duty-all-at-rest.yaml": (SPECS / "bevel-drive.yaml").read_text()
+        + "duty_cycle:\n  - {time: 100 %, input_speed: 0 rpm}\n",
         "rolling-duty-speed-missing.yaml": cycle("time: 50 %, radial_load: 6 kN, "
                                                  "speed: 1000 rpm",
                                                  "time: 50 %, radial_load: 9 kN").replace(

@@ -128,12 +128,10 @@ def _checked_in_each(check: Rule, subjects: Sequence[tuple[BaseModel, Renamer]],
     said: set[tuple[str, str]] = set()
     for rename, problems in found:
         for problem in problems:
-            key = (problem.field, problem.message)
-            if key not in common:
-                yield rename(problem, False)
-            elif key not in said:
-                said.add(key)
-                yield rename(problem, True)
+            named = rename(problem, (problem.field, problem.message) in common)
+            if (named.field, named.message) not in said:
+                said.add((named.field, named.message))
+                yield named
 
 
 def _held_models(model: BaseModel) -> Iterator[tuple[str, BaseModel]]:
