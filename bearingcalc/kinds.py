@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from bearingcalc.core.common import STATUS_DTYPE
-from bearingcalc.core.solver import Members, Solution, Solver
+from bearingcalc.core.solver import BIN_PREFIX, MAX_BINS, Members, Solution, Solver
 
 if TYPE_CHECKING:
     from bearingcalc.models.base import Spec
@@ -158,7 +158,7 @@ class Kind:
         duty = self.solver.duty
         if duty is None:
             return self.solver.matrices
-        bins = tuple(f"{DUTY_PREFIX}{k}" for k in range(1, MAX_BINS + 1))
+        bins = tuple(f"{BIN_PREFIX}{k}" for k in range(1, MAX_BINS + 1))
         return {**self.solver.matrices, "duty cycle": (bins, tuple(duty.columns))}
 
     @property
@@ -196,10 +196,7 @@ class Kind:
         return reasons
 
 
-#: The per-bin results of a duty cycle are keyed ``duty_{k}_{column}``, k from 1.
-DUTY_PREFIX = "duty_"
-MAX_BINS = 1000
-_BIN_KEY = re.compile(rf"{DUTY_PREFIX}(\d+)_(.+)")
+_BIN_KEY = re.compile(rf"{BIN_PREFIX}(\d+)_(.+)")
 
 
 def bin_column(key: str) -> str | None:

@@ -15,7 +15,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core.iso281 import LIFE_EXPONENT
 from bearingcalc.core.roller_ratings import RADIAL_ROLLER_TYPES, THRUST_ROLLER_TYPES
-from bearingcalc.core.solver import Solution
+from bearingcalc.core.solver import BIN_PREFIX, Solution
 
 ROLLER_TYPES = RADIAL_ROLLER_TYPES + THRUST_ROLLER_TYPES
 
@@ -175,7 +175,7 @@ def per_bin_results(out: dict[str, NDArray], columns: Mapping[str, ArrayLike]) -
     for column, values in columns.items():
         for k, row in enumerate(np.broadcast_to(np.asarray(values, dtype=float),
                                                 (bins, *shape)), 1):
-            out[f"duty_{k}_{column}"] = row
+            out[f"{BIN_PREFIX}{k}_{column}"] = row
 
 
 def cycle_solution(per_bin: Solution, out: dict[str, NDArray],

@@ -29,8 +29,8 @@ from bearingcalc.core.solver import Solution
 GEAR_COLUMNS: dict[str, tuple[str, str]] = {
     "time_share": ("1", "share of the time"),
     "speed": ("rad/s", "the pinion's speed (0: at rest, no damage)"),
-    "bending_stress": ("Pa", "AGMA 2003 s_F"),
-    "contact_stress": ("Pa", "AGMA 2003 s_H"),
+    "bending_stress": ("Pa", "AGMA 2003 s_F (0 at rest: no running stress)"),
+    "contact_stress": ("Pa", "AGMA 2003 s_H (0 at rest)"),
     "bending_damage_share": ("1", "share of the bending damage"),
     "contact_damage_share": ("1", "share of the contact damage"),
 }
@@ -106,23 +106,36 @@ def _gear_cycle(results: Mapping[str, NDArray], shares: NDArray, inputs: Mapping
         out[f"{load}_safety_margin"] = safety - np.asarray(
             inputs[f"min_{load}_safety"], dtype=float)[0]
         per_bin[load] = damage
+    turning = _turning(inputs)
     for key in GEAR_LARGEST:
-        if key in results:
-            out[key] = np.max(results[key], axis=0)
+        if key in results:  # a running stress: a bin at rest has none
+            out[key] = np.max(np.where(turning, results[key], -np.inf), axis=0)
     return per_bin["bending"], per_bin["contact"]
+
+
+def _turning(inputs: Mapping[str, Any]) -> NDArray:
+    """Where a bin turns (its speed above 0)."""
+    return np.asarray(inputs["duty_speed"], dtype=float) > 0
 
 
 def gear_pair_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
     """The cycle of a bevel pair: the spectrum safeties and damages in bending and
-    contact, the largest stresses; every other result that of the bin doing the most
-    bending damage."""
+    contact, the largest running stresses (of the bins that turn); every other result
+    that of the bin doing the most bending damage."""
     results = per_bin.results
     shares, _ = _shares(inputs)
     out = _at_governing(results, shares, results.get("bending_safety"), BENDING_LIFE_SLOPE)
     bending, contact = _gear_cycle(results, shares, inputs, out)
-    columns = {"time_share": inputs["duty_time"], "speed": inputs["duty_speed"],
-               "bending_stress": results.get("bending_stress"),
-               "contact_stress": results.get("contact_stress"),
+    turning = _turning(inputs)
+
+    def running(key: str) -> NDArray | None:
+        values = results.get(key)
+        return None if values is None else np.where(turning, np.abs(values), 0.0)
+
+    columns = {"time_share": inputs["duty_time"],
+               "speed": running("gear_a_speed_relative_to_arm"),
+               "bending_stress": running("bending_stress"),
+               "contact_stress": running("contact_stress"),
                "bending_damage_share": _normalised(bending),
                "contact_damage_share": _normalised(contact)}
     per_bin_results(out, {k: v for k, v in columns.items() if v is not None})

@@ -45,6 +45,12 @@ class Members:
     set_by_composite: Mapping[str, str] = field(default_factory=dict)
 
 
+#: A duty cycle's per-bin results are keyed ``{BIN_PREFIX}{k}_{column}``, k from 1.
+BIN_PREFIX = "duty_"
+#: At most this many bins (a spectrum from a load measurement is binned coarser).
+MAX_BINS = 1000
+
+
 @dataclass(frozen=True)
 class DutyCycle:
     """How a solver combines the bins of a duty cycle.

@@ -18,14 +18,13 @@ from typing import TYPE_CHECKING, Any, ClassVar
 import numpy as np
 from pydantic import Field, create_model
 
+from bearingcalc.core.solver import BIN_PREFIX, MAX_BINS
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import SpecModel
 from bearingcalc.models.field_path import FieldPath, replaced
 from bearingcalc.models.plain_numbers import percentage
 from bearingcalc.models.rules import whole_spec_rule
 
-#: At most this many bins (a spectrum from a load measurement is binned coarser).
-MAX_BINS = 1000
 #: How far the time shares may add up from 100 %.
 SHARE_TOLERANCE = 0.001
 
@@ -81,43 +80,40 @@ class DutyCycleRules:
         """Each bin as a spec of its own (without a duty cycle). With ``stand_in``, a bin
         at rest turns at the cycle's fastest speed, so the kind's rules and solver, which
         need a turning spec, take it: its life counts for nothing."""
+        views = self._as_written()
+        return _standing_in(views) if stand_in else views
+
+    def _as_written(self) -> list[Any]:
+        """Each bin as a spec of its own, speeds as the bins and the spec give them."""
         assert self.duty_cycle is not None
-        views = []
-        for item in self.duty_cycle:
-            changes = [(FieldPath.parse(path), getattr(item, field))
-                       for field, path in self.BIN_FIELDS.items()
-                       if getattr(item, field) is not None]
-            views.append(replaced(self.model_copy(update={"duty_cycle": None}), changes))
-        if not stand_in:
-            return views
-        speeds = [_speed(view) for view in views]
-        fastest = np.max(np.stack(np.broadcast_arrays(*speeds)), axis=0)
-        # A bin with no speed at all stays without: the kind's rules say so.
-        return [view if view.turning_speed() is None or np.all(speed > 0)
-                else view.with_turning_speed(np.where(speed > 0, speed, fastest))
-                for view, speed in zip(views, speeds, strict=True)]
+        base = self.model_copy(update={"duty_cycle": None})
+        return [replaced(base, [(FieldPath.parse(path), getattr(item, field))
+                                for field, path in self.BIN_FIELDS.items()
+                                if getattr(item, field) is not None])
+                for item in self.duty_cycle]
 
     def cycle_inputs(self) -> dict[str, Any]:
         """The solver inputs of every bin, along the first axis of each, with
         ``duty_time`` and ``duty_speed`` (0 for a bin at rest)."""
         assert self.duty_cycle is not None
-        inputs = _over_bins([view.solver_inputs() for view in self.bins()])
+        written = self._as_written()
+        inputs = _over_bins([view.solver_inputs() for view in _standing_in(written)])
         inputs["duty_time"] = np.array([item.time for item in self.duty_cycle])
-        inputs["duty_speed"] = np.stack(np.broadcast_arrays(*(
-            _speed(view) for view in self.bins(stand_in=False))))
+        inputs["duty_speed"] = np.stack(np.broadcast_arrays(*map(_speed, written)))
         return _bins_first(inputs, _design_rank(inputs))
 
     def row_names(self) -> dict[str, str]:
         """Each bin's name, by the prefix of its results (``duty_1``)."""
         if not self.duty_cycle:
             return {}
-        return {f"duty_{k}": item.name or str(k) for k, item in enumerate(self.duty_cycle, 1)}
+        return {f"{BIN_PREFIX}{k}": item.name or str(k)
+                for k, item in enumerate(self.duty_cycle, 1)}
 
     def result_notes(self, results: Mapping[str, float | None]) -> list[str]:
         """The bin that does the most damage, with its shares of the time and the damage."""
         if not self.duty_cycle or len(self.duty_cycle) < 2:
             return []
-        shares = {k: results.get(f"duty_{k}_damage_share") for k in
+        shares = {k: results.get(f"{BIN_PREFIX}{k}_damage_share") for k in
                   range(1, len(self.duty_cycle) + 1)}
         if any(share is None for share in shares.values()):
             return []
@@ -133,9 +129,12 @@ class DutyCycleRules:
         a duty cycle, none for a cycle its own rules refuse."""
         if self.duty_cycle is None:
             return None
-        if not self.duty_cycle or len(self.duty_cycle) > MAX_BINS or not self._turns():
+        if not self.duty_cycle or len(self.duty_cycle) > MAX_BINS:
             return []
-        return [(view, self._renamer(k)) for k, view in enumerate(self.bins(), 1)]
+        written = self._as_written()
+        if not _turns(written):
+            return []
+        return [(view, self._renamer(k)) for k, view in enumerate(_standing_in(written), 1)]
 
     def _renamer(self, k: int) -> Callable[[SpecFieldError, bool], SpecFieldError]:
         assert self.duty_cycle is not None
@@ -153,11 +152,6 @@ class DutyCycleRules:
                                   at=problem.at or f"duty_cycle.{k}.time")
         return rename
 
-    def _turns(self) -> bool:
-        """Whether a bin turns (or leaves its speed out: the kind's rules judge that)."""
-        speeds = [view.turning_speed() for view in self.bins(stand_in=False)]
-        return any(speed is None or np.any(np.asarray(speed, dtype=float) != 0)
-                   for speed in speeds)
 
     @whole_spec_rule
     def _cycle_given_right(self) -> SpecFieldError | None:
@@ -174,11 +168,28 @@ class DutyCycleRules:
         if abs(total - 1.0) > SHARE_TOLERANCE:
             return SpecFieldError("duty_cycle", f"the time shares add up to {100 * total:g} %"
                                   f", not 100 % (within {100 * SHARE_TOLERANCE:g} %)")
-        if not self._turns():
+        if not _turns(self._as_written()):
             return SpecFieldError("duty_cycle", "every bin is at rest: the life needs a bin "
                                   "that turns (a bin at zero speed counts for the static "
                                   "safety only)")
         return None
+
+
+def _turns(views: list[Any]) -> bool:
+    """Whether a bin turns (or leaves its speed out: the kind's rules judge that)."""
+    return any(view.turning_speed() is None
+               or np.any(np.asarray(view.turning_speed(), dtype=float) != 0) for view in views)
+
+
+def _standing_in(views: list[Any]) -> list[Any]:
+    """The bins, each at rest turning at the fastest bin's speed instead (see
+    :meth:`DutyCycleRules.bins`); a bin with no speed at all stays without, for the
+    kind's rules to say so."""
+    speeds = [_speed(view) for view in views]
+    fastest = np.max(np.stack(np.broadcast_arrays(*speeds)), axis=0)
+    return [view if view.turning_speed() is None or np.all(speed > 0)
+            else view.with_turning_speed(np.where(speed > 0, speed, fastest))
+            for view, speed in zip(views, speeds, strict=True)]
 
 
 def _speed(view: Any) -> Any:
