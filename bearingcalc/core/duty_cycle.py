@@ -179,7 +179,7 @@ def per_bin_results(out: dict[str, NDArray], columns: Mapping[str, ArrayLike]) -
 
 
 def cycle_solution(per_bin: Solution, out: dict[str, NDArray],
-              warnings: Mapping[str, NDArray] | None = None) -> Solution:
+                   warnings: Mapping[str, NDArray] | None = None) -> Solution:
     """The cycle's Solution: a design fails where a bin does; a warning holds where it
     holds in a bin (or as ``warnings`` say)."""
     status = first_failure_over_bins(per_bin.status)
