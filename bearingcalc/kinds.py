@@ -120,8 +120,10 @@ class Kind:
         return MEMBER_CODES_FROM + index * (max(members.solver.status_reasons) + 1)
 
     def limit_values(self, inputs: Mapping[str, Any]) -> dict[str, float]:
-        """Result key -> its symmetric limit, read from the solver ``inputs``."""
-        return {key: float(inputs[limit]) for key, limit in self.limits.items()}
+        """Result key -> its symmetric limit, read from the solver ``inputs`` (a limit is
+        one number, repeated along a duty cycle's bins)."""
+        return {key: float(np.asarray(inputs[limit], dtype=float).flat[0])
+                for key, limit in self.limits.items()}
 
     def within_limits(self, results: Mapping[str, NDArray], status: NDArray) -> NDArray:
         """Where a design is possible (status 0) and every margin it has is >= 0."""

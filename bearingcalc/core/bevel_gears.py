@@ -311,14 +311,17 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
     # Not a result: the undercut warning's flag, which evaluate() takes out.
     out["undercut"] = out["gear_a_virtual_teeth"] < 2.0 / np.sin(phi) ** 2
     speed = np.abs(kinematics["gear_a_speed_relative_to_arm"])
-    if inputs.get("torque") is not None:
-        torque = np.abs(np.asarray(inputs["torque"], dtype=float))
-    elif inputs.get("power") is not None:
-        checks.append((8, ~(speed > 0)))
-        with np.errstate(divide="ignore", invalid="ignore"):
-            torque = np.asarray(inputs["power"], dtype=float) / speed
-    else:
+    given, power = inputs.get("torque"), inputs.get("power")
+    if given is None and power is None:
         return out, checks
+    # A duty cycle's bins may give either: NaN marks a bin that gives the other.
+    torque = np.full(np.shape(speed), np.nan) if given is None else np.abs(
+        np.asarray(given, dtype=float))
+    if power is not None:
+        by_power = np.isnan(torque)
+        checks.append((8, by_power & ~(speed > 0)))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            torque = np.where(by_power, np.asarray(power, dtype=float) / speed, torque)
     out.update(bevel_sizing.tooth_forces(torque, out["gear_a_mean_pitch_diameter"], phi,
                                          alpha, beta))
     if inputs.get("quality_number") is None:

@@ -50,7 +50,7 @@ DRIVE_CYCLE_RESULTS: dict[str, tuple[str, str]] = {
     **GEAR_CYCLE_RESULTS,
 }
 #: The pair's results that are the worst over the bins.
-GEAR_LARGEST = ("bending_stress", "contact_stress", "tangential_force")
+GEAR_LARGEST = ("bending_stress", "contact_stress")
 
 
 def spectrum_safety(shares: ArrayLike, safeties: ArrayLike, slope: float,
@@ -150,9 +150,10 @@ def drive_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
 
     results = per_bin.results
     shares, mean_speed = _shares(inputs)
-    moving = np.asarray(inputs["duty_time"], dtype=float) * (
-        np.asarray(inputs["duty_speed"], dtype=float) > 0)
-    moving = moving / np.sum(moving, axis=0)
+    # Time at rest counts in the hours, not in the damage: 1/L = Σ tᵢ/Lᵢ over the bins
+    # that turn is the Palmgren–Miner sum in revolutions at the cycle's mean speed.
+    time_share = np.asarray(inputs["duty_time"], dtype=float)
+    moving = time_share / np.sum(time_share, axis=0) * _turning(inputs)
     system = results["system_modified_rating_life"]
     system_damage = moving / system
     governing = np.argmax(system_damage, axis=0)
@@ -188,14 +189,20 @@ def drive_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
     if "static_safety_margin" in results:
         out["static_safety_margin"] = np.min(results["static_safety_margin"], axis=0)
     out["mean_speed"] = mean_speed
-    bin_life = np.where(np.asarray(inputs["duty_speed"]) > 0, system, np.inf)
-    per_bin_results(out, {
-        "time_share": inputs["duty_time"], "speed": inputs["duty_speed"],
-        "torque": results["tangential_force"] * results["gear_a_mean_pitch_diameter"] / 2.0,
-        "system_modified_rating_life": bin_life,
-        "damage_share": _normalised(system_damage),
-        "bending_damage_share": _normalised(bending),
-        "contact_damage_share": _normalised(contact)})
+    bin_life = np.where(_turning(inputs), system, np.inf)
+    # The torque as given; of a bin that gives power, from its tooth force.
+    from_force = results["tangential_force"] * results["gear_a_mean_pitch_diameter"] / 2.0
+    given = inputs.get("torque")
+    torque = from_force if given is None else np.where(
+        np.isnan(given), from_force, np.abs(np.asarray(given, dtype=float)))
+    columns = {"time_share": inputs["duty_time"], "speed": inputs["duty_speed"],
+               "torque": torque,
+               "system_modified_rating_life": bin_life,
+               "damage_share": _normalised(system_damage)}
+    if "bending_safety" in results:  # the pair is rated
+        columns.update(bending_damage_share=_normalised(bending),
+                       contact_damage_share=_normalised(contact))
+    per_bin_results(out, columns)
     names = [f"{shaft}_bearing_{i}" for shaft, bearings in inputs["shafts"].items()
              for i in range(1, len(bearings) + 1)]
     weakest = np.argmin(np.stack(np.broadcast_arrays(*modified)), axis=0)

@@ -83,6 +83,8 @@ class BevelDriveSpec(DutyCycleRules, BevelPair):
     bearings, from the input torque to every bearing's life, at one operating point or
     over a duty cycle."""
 
+    ALTERNATIVES: ClassVar[Mapping[str, str]] = {"torque": "power", "power": "torque"}
+    POWER_FIELD: ClassVar[str | None] = "power"
     BIN_FIELDS: ClassVar[Mapping[str, str]] = {
         field: field for field in ("torque", "power", "input_speed")}
 

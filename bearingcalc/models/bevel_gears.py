@@ -200,6 +200,8 @@ GearsBin = bin_model("GearsBin", {
 class BevelGearsSpec(DutyCycleRules, BevelPair):
     """Gear B on a shaft turning at Ω; gear A meshing with it on an arm turning at ω_Z."""
 
+    ALTERNATIVES: ClassVar[Mapping[str, str]] = {"torque": "power", "power": "torque"}
+    POWER_FIELD: ClassVar[str | None] = "power"
     BIN_FIELDS: ClassVar[Mapping[str, str]] = {
         field: field for field in ("torque", "power", "arm_speed", "gear_b_speed")}
 

@@ -52,6 +52,10 @@ class DutyCycleRules:
 
     #: bin field -> the spec's dotted field it sets
     BIN_FIELDS: ClassVar[Mapping[str, str]] = {}
+    #: bin field -> the field it stands in for (a bin's torque replaces the spec's power)
+    ALTERNATIVES: ClassVar[Mapping[str, str]] = {}
+    #: the bin field that gives the load as a power, which a bin at rest cannot take
+    POWER_FIELD: ClassVar[str | None] = None
     #: the fields the rules' subjects are made from (see rules.whole_spec_rule)
     SUBJECT_FIELDS: ClassVar[tuple[str, ...]] = ("duty_cycle",)
 
@@ -87,10 +91,17 @@ class DutyCycleRules:
         """Each bin as a spec of its own, speeds as the bins and the spec give them."""
         assert self.duty_cycle is not None
         base = self.model_copy(update={"duty_cycle": None})
-        return [replaced(base, [(FieldPath.parse(path), getattr(item, field))
-                                for field, path in self.BIN_FIELDS.items()
-                                if getattr(item, field) is not None])
-                for item in self.duty_cycle]
+        views = []
+        for item in self.duty_cycle:
+            changes = []
+            for field, path in self.BIN_FIELDS.items():
+                if getattr(item, field) is not None:
+                    changes.append((FieldPath.parse(path), getattr(item, field)))
+                    other = self.ALTERNATIVES.get(field)
+                    if other is not None and getattr(item, other) is None:
+                        changes.append((FieldPath.parse(self.BIN_FIELDS[other]), None))
+            views.append(replaced(base, changes))
+        return views
 
     def cycle_inputs(self) -> dict[str, Any]:
         """The solver inputs of every bin, along the first axis of each, with
@@ -110,17 +121,20 @@ class DutyCycleRules:
                 for k, item in enumerate(self.duty_cycle, 1)}
 
     def result_notes(self, results: Mapping[str, float | None]) -> list[str]:
-        """The bin that does the most damage, with its shares of the time and the damage."""
+        """The bin that does the most damage, with its shares of the time and the damage
+        (of the bearings', else of the teeth's in bending)."""
         if not self.duty_cycle or len(self.duty_cycle) < 2:
             return []
-        shares = {k: results.get(f"{BIN_PREFIX}{k}_damage_share") for k in
-                  range(1, len(self.duty_cycle) + 1)}
-        if any(share is None for share in shares.values()):
-            return []
-        k = max(shares, key=lambda index: shares[index])  # type: ignore[arg-type, return-value]
-        item = self.duty_cycle[k - 1]
-        return [f"bin {self.bin_label(k)} does the most damage: {100 * item.time:.3g} % of "
-                f"the time, {100 * shares[k]:.3g} % of the damage"]  # type: ignore[operator]
+        for column, what in (("damage_share", "damage"),
+                             ("bending_damage_share", "bending damage")):
+            shares = [results.get(f"{BIN_PREFIX}{k}_{column}")
+                      for k in range(1, len(self.duty_cycle) + 1)]
+            if all(share is not None for share in shares):
+                k = 1 + max(range(len(shares)), key=lambda i: shares[i])  # type: ignore[arg-type, return-value]
+                return [f"bin {self.bin_label(k)} does the most {what}: "
+                        f"{100 * self.duty_cycle[k - 1].time:.3g} % of the time, "
+                        f"{100 * shares[k - 1]:.3g} % of the {what}"]  # type: ignore[operator]
+        return []
 
     def rule_subjects(self) -> list[tuple[Any, Callable[[SpecFieldError, bool],
                                                         SpecFieldError]]] | None:
@@ -168,7 +182,14 @@ class DutyCycleRules:
         if abs(total - 1.0) > SHARE_TOLERANCE:
             return SpecFieldError("duty_cycle", f"the time shares add up to {100 * total:g} %"
                                   f", not 100 % (within {100 * SHARE_TOLERANCE:g} %)")
-        if not _turns(self._as_written()):
+        written = self._as_written()
+        for k, view in enumerate(written, 1):
+            if self.POWER_FIELD is not None and getattr(view, self.POWER_FIELD) is not None \
+                    and view.turning_speed() is not None and not np.any(_speed(view) > 0):
+                return SpecFieldError(f"duty_cycle.{k}.time", f"bin {self.bin_label(k)} is at "
+                                      "rest, where a power gives no torque: give the bin's "
+                                      "torque, like 120 N*m")
+        if not _turns(written):
             return SpecFieldError("duty_cycle", "every bin is at rest: the life needs a bin "
                                   "that turns (a bin at zero speed counts for the static "
                                   "safety only)")
@@ -199,16 +220,19 @@ def _speed(view: Any) -> Any:
 
 
 def _over_bins(per_bin: list[Any]) -> Any:
-    """Solver inputs of the bins, of one layout, with each number replaced by an array
-    of the bins' along a new first axis; words must agree (a bearing type)."""
+    """Solver inputs of the bins, with each number replaced by an array of the bins'
+    along a new first axis; words must agree (a bearing type)."""
     first = per_bin[0]
     if isinstance(first, dict):
         return {key: _over_bins([each[key] for each in per_bin]) for key in first}
     if isinstance(first, list):
         return [_over_bins([each[i] for each in per_bin]) for i in range(len(first))]
-    if first is None or isinstance(first, str):
+    if isinstance(first, str) or all(each is None for each in per_bin):
         return first
-    return np.stack(np.broadcast_arrays(*(np.asarray(each, dtype=float) for each in per_bin)))
+    # A field some bins give in one form and others in another (torque or power): NaN
+    # where a bin gives the other, for the solver to take that.
+    return np.stack(np.broadcast_arrays(*(np.asarray(np.nan if each is None else each,
+                                                     dtype=float) for each in per_bin)))
 
 
 def _design_rank(inputs: Any) -> int:
