@@ -71,8 +71,13 @@ def parse_document(document: Document) -> tuple[Kind, Spec]:
     except ValidationError as exc:
         errors = [_one_problem(document, kind.model, problem)
                   for problem in exc.errors(include_url=False)]
+        # A hinted unknown key (bevel-gears' 'speed') already says what its rule would.
+        said = {field for key, (_, fields) in getattr(kind.model, "UNKNOWN_KEY_HINTS",
+                                                      {}).items() if key in data
+                for field in fields}
         errors += [_rule_error(document, problem)
-                   for problem in _rule_problems_despite(kind.model, data, exc)]
+                   for problem in _rule_problems_despite(kind.model, data, exc)
+                   if problem.field not in said]
         raise _in_line_order(document, errors) from None
     except SpecFieldError as problem:
         errors = [_rule_error(document, each) for each in (problem, *problem.more)]
@@ -286,9 +291,13 @@ def _one_problem(document: Document, model: type[Spec], error: Any) -> SpecError
     if error_type == "extra_forbidden":
         parent = _model_at(model, loc[:-1])
         known = list(parent.model_fields) if parent else []
-        message = f"unknown key '{loc[-1]}'{did_you_mean(loc[-1], known)}"
-        if not did_you_mean(loc[-1], known):
-            message += f"; allowed keys: {', '.join(k for k in known if k != 'kind')}"
+        hint = getattr(parent, "UNKNOWN_KEY_HINTS", {}).get(loc[-1])
+        if hint is not None:  # a key whose near names would each change the meaning
+            message = f"unknown key '{loc[-1]}': {hint[0]}"
+        else:
+            message = f"unknown key '{loc[-1]}'{did_you_mean(loc[-1], known)}"
+            if not did_you_mean(loc[-1], known):
+                message += f"; allowed keys: {', '.join(k for k in known if k != 'kind')}"
     elif error_type == "missing":
         example = _example(model, loc)
         message = f"missing required key '{loc[-1]}'" + (f", e.g. {loc[-1]}: {example}"

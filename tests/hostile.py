@@ -155,7 +155,7 @@ def _physics_cases() -> dict[str, str]:
     geometry = (SPECS / "ball-bearing-geometry.yaml").read_text()
     loaded = (SPECS / "thrust-bearing-loaded.yaml").read_text()
     oil = "lubrication: {viscosity_40: 68 mm^2/s, viscosity_100: 8.7 mm^2/s, temperature: %s}"
-    return {**_roller_cases(), **_duty_cases(), **{
+    return {**_roller_cases(), **_duty_cases(), **_pair_cases(), **{
         # Contradictory geometry: every size valid, together impossible.
         "ball-pitch-outside-rings.yaml": _mutate(ball, "pitch_diameter", "150 mm")
         + "bore_diameter: 45 mm\noutside_diameter: 100 mm\n",
@@ -263,6 +263,21 @@ def _physics_cases() -> dict[str, str]:
         "bevel-sizing-huge-reliability.yaml": sizing.replace("reliability: 0.99",
                                                              "reliability: 1" + "0" * 400),
     }}
+
+
+def _pair_cases() -> dict[str, str]:
+    """Bevel pairs whose speeds mix the fixed-axis and the epicyclic forms."""
+    sizing = (SPECS / "bevel-gears-sizing.yaml").read_text()
+    speed = re.compile(r"^gear_a_speed: .*$", re.MULTILINE)
+    return {
+        "bevel-speed-key.yaml": speed.sub("speed: 600 rpm", sizing),
+        "bevel-no-speed.yaml": speed.sub("", sizing),
+        "bevel-fixed-two-speeds.yaml": speed.sub("gear_a_speed: 600 rpm\ngear_b_speed: 300 rpm",
+                                                 sizing),
+        "bevel-arm-and-pinion.yaml": speed.sub("gear_a_speed: 600 rpm\narm_speed: 100 rpm",
+                                               sizing),
+        "bevel-fixed-bin-arm.yaml": sizing + "duty_cycle:\n  - {time: 100 %, arm_speed: 10 rpm}\n",
+    }
 
 
 def _duty_cases() -> dict[str, str]:

@@ -60,7 +60,9 @@ def solve(cli, spec_file, text: str, name: str) -> dict:
 
 # --- 1. a pair's cycle is Miner's rule over single-point solves ----------------------------
 
-SIZING = (ROOT / "specs" / "bevel-gears-sizing.yaml").read_text()  # as 20/43 below
+# The sizing example in the epicyclic form (arm and gear B's shaft), which the bins vary.
+SIZING = re.sub(r"^gear_a_speed: .*$", "arm_speed: 0 rpm\ngear_b_speed: -600 rpm",
+                (ROOT / "specs" / "bevel-gears-sizing.yaml").read_text(), flags=re.M)
 GEARS_20_43 = with_fields(SIZING, {"name": "20/43 pair", "gear_a": "{teeth: 20}",
                                    "gear_b": "{teeth: 43}"}).replace(
     "min_bending_safety: 1.0", "min_bending_safety: 1.2").replace(

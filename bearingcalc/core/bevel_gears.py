@@ -274,6 +274,22 @@ def complete_geometry(inputs: Mapping[str, ArrayLike | None]) -> tuple[NDArray, 
     return a, b, np.asarray(alpha, dtype=float), np.asarray(beta, dtype=float), gamma
 
 
+#: Results of the epicyclic pair only: speeds relative to the arm and of gear B's shaft.
+EPICYCLIC_ONLY = ("gear_a_speed_relative_to_arm", "relative_speed", "contact_point_speed")
+#: Results that are zero by construction where the pitch angles are solved for a
+#: common apex.
+APEX_ONLY = ("apex_mismatch", APEX_MISMATCH_MARGIN)
+
+
+def left_out(inputs: Mapping[str, ArrayLike | None]) -> tuple[str, ...]:
+    """The results that carry no information for this pair: the epicyclic pair's own on
+    fixed axes, and the apex mismatch where the pitch angles were solved (not given)."""
+    fixed = inputs.get("axes") == "fixed"
+    solved = inputs.get("gear_a_pitch_angle") is None and inputs.get(
+        "gear_b_pitch_angle") is None
+    return (EPICYCLIC_ONLY if fixed else ()) + (APEX_ONLY if fixed and solved else ())
+
+
 def evaluate(inputs: Mapping[str, ArrayLike | None],
              wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results and status codes from the spec's SI inputs.
@@ -287,14 +303,18 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
                                 gear_b_speed=inputs["gear_b_speed"],  # type: ignore[arg-type]
                                 max_apex_mismatch=inputs["max_apex_mismatch"])  # type: ignore[arg-type]
     if inputs.get("face_width") is None:
-        return Solution(results, status)
+        return Solution(_without(results, left_out(inputs)), status)
     sized, checks = size_pair(inputs, results)
     undercut = sized.pop("undercut")
     shape = np.broadcast_shapes(status.shape, *(np.shape(c) for _, c in checks))
     status = np.where(np.broadcast_to(status, shape) != 0, np.broadcast_to(status, shape),
                       first_failure(checks, shape))
-    results = broadcast_all({**results, **sized})
+    results = broadcast_all(_without({**results, **sized}, left_out(inputs)))
     return Solution(results, status, {"undercut": np.broadcast_to(undercut, status.shape)})
+
+
+def _without(results: dict[str, NDArray], keys: Collection[str]) -> dict[str, NDArray]:
+    return {key: value for key, value in results.items() if key not in keys}
 
 
 def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, NDArray]

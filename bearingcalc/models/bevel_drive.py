@@ -295,6 +295,7 @@ class BevelDriveSpec(DutyCycleRules, BevelPair):
             return self.cycle_inputs()
         ratio = self.gear_a.teeth / self.gear_b.teeth  # type: ignore[operator]
         inputs: dict[str, Any] = self.pair_inputs(0.0, -self.input_speed * ratio, self.limits)
+        inputs["axes"] = "fixed"
         inputs["input_speed"] = self.input_speed
         inputs["min_rating_life"] = self.limits.min_rating_life
         inputs["min_static_safety"] = self.limits.min_static_safety

@@ -194,32 +194,111 @@ class BevelPair(Spec):
 
 GearsBin = bin_model("GearsBin", {
     "torque": (Torque, "on gear A"), "power": (PositivePower, "through gear A"),
-    "arm_speed": (AngularSpeed, "ω_Z"), "gear_b_speed": (AngularSpeed, "Ω")})
+    "gear_a_speed": (AngularSpeed, "the pinion's speed (fixed axes)"),
+    "arm_speed": (AngularSpeed, "ω_Z (epicyclic)"), "gear_b_speed": (AngularSpeed, "Ω")})
+
+#: The speeds of the two forms of a pair, named in one line where a spec gives neither.
+SPEED_FORMS = ("a pair on fixed axes takes gear_a_speed (the pinion's) or gear_b_speed; "
+               "an epicyclic pair takes arm_speed (ω_Z) and gear_b_speed (its shaft, Ω)")
 
 
 class BevelGearsSpec(DutyCycleRules, BevelPair):
-    """Gear B on a shaft turning at Ω; gear A meshing with it on an arm turning at ω_Z."""
+    """A bevel pair on fixed axes, turning at the pinion's speed (or gear B's); or the
+    epicyclic pair: gear B on a shaft turning at Ω, gear A meshing with it on an arm
+    turning at ω_Z."""
 
-    ALTERNATIVES: ClassVar[Mapping[str, str]] = {"torque": "power", "power": "torque"}
+    #: a bin's torque replaces the spec's power; on fixed axes, a bin's gear_a_speed the
+    #: spec's gear_b_speed (an epicyclic pair takes no gear_a_speed)
+    ALTERNATIVES: ClassVar[Mapping[str, str]] = {
+        "torque": "power", "power": "torque", "gear_a_speed": "gear_b_speed",
+        "gear_b_speed": "gear_a_speed"}
     POWER_FIELD: ClassVar[str | None] = "power"
     BIN_FIELDS: ClassVar[Mapping[str, str]] = {
-        field: field for field in ("torque", "power", "arm_speed", "gear_b_speed")}
+        field: field for field in ("torque", "power", "gear_a_speed", "arm_speed",
+                                   "gear_b_speed")}
+    #: unknown key -> (what to say instead of a near name, the fields whose missing it
+    #: covers): ``speed`` is near ``arm_speed`` and ``gear_a_speed``, which differ
+    UNKNOWN_KEY_HINTS: ClassVar[Mapping[str, tuple[str, tuple[str, ...]]]] = {
+        "speed": (SPEED_FORMS, ("gear_a_speed",))}
 
     kind: Literal["bevel-gears"]
-    arm_speed: AngularSpeed = Field(description="ω_Z, the arm carrying gear A")
-    gear_b_speed: AngularSpeed = Field(0.0, description="Ω, gear B's shaft")
+    gear_a_speed: AngularSpeed | None = Field(
+        None, description="the pinion's speed, of a pair on fixed axes")
+    arm_speed: AngularSpeed | None = Field(
+        None, description="ω_Z, the arm carrying gear A: an epicyclic pair")
+    gear_b_speed: AngularSpeed | None = Field(
+        None, description="gear B's speed: its shaft's Ω in an epicyclic pair (0 by "
+        "default)")
     limits: BevelGearsLimits = BevelGearsLimits()
     duty_cycle: list[GearsBin] | None = Field(  # type: ignore[valid-type]
         None, description="load cases with their shares of the time, for the strength "
         "rating (a field a bin leaves out is the spec's)")
 
+    @property
+    def fixed_axes(self) -> bool:
+        """Whether the pair's axes are fixed (no arm)."""
+        return self.arm_speed is None
+
+    def speeds(self) -> tuple[Any, Any]:
+        """(ω_Z, Ω) of the epicyclic form; a pair on fixed axes has a resting arm and gear B
+        at the speed that turns the pinion at gear_a_speed. [rad/s]"""
+        if not self.fixed_axes:
+            return self.arm_speed, 0.0 if self.gear_b_speed is None else self.gear_b_speed
+        if self.gear_a_speed is None:
+            return 0.0, self.gear_b_speed
+        return 0.0, -self.gear_a_speed * self._ratio()
+
+    def _ratio(self) -> float:
+        """a/b, gear A's pitch radius over gear B's (their teeth's ratio)."""
+        a, b = self.gear_a, self.gear_b
+        if a.teeth is not None and b.teeth is not None:
+            return a.teeth / b.teeth
+        return a.pitch_radius / b.pitch_radius  # type: ignore[operator]
+
+    @rule
+    def _turning_given(self) -> SpecFieldError | None:
+        if not self.fixed_axes:
+            if self.gear_a_speed is not None:
+                return SpecFieldError("gear_a_speed", "is of a pair on fixed axes; an "
+                                      "epicyclic pair (with arm_speed) takes gear_b_speed, "
+                                      "its shaft's speed Ω")
+            return None
+        if self.gear_a_speed is None and self.gear_b_speed is None:
+            return SpecFieldError("gear_a_speed", f"missing: {SPEED_FORMS}")
+        if self.gear_a_speed is not None and self.gear_b_speed is not None:
+            return SpecFieldError("gear_b_speed", "a pair on fixed axes takes one speed: "
+                                  "gear_a_speed or gear_b_speed, not both",
+                                  at="gear_a_speed")
+        return None
+
     def turning_speed(self) -> Any:
-        """ω_Z − Ω, to which gear A's speed relative to its arm is proportional."""
-        return self.arm_speed - self.gear_b_speed
+        """The pinion's speed relative to its arm, ω_AS = (b/a)(ω_Z − Ω); None where the
+        spec gives no speed. [rad/s]"""
+        if self.fixed_axes and self.gear_a_speed is None and self.gear_b_speed is None:
+            return None
+        arm, shaft = self.speeds()
+        return (arm - shaft) / self._ratio()
 
     def with_turning_speed(self, speed: Any) -> BevelGearsSpec:
-        """The pair with its arm at ``speed`` and gear B's shaft at rest."""
-        return self.model_copy(update={"arm_speed": speed, "gear_b_speed": 0.0})
+        """The pair with its pinion at ``speed`` relative to its arm, in the spec's form."""
+        if self.fixed_axes:
+            return self.model_copy(update={"gear_a_speed": speed, "gear_b_speed": None})
+        return self.model_copy(update={"arm_speed": speed * self._ratio(),
+                                       "gear_b_speed": 0.0})
+
+    @whole_spec_rule
+    def _bins_keep_the_form(self) -> SpecFieldError | None:
+        """A bin cannot turn a pair on fixed axes into an epicyclic one, or back."""
+        for k, item in enumerate(self.duty_cycle or [], 1):
+            if self.fixed_axes and item.arm_speed is not None:
+                return SpecFieldError(f"duty_cycle.{k}.arm_speed", f"bin {self.bin_label(k)}: "
+                                      "the pair is on fixed axes (the spec gives no "
+                                      "arm_speed): give the bin's gear_a_speed")
+            if not self.fixed_axes and item.gear_a_speed is not None:
+                return SpecFieldError(f"duty_cycle.{k}.gear_a_speed", f"bin "
+                                      f"{self.bin_label(k)}: the pair is epicyclic: give the "
+                                      "bin's arm_speed or gear_b_speed")
+        return None
 
     @whole_spec_rule
     def _cycle_rated(self) -> SpecFieldError | None:
@@ -233,4 +312,6 @@ class BevelGearsSpec(DutyCycleRules, BevelPair):
         point, or of every bin of the duty cycle."""
         if self.duty_cycle is not None:
             return self.cycle_inputs()
-        return self.pair_inputs(self.arm_speed, self.gear_b_speed, self.limits)
+        inputs = self.pair_inputs(*self.speeds(), self.limits)
+        inputs["axes"] = "fixed" if self.fixed_axes else "epicyclic"
+        return inputs

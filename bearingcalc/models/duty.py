@@ -23,7 +23,7 @@ from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import SpecModel
 from bearingcalc.models.field_path import FieldPath, replaced
 from bearingcalc.models.plain_numbers import percentage
-from bearingcalc.models.rules import whole_spec_rule
+from bearingcalc.models.rules import whole_spec_problems, whole_spec_rule
 
 #: How far the time shares may add up from 100 %.
 SHARE_TOLERANCE = 0.001
@@ -143,11 +143,9 @@ class DutyCycleRules:
         a duty cycle, none for a cycle its own rules refuse."""
         if self.duty_cycle is None:
             return None
-        if not self.duty_cycle or len(self.duty_cycle) > MAX_BINS:
-            return []
+        if whole_spec_problems(self):  # type: ignore[arg-type]
+            return []  # a cycle refused as a whole: its bins' own problems would be noise
         written = self._as_written()
-        if not _turns(written):
-            return []
         return [(view, self._renamer(k)) for k, view in enumerate(_standing_in(written), 1)]
 
     def _renamer(self, k: int) -> Callable[[SpecFieldError, bool], SpecFieldError]:

@@ -45,6 +45,12 @@ def whole_spec_rule(method: Rule) -> Rule:
     return rule(method)
 
 
+def whole_spec_problems(model: BaseModel) -> list[SpecFieldError]:
+    """The problems of a model's :func:`whole_spec_rule` rules alone."""
+    return [problem for check in rules_of(type(model)) if getattr(check, _WHOLE_MARK, False)
+            for problem in _as_list(check(model))]
+
+
 @functools.cache
 def rules_of(model: type[BaseModel]) -> tuple[Rule, ...]:
     """The rules of a model class, its bases' first, each once."""
