@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from bearingcalc.errors import SpecError
-from bearingcalc.evaluation import Evaluation, evaluate_documents, load_selected
+from bearingcalc.evaluation import Evaluation, Verdict, evaluate_documents, load_selected
 from bearingcalc.models.yaml_loader import Document, is_spec_file
 
 PASS, FAIL, INVALID = "pass", "fail", "invalid"
@@ -33,10 +33,15 @@ class CheckRecord:
     status: str
     messages: list[str] = field(default_factory=list)
     margins: dict[str, float] = field(default_factory=dict)
+    #: every limit judged, the worst first (each margin a fraction of its limit)
+    verdicts: list[Verdict] = field(default_factory=list)
 
     @property
     def governing_margin(self) -> tuple[str, float] | None:
-        """The smallest margin, which decides pass or fail."""
+        """The margin that decides pass or fail: the smallest as a fraction of its limit
+        where the kind says what it judges, else the smallest."""
+        if self.verdicts:
+            return self.verdicts[0].key, self.margins[self.verdicts[0].key]
         if not self.margins:
             return None
         key = min(self.margins, key=self.margins.__getitem__)
@@ -234,7 +239,8 @@ def to_record(outcome: Evaluation | SpecError) -> CheckRecord:
         return CheckRecord(outcome.source, None, None, INVALID, outcome.lines())
     status = PASS if outcome.within_limits else FAIL
     return CheckRecord(outcome.source, outcome.kind, outcome.name, status,
-                       [*outcome.violations, *outcome.warnings], dict(outcome.margins))
+                       [*outcome.violations, *outcome.warnings], dict(outcome.margins),
+                       list(outcome.verdicts))
 
 
 def exit_status(records: Iterable[CheckRecord]) -> int:

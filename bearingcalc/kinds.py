@@ -11,7 +11,7 @@ from __future__ import annotations
 import functools
 import importlib
 import re
-from collections.abc import Collection, Iterator, Mapping
+from collections.abc import Callable, Collection, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -34,6 +34,57 @@ OUT_OF_RANGE_REASON = ("", "the design's numbers are out of the range of double 
 
 
 @dataclass(frozen=True)
+class Judged:
+    """How a margin judges a result against its limit, for verdicts in engineering terms.
+
+    ``quantity`` is the result judged (or a function of the results where no one result
+    is it: a drive's smallest s0). The margin is formed as ``form`` says: "ratio"
+    (quantity/limit − 1), "difference" (quantity − limit, or limit − |quantity| for an
+    upper limit) or "fraction" (1 − quantity/limit); the limit follows from the margin
+    and the quantity, and every margin reads as a fraction of its limit.
+    """
+
+    name: str
+    quantity: str | Callable[[Mapping[str, float | None]], float | None]
+    at_least: bool
+    form: str = "difference"
+    #: how a verdict names the limit: "required" (a life), "min" (a safety), "max"
+    word: str = ""
+
+    @property
+    def limit_word(self) -> str:
+        return self.word or ("min" if self.at_least else "max")
+
+    def value(self, results: Mapping[str, float | None]) -> float | None:
+        """The judged quantity (its size, for an upper limit on a signed one)."""
+        value = (self.quantity(results) if callable(self.quantity)
+                 else results.get(self.quantity))
+        return None if value is None else (value if self.at_least else abs(value))
+
+    def limit(self, value: float, margin: float) -> float:
+        """The limit that gives ``margin`` at ``value``."""
+        if self.form == "ratio":
+            return value / (1.0 + margin)
+        if self.form == "fraction":
+            return value / (1.0 - margin)
+        return value - margin if self.at_least else value + margin
+
+    def fraction(self, margin: float, limit: float) -> float:
+        """The margin as a fraction of the limit: value/limit − 1 for a lower limit,
+        1 − value/limit for an upper one."""
+        if self.form in ("ratio", "fraction") or limit == 0:
+            return margin  # a zero limit: the margin itself (0 where the limit is met)
+        return margin / limit
+
+
+def smallest_bearing_safety(results: Mapping[str, float | None]) -> float | None:
+    """The smallest s0 of a drive's bearings."""
+    found = [value for key, value in results.items()
+             if key.endswith("_static_safety_factor") and value is not None]
+    return min(found) if found else None
+
+
+@dataclass(frozen=True)
 class Kind:
     """What every command needs to know of one spec kind."""
 
@@ -49,6 +100,8 @@ class Kind:
     limits: dict[str, str] = field(default_factory=dict)
     #: results that may legitimately be +inf (an edge that no design reaches)
     unbounded: tuple[str, ...] = ()
+    #: margin key -> what it judges, for verdicts in engineering terms
+    judged: Mapping[str, Judged] = field(default_factory=dict)
 
     @property
     def model(self) -> type[Spec]:
@@ -250,6 +303,25 @@ def _member_field(members: Members, name: str, field: str) -> str:
     return f"{name}.{field}"
 
 
+#: What the margins the kinds share judge.
+LIFE = Judged("modified rating life", "modified_rating_life", True, "ratio", "required")
+STATIC = Judged("static safety s0", "static_safety_factor", True)
+CONTACT = Judged("contact pressure", "max_contact_pressure", False, "fraction")
+PAIR = {
+    "face_width_margin": Judged("face width ratio b/Re", "face_width_ratio", False),
+    "bending_safety_margin": Judged("bending safety S_F", "bending_safety", True),
+    "contact_safety_margin": Judged("contact safety S_H", "contact_safety", True),
+    "slip_margin": Judged("apex mismatch", "apex_mismatch", False),
+}
+
+
+def _spin_to_roll(results: Mapping[str, float | None]) -> float | None:
+    """A ball bearing's larger |spin/roll| of its two races."""
+    found = [abs(value) for key in ("inner_spin_to_roll", "outer_spin_to_roll")
+             if (value := results.get(key)) is not None]
+    return max(found) if found else None
+
+
 KINDS: dict[str, Kind] = {
     kind.name: kind
     for kind in (
@@ -259,7 +331,9 @@ KINDS: dict[str, Kind] = {
              margins=("slip_margin", "contact_pressure_margin"),
              governing=("slip_margin", "spin_to_roll"),
              limits={"spin_to_roll": "max_spin_to_roll"},
-             unbounded=("pitch_radius_max",)),
+             unbounded=("pitch_radius_max",),
+             judged={"slip_margin": Judged("spin-to-roll ratio", "spin_to_roll", False),
+                     "contact_pressure_margin": CONTACT}),
         Kind("disk-on-circle", "a disk rolling on a fixed or turning circle, outside or inside",
              "bearingcalc.models.disk_on_circle:DiskOnCircleSpec",
              "bearingcalc.core.disk_on_circle", margins=(),
@@ -268,17 +342,23 @@ KINDS: dict[str, Kind] = {
              "bearingcalc.models.cone_on_plane:ConeOnPlaneSpec",
              "bearingcalc.core.cone_on_plane", margins=(),
              governing=("precession_speed",)),
-        Kind("bevel-gears", "an epicyclic bevel pair: gear B on a shaft, gear A on an arm",
-             "bearingcalc.models.bevel_gears:BevelGearsSpec", "bearingcalc.core.bevel_gears",
+        Kind("bevel-gears", "a bevel pair on fixed axes, or an epicyclic one: gear A on an "
+             "arm, gear B on a shaft", "bearingcalc.models.bevel_gears:BevelGearsSpec",
+             "bearingcalc.core.bevel_gears",
              margins=("slip_margin", "face_width_margin", "bending_safety_margin",
                       "contact_safety_margin"),
-             governing=("apex_mismatch", "slip_margin"),
-             limits={"apex_mismatch": "max_apex_mismatch"}),
+             governing=("bending_safety_margin", "contact_safety_margin", "apex_mismatch",
+                        "slip_margin"),
+             limits={"apex_mismatch": "max_apex_mismatch"}, judged=PAIR),
         *(Kind(name, summary, "bearingcalc.models.ball_bearing:BallBearingSpec",
                "bearingcalc.core.rolling_bearing",
                margins=("life_margin", "static_safety_margin", "contact_pressure_margin",
                         "spin_to_roll_margin"),
-               governing=("life_margin", "modified_rating_life", "static_safety_factor"))
+               governing=("life_margin", "modified_rating_life", "static_safety_factor"),
+               judged={"life_margin": LIFE, "static_safety_margin": STATIC,
+                       "contact_pressure_margin": CONTACT,
+                       "spin_to_roll_margin": Judged("spin-to-roll ratio", _spin_to_roll,
+                                                     False)})
           for name, summary in (
               ("rolling-bearing", "a ball or roller bearing, single or paired: ISO 281 "
                "rating life, ISO 76 static safety"),
@@ -289,7 +369,12 @@ KINDS: dict[str, Kind] = {
              "bearingcalc.core.bevel_drive",
              margins=("slip_margin", "face_width_margin", "bending_safety_margin",
                       "contact_safety_margin", "life_margin", "static_safety_margin"),
-             governing=("life_margin", "system_modified_rating_life", "static_safety_margin")),
+             governing=("life_margin", "system_modified_rating_life", "static_safety_margin"),
+             judged={**PAIR, "life_margin": Judged("system modified rating life",
+                                                   "system_modified_rating_life", True,
+                                                   "ratio", "required"),
+                     "static_safety_margin": Judged("smallest static safety s0",
+                                                    smallest_bearing_safety, True)}),
     )
 }
 

@@ -52,10 +52,14 @@ def test_every_spec_gets_one_status_in_json(cli, mixed):
         "a-pass.yaml": "pass", "d-multi.yaml#1": "pass", "d-multi.yaml#2": "fail",
         "b-fail.yml": "fail", "c-invalid.yaml": "invalid"}
     for record in records.values():
-        assert list(record) == ["spec", "kind", "name", "status", "messages", "margins"]
+        assert list(record) == ["spec", "kind", "name", "status", "messages", "margins",
+                                "verdicts"]
     fail = records["b-fail.yml"]
     assert fail["margins"]["slip_margin"] < 0
-    assert "slip_margin" in fail["messages"][0]
+    # the verdict in engineering terms: the quantity, the comparison, the limit
+    assert fail["messages"][0].startswith("spin-to-roll ratio ") and "> max 0.01" in (
+        fail["messages"][0])
+    assert fail["verdicts"][0]["key"] == "slip_margin"
     assert "contact_angle" in records["c-invalid.yaml"]["messages"][0]
 
 

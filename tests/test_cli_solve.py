@@ -47,13 +47,19 @@ def test_every_example_spec_solves_in_every_format(cli, spec, fmt):
 def test_json_record_follows_the_contract(cli):
     (record,) = solve_json(cli, ROOT / "specs" / "thrust-bearing.yaml")
     assert list(record) == ["spec", "kind", "name", "results", "units", "within_limits",
-                            "warnings"]
+                            "verdicts", "warnings"]
     assert record["kind"] == "thrust-bearing"
     assert record["name"] == "TB-30"
     assert list(record["results"]) == THRUST_RESULT_KEYS
     assert record["units"]["cage_speed"] == "rad/s"
     assert record["units"]["ball_pass_frequency_race"] == "Hz"
     assert record["within_limits"] is True
+    (verdict,) = record["verdicts"]
+    assert verdict["key"] == "slip_margin" and verdict["passed"] is True
+    # the margin as a fraction of the limit: 1 − |spin_to_roll|/max_spin_to_roll
+    assert verdict["limit"] == pytest.approx(0.01, rel=1e-12)
+    assert verdict["margin"] == pytest.approx(
+        1 - abs(record["results"]["spin_to_roll"]) / 0.01, rel=1e-12)
 
 
 def test_json_speeds_match_the_3d_constraint_solve(cli, spec_file):

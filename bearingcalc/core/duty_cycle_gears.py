@@ -132,8 +132,7 @@ def gear_pair_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
         values = results.get(key)
         return None if values is None else np.where(turning, np.abs(values), 0.0)
 
-    columns = {"time_share": inputs["duty_time"],
-               "speed": running("gear_a_speed_relative_to_arm"),
+    columns = {"time_share": inputs["duty_time"], "speed": inputs["duty_speed"],
                "bending_stress": running("bending_stress"),
                "contact_stress": running("contact_stress"),
                "bending_damage_share": _normalised(bending),

@@ -6,7 +6,7 @@ import json
 from collections.abc import Iterable, Sequence
 from typing import IO, TYPE_CHECKING, Any
 
-from bearingcalc.reports.formatting import console, format_number, safe_text
+from bearingcalc.reports.formatting import console, format_number, safe_text, verdict_line
 from bearingcalc.wording import plural, printable
 
 if TYPE_CHECKING:  # the report type only; its module loads with the command
@@ -15,8 +15,11 @@ if TYPE_CHECKING:  # the report type only; its module loads with the command
 
 def check_record_json(record: CheckRecord) -> dict[str, Any]:
     """The JSON object of one check verdict."""
+    from bearingcalc.reports.solve import verdict_record
+
     return {"spec": record.spec, "kind": record.kind, "name": record.name,
-            "status": record.status, "messages": record.messages, "margins": record.margins}
+            "status": record.status, "messages": record.messages, "margins": record.margins,
+            "verdicts": [verdict_record(verdict) for verdict in record.verdicts]}
 
 
 def write_check_json_lines(records: Iterable[CheckRecord], stream: IO[str]) -> None:
@@ -73,6 +76,8 @@ def print_check_table(records: Sequence[CheckRecord], *, show_all: bool,
                 detail = _first(record.messages)
             elif governing is None:
                 detail = "no limits judged"
+            elif record.verdicts:
+                detail = verdict_line(record.verdicts[0])
             else:
                 detail = f"{governing[0]} = {format_number(governing[1])}"
             table.add_row(f"[{colours[record.status]}]{record.status.upper()}[/]",

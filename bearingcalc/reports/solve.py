@@ -9,12 +9,12 @@ import json
 from collections.abc import Iterable, Mapping, Sequence
 from typing import IO, TYPE_CHECKING, Any
 
-from bearingcalc.reports.formatting import console, format_number, safe_text
+from bearingcalc.reports.formatting import console, format_number, safe_text, verdict_line
 from bearingcalc.units import to_display
-from bearingcalc.wording import printable
+from bearingcalc.wording import plural, printable
 
 if TYPE_CHECKING:  # the report types only; their modules load with their commands
-    from bearingcalc.evaluation import Evaluation
+    from bearingcalc.evaluation import Evaluation, Verdict
     from bearingcalc.kinds import Kind
 
 
@@ -27,8 +27,16 @@ def evaluation_record(evaluation: Evaluation) -> dict[str, Any]:
         "results": evaluation.results,
         "units": evaluation.units,
         "within_limits": evaluation.within_limits,
+        "verdicts": [verdict_record(verdict) for verdict in evaluation.verdicts],
         "warnings": evaluation.warnings,
     }
+
+
+def verdict_record(verdict: Verdict) -> dict[str, Any]:
+    """A verdict as JSON data (SI): the margin as a fraction of the limit."""
+    return {"key": verdict.key, "name": verdict.name, "value": verdict.value,
+            "limit": verdict.limit, "unit": verdict.unit, "margin": verdict.margin,
+            "at_least": verdict.at_least, "passed": verdict.passed}
 
 
 def write_json_lines(evaluations: Iterable[Evaluation], stream: IO[str]) -> None:
@@ -103,9 +111,13 @@ def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
         if not evaluation.margins:
             out.print(f"[bold green]PASS[/]: {safe_text(_no_margins(kind))}")
         elif evaluation.within_limits:
-            out.print("[bold green]PASS[/]: within limits")
+            closest = (f": {verdict_line(evaluation.verdicts[0])}, the closest of "
+                       f"{plural(len(evaluation.verdicts), 'limit')}"
+                       if evaluation.verdicts else ": within limits")
+            out.print(f"[bold green]PASS[/]{safe_text(closest)}")
         else:
-            out.print(f"[bold red]FAIL[/]: {safe_text('; '.join(evaluation.violations))}")
+            for line in evaluation.violations:
+                out.print(f"[bold red]FAIL[/]: {safe_text(line)}")
         for warning in evaluation.warnings:
             out.print(f"[yellow]warning[/]: {safe_text(warning)}")
         out.print()
