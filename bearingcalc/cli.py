@@ -351,6 +351,8 @@ def sweep(
             solved = sweeps.run_sweep(kind, spec, document.source, axes)
         except sweeps.SweepError as error:
             raise SpecError(str(error), source=document.source) from None
+        for note in solved.warnings:  # on stderr: the results may be a CSV or JSON stream
+            print(f"warning: {note}", file=sys.stderr)
         keys = result or [k for k in kind.governing if k in solved.results]
         unknown = [k for k in keys if k not in solved.results]
         if unknown:

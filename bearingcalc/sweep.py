@@ -11,7 +11,7 @@ import copy
 import dataclasses
 import itertools
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -55,6 +55,7 @@ class Sweep:
     results: dict[str, NDArray]       # key -> value at each point, NaN where infeasible
     status: NDArray                   # 0 feasible, else a key of kind.status_reasons
     limits: dict[str, float]          # result key -> symmetric limit value
+    warnings: list[str] = field(default_factory=list)
 
     @property
     def units(self) -> dict[str, str]:
@@ -198,4 +199,5 @@ def run_sweep(kind: Kind, spec: Spec, source: str, axes: list[Axis]) -> Sweep:
     limits = kind.limit_values(spec.solver_inputs())
     name = spec.name or source
     return Sweep(kind, source, name, axes, inputs, solved,
-                 np.broadcast_to(status, shape).copy(), limits)
+                 np.broadcast_to(status, shape).copy(), limits,
+                 spec.study_notes([axis.name for axis in axes]))

@@ -73,3 +73,29 @@ def test_a_drive_is_a_pair_on_fixed_axes(cli):
     (record,) = solve_json(cli, ROOT / "specs" / "bevel-drive.yaml")
     assert not set(EPICYCLIC_ONLY + APEX) & set(record["results"])
     assert record["results"]["gear_a_speed"] == pytest.approx(1500 * RPM, rel=1e-12)
+
+
+SIZING = ROOT / "specs" / "bevel-gears-sizing.yaml"
+
+
+@pytest.mark.parametrize(("vary", "warned"), [
+    ("module=4mm:6mm:3", True), ("face_width=25mm:30mm:3", True),
+    ("power=5kW:9kW:3", False)])
+def test_a_sweep_of_the_tooth_geometry_says_j_and_i_stay_typed(cli, vary, warned):
+    """J and I are typed for one tooth geometry: a sweep that moves it says so, once, on
+    stderr (the results may be a CSV stream); one that moves the load does not."""
+    run = cli("sweep", SIZING, "--vary", vary, "--format", "csv")
+    assert run.code in (0, 1), run.err
+    notes = [line for line in run.err.splitlines() if "J and I" in line]
+    assert len(notes) == (1 if warned else 0), run.err
+    if warned:
+        assert vary.split("=")[0] in notes[0]
+
+
+def test_a_study_of_the_tooth_geometry_says_j_and_i_stay_typed(cli, spec_file):
+    text = SIZING.read_text().replace("face_width: 27.94 mm", "face_width: 27.94 mm ± 0.5 mm")
+    run = cli("tolerance", spec_file(text), "--method", "worst-case", "--format", "json")
+    assert run.code in (0, 1), run.err
+    import json
+    (record,) = [json.loads(line) for line in run.out.splitlines()]
+    assert any("J and I" in note and "face_width" in note for note in record["warnings"])

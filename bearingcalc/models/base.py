@@ -5,7 +5,7 @@ from __future__ import annotations
 import functools
 import math
 import typing
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from typing import Any
 
 from pydantic import BaseModel, ConfigDict, ValidationInfo, model_validator
@@ -68,6 +68,11 @@ class Spec(SpecModel):
 
     def result_notes(self, results: Mapping[str, float | None]) -> list[str]:
         """What the reader should know that only the results tell."""
+        return []
+
+    def study_notes(self, varied: Collection[str]) -> list[str]:
+        """What the reader of a sweep or study that varies the dotted fields ``varied``
+        should know (inputs typed for one design that the others keep)."""
         return []
 
 

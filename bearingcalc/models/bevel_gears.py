@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from typing import Annotated, Any, ClassVar, Literal
 
 from pydantic import BeforeValidator, Field, WithJsonSchema
@@ -87,6 +87,23 @@ class BevelPair(Spec):
     torque: Torque | None = Field(None, description="on gear A (the pinion)")
     power: PositivePower | None = Field(None, description="through gear A, instead of torque")
     rating: BevelRating | None = None
+
+    #: Inputs of the tooth geometry that AGMA 2003's geometry factors J and I depend on.
+    TOOTH_GEOMETRY: ClassVar[tuple[str, ...]] = (
+        "gear_a.teeth", "gear_b.teeth", "gear_a.pitch_radius", "gear_b.pitch_radius",
+        "gear_a.pitch_angle", "gear_b.pitch_angle", "module", "pressure_angle",
+        "face_width", "shaft_angle")
+
+    def study_notes(self, varied: Collection[str]) -> list[str]:
+        """J and I are typed for the spec's own tooth geometry: a study that varies that
+        geometry rates every other design with them."""
+        moved = [name for name in varied if name in self.TOOTH_GEOMETRY]
+        if self.rating is None or not moved:
+            return []
+        return [f"the geometry factors J and I (rating.geometry_factor_bending, "
+                f"rating.geometry_factor_pitting) are held at their typed values while "
+                f"{', '.join(moved)} {'varies' if len(moved) == 1 else 'vary'}: the other "
+                "designs are rated with the factors of the spec's own tooth geometry"]
 
     @rule
     def _geometry_is_determined(self) -> SpecFieldError | None:

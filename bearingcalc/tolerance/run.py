@@ -81,7 +81,7 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
         "results": {key: {"nominal": value} for key, value in study.nominal.items()},
         "units": {**{key: kind.results[key][0] for key in study.keys},
                   **{item.name: item.tolerance.unit for item in study.inputs}},
-        "warnings": [],
+        "warnings": spec.study_notes([item.name for item in study.inputs]),
     }
     if "worst-case" in methods:
         for key, entry in worst_case(study).items():
