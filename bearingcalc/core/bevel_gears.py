@@ -15,11 +15,12 @@ Inputs in SI (m, rad, rad/s), floats or broadcasting arrays.
 from __future__ import annotations
 
 from collections.abc import Collection, Mapping
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core import bevel_sizing
+from bearingcalc.core import bevel_sizing, gear_materials
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
 from bearingcalc.core.duty_cycle_gears import GEAR_COLUMNS, GEAR_CYCLE_RESULTS, gear_pair_cycle
 from bearingcalc.core.solver import DutyCycle, Solution, Solver
@@ -72,13 +73,16 @@ RESULTS: dict[str, tuple[str, str]] = {
     "gear_b_axial_force": ("N", "Wa2 = Wt·tanφ·sinδ2 (= Wr1 at Σ = 90°)"),
     "bending_stress": ("Pa", "AGMA 2003 s_F"),
     "contact_stress": ("Pa", "AGMA 2003 s_H"),
-    "bending_safety": ("1", "S_F"),
-    "contact_safety": ("1", "S_H"),
+    "bending_safety": ("1", "S_F of gear A (the pinion)"),
+    "contact_safety": ("1", "S_H of gear A (the pinion)"),
+    "gear_b_bending_stress": ("Pa", "AGMA 2003 s_F of gear B"),
+    "gear_b_bending_safety": ("1", "S_F of gear B, at its own cycles"),
+    "gear_b_contact_safety": ("1", "S_H of gear B, with its cycles and C_H"),
     "bending_power_rating": ("W", "power at S_F = 1, same speed"),
     "contact_power_rating": ("W", "power at S_H = 1, same speed"),
     "face_width_margin": ("1", "max_face_width_ratio − b/Re"),
-    "bending_safety_margin": ("1", "S_F − min_bending_safety"),
-    "contact_safety_margin": ("1", "S_H − min_contact_safety"),
+    "bending_safety_margin": ("1", "the smaller S_F − min_bending_safety"),
+    "contact_safety_margin": ("1", "the smaller S_H − min_contact_safety"),
 }
 
 #: Headings of the table, each with its results.
@@ -99,6 +103,7 @@ GROUPS: dict[str, tuple[str, ...]] = {
     "forces": ("tangential_force", "gear_a_radial_force", "gear_a_axial_force",
                "gear_b_radial_force", "gear_b_axial_force"),
     "rating": ("bending_stress", "contact_stress", "bending_safety", "contact_safety",
+               "gear_b_bending_stress", "gear_b_bending_safety", "gear_b_contact_safety",
                "bending_power_rating", "contact_power_rating", "bending_safety_margin",
                "contact_safety_margin"),
 }
@@ -351,13 +356,38 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
         inputs["quality_number"], inputs["hardness"], inputs["mounting_factor"],  # type: ignore[arg-type]
         inputs["crowned"], inputs["geometry_factor_bending"],  # type: ignore[arg-type]
         inputs["geometry_factor_pitting"], inputs["overload_factor"], inputs["cycles"],  # type: ignore[arg-type]
-        inputs["reliability"])  # type: ignore[arg-type]
+        inputs["reliability"], **_material_terms(inputs))  # type: ignore[arg-type]
     out.update(rating)
-    out["bending_safety_margin"] = rating["bending_safety"] - np.asarray(
-        inputs["min_bending_safety"])
-    out["contact_safety_margin"] = rating["contact_safety"] - np.asarray(
-        inputs["min_contact_safety"])
+    bending, contact = rating["bending_safety"], rating["contact_safety"]
+    if "gear_b_bending_safety" in rating:  # the weaker member of the two governs
+        bending = np.minimum(bending, rating["gear_b_bending_safety"])
+        contact = np.minimum(contact, rating["gear_b_contact_safety"])
+    out["bending_safety_margin"] = bending - np.asarray(inputs["min_bending_safety"])
+    out["contact_safety_margin"] = contact - np.asarray(inputs["min_contact_safety"])
     return out, checks
+
+
+def _material_terms(inputs: Mapping[str, ArrayLike | None]) -> dict[str, Any]:
+    """The steel's allowable stresses, the temperature factor and gear B's own terms,
+    where the spec gives them (through-hardened grade 1 at normal temperature, the
+    pinion alone, otherwise)."""
+    terms: dict[str, Any] = {}
+    material = inputs.get("material")
+    # The grade is one number, repeated along a duty cycle's bins.
+    grade = None if material is None else int(np.asarray(inputs["grade"]).flat[0])
+    if material is not None and (material, grade) != ("through-hardened", 1):
+        terms["allowables"] = gear_materials.allowable_stresses(
+            str(material), grade, inputs.get("hardness"))
+    if inputs.get("temperature") is not None:
+        terms["temperature_factor"] = gear_materials.temperature_factor(inputs["temperature"])
+    if inputs.get("geometry_factor_bending_gear") is not None:
+        ratio = np.asarray(inputs["gear_b_teeth"], dtype=float) / np.asarray(
+            inputs["gear_a_teeth"], dtype=float)
+        c_h = (1.0 if inputs.get("gear_hardness") is None
+               else gear_materials.hardness_ratio_factor(inputs["hardness"],
+                                                         inputs["gear_hardness"], ratio))
+        terms["gear"] = (inputs["geometry_factor_bending_gear"], ratio, c_h)
+    return terms
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,

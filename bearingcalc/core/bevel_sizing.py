@@ -181,7 +181,11 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
                 quality_number: ArrayLike, hardness: ArrayLike, mounting_factor: ArrayLike,
                 crowned: ArrayLike, bending_geometry_factor: ArrayLike,
                 pitting_geometry_factor: ArrayLike, overload_factor: ArrayLike,
-                cycles: ArrayLike, reliability: ArrayLike) -> dict[str, NDArray]:
+                cycles: ArrayLike, reliability: ArrayLike, *,
+                allowables: tuple[ArrayLike, ArrayLike] | None = None,
+                temperature_factor: ArrayLike = 1.0,
+                gear: tuple[ArrayLike, ArrayLike, ArrayLike] | None = None
+                ) -> dict[str, NDArray]:
     r"""AGMA 2003 bending and contact stresses, safety factors and power ratings of a
     straight bevel pair of through-hardened grade 1 steel, in the SI form of
     Budynas & Nisbett ch. 15.
@@ -212,6 +216,11 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
     overload_factor : Ko. [1]
     cycles : N, load cycles of the pinion. [1]
     reliability : R, 0.9 to 0.9999. [1]
+    allowables : (s_at, s_ac) of the steel [Pa] (:mod:`bearingcalc.core.gear_materials`);
+        by default those of through-hardened grade 1 steel of ``hardness``.
+    temperature_factor : K_T. [1]
+    gear : (J_G, N/n, C_H) to rate gear B as well: its geometry factor, the gear ratio
+        (its cycles are N·n/N) and its hardness-ratio factor. [1]
 
     Returns
     -------
@@ -237,16 +246,32 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
     cxc = np.where(np.asarray(crowned, dtype=bool), 1.5, 2.0)
     contact = STEEL_ELASTIC_COEFFICIENT * np.sqrt(
         wt * ko * kv * km * cs * cxc / (b * de1 * np.asarray(pitting_geometry_factor, dtype=float)))
-    hb = np.asarray(hardness, dtype=float)
+    if allowables is None:
+        hb = np.asarray(hardness, dtype=float)
+        s_at, s_ac = 0.30 * hb + 14.48, 2.35 * hb + 162.89
+    else:
+        s_at, s_ac = (np.asarray(value, dtype=float) / 1e6 for value in allowables)
     n = np.asarray(cycles, dtype=float)
     r = np.asarray(reliability, dtype=float)
     k_l = 1.683 * n ** -BENDING_LIFE_SLOPE
     c_l = 3.4822 * n ** -CONTACT_LIFE_SLOPE
     k_r = np.where(r >= 0.99, 0.50 - 0.25 * np.log10(1.0 - r), 0.70 - 0.15 * np.log10(1.0 - r))
-    bending_safety = (0.30 * hb + 14.48) * k_l / (k_r * bending)
-    contact_safety = (2.35 * hb + 162.89) * c_l / (np.sqrt(k_r) * contact)
+    k_t = np.asarray(temperature_factor, dtype=float)
+    bending_safety = s_at * k_l / (k_t * k_r * bending)
+    contact_safety = s_ac * c_l / (k_t * np.sqrt(k_r) * contact)
     power = torque * speed
-    return {"bending_stress": bending * 1e6, "contact_stress": contact * 1e6,
-            "bending_safety": bending_safety, "contact_safety": contact_safety,
-            "bending_power_rating": power * bending_safety,
-            "contact_power_rating": power * contact_safety ** 2}
+    out = {"bending_stress": bending * 1e6, "contact_stress": contact * 1e6,
+           "bending_safety": bending_safety, "contact_safety": contact_safety,
+           "bending_power_rating": power * bending_safety,
+           "contact_power_rating": power * contact_safety ** 2}
+    if gear is not None:
+        j_g, gear_ratio, c_h = (np.asarray(value, dtype=float) for value in gear)
+        gear_cycles = n / gear_ratio
+        gear_bending = bending * np.asarray(bending_geometry_factor, dtype=float) / j_g
+        out.update({
+            "gear_b_bending_stress": gear_bending * 1e6,
+            "gear_b_bending_safety": s_at * 1.683 * gear_cycles ** -BENDING_LIFE_SLOPE / (
+                k_t * k_r * gear_bending),
+            "gear_b_contact_safety": s_ac * 3.4822 * gear_cycles ** -CONTACT_LIFE_SLOPE
+            * c_h / (k_t * np.sqrt(k_r) * contact)})
+    return out
