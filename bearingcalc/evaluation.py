@@ -351,7 +351,10 @@ def _one_problem(document: Document, model: type[Spec], error: Any) -> SpecError
         message = f"must be a mapping of keys, got {error.get('input')!r}"
     elif error_type == "literal_error":
         given = error.get("input")
-        options = re.findall(r"'([^']*)'", str(error.get("ctx", {}).get("expected", "")))
+        expected = str(error.get("ctx", {}).get("expected", ""))
+        # Words are quoted in pydantic's list, numbers (a grade: 1, 2 or 3) are not.
+        options = re.findall(r"'([^']*)'", expected) or re.findall(r"-?\d+(?:\.\d+)?",
+                                                                  expected)
         message = (f"must be one of {', '.join(options)}, got {given!r}"
                    f"{did_you_mean(str(given), options)}")
     elif error_type in _OWN_WORDS:

@@ -277,6 +277,21 @@ def _pair_cases() -> dict[str, str]:
         "bevel-arm-and-pinion.yaml": speed.sub("gear_a_speed: 600 rpm\narm_speed: 100 rpm",
                                                sizing),
         "bevel-fixed-bin-arm.yaml": sizing + "duty_cycle:\n  - {time: 100 %, arm_speed: 10 rpm}\n",
+        "bevel-nitrided-grade-1.yaml": sizing.replace("  hardness: 180 HB",
+                                                      "  material: nitrided"),
+        "bevel-carburized-hardness.yaml": sizing.replace("  hardness: 180 HB",
+                                                         "  hardness: 180 HB\n"
+                                                         "  material: carburized"),
+        "bevel-grade-4.yaml": sizing.replace("  hardness: 180 HB", "  hardness: 180 HB\n"
+                                             "  grade: 4"),
+        "bevel-material-unknown.yaml": sizing.replace("  hardness: 180 HB",
+                                                      "  hardness: 180 HB\n"
+                                                      "  material: cast-iron"),
+        "bevel-gear-j-zero.yaml": sizing.replace("  hardness: 180 HB", "  hardness: 180 HB\n"
+                                                 "  geometry_factor_bending_gear: 0"),
+        "bevel-temperature-text.yaml": sizing.replace("  hardness: 180 HB",
+                                                      "  hardness: 180 HB\n"
+                                                      "  temperature: hot"),
     }
 
 
@@ -336,6 +351,7 @@ def _roller_cases() -> dict[str, str]:
         "rolling-conformity.yaml": tapered + "inner_groove_conformity: 0.52\n",
         "rolling-pair-deep-groove.yaml": ball + "arrangement: back-to-back\n",
         "rolling-pair-two-rows.yaml": tapered + "arrangement: tandem\nrows: 2\n",
+        "rolling-three-rows.yaml": tapered + "rows: 3\n",
         "rolling-tapered-angle-50.yaml": _mutate(tapered, "contact_angle", "50 deg"),
         "rolling-cylindrical-angle.yaml": tapered.replace("tapered-roller",
                                                           "cylindrical-roller"),
