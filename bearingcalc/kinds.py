@@ -307,10 +307,19 @@ def _member_field(members: Members, name: str, field: str) -> str:
 LIFE = Judged("modified rating life", "modified_rating_life", True, "ratio", "required")
 STATIC = Judged("static safety s0", "static_safety_factor", True)
 CONTACT = Judged("contact pressure", "max_contact_pressure", False, "fraction")
+def _weaker(key: str) -> Callable[[Mapping[str, float | None]], float | None]:
+    """The smaller of the pinion's and gear B's ``key`` (gear B's where it is rated)."""
+    def weaker(results: Mapping[str, float | None]) -> float | None:
+        found = [value for name in (key, f"gear_b_{key}")
+                 if (value := results.get(name)) is not None]
+        return min(found) if found else None
+    return weaker
+
+
 PAIR = {
     "face_width_margin": Judged("face width ratio b/Re", "face_width_ratio", False),
-    "bending_safety_margin": Judged("bending safety S_F", "bending_safety", True),
-    "contact_safety_margin": Judged("contact safety S_H", "contact_safety", True),
+    "bending_safety_margin": Judged("bending safety S_F", _weaker("bending_safety"), True),
+    "contact_safety_margin": Judged("contact safety S_H", _weaker("contact_safety"), True),
     "slip_margin": Judged("apex mismatch", "apex_mismatch", False),
 }
 

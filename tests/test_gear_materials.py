@@ -132,3 +132,47 @@ def test_a_face_width_in_inches_is_read(cli, spec_file):
     (record,) = solve_json(cli, spec_file(EXAMPLE_15_2))
     assert record["results"]["face_width_ratio"] == pytest.approx(
         1.25 * INCH / record["results"]["outer_cone_distance"], rel=1e-12)
+
+
+STRICT = EXAMPLE_15_2.replace("  max_face_width_ratio: 0.5\n",
+                              "  max_face_width_ratio: 0.5\n  min_bending_safety: 2.5\n")
+
+
+@pytest.mark.parametrize("cycle", ["", "duty_cycle:\n  - {time: 100 %}\n"])
+def test_the_weaker_member_is_judged_at_a_point_and_over_a_cycle(cli, spec_file, cycle):
+    """Gear B (S_F 2.24 in the book) is weaker than the pinion (2.66): with a minimum of
+    2.5 the verdict names gear B's safety against 2.5, alone or as a one-bin cycle."""
+    run = cli("solve", spec_file(STRICT + cycle))
+    assert run.code == 1, run.err
+    (record,) = solve_json(cli, spec_file(STRICT + cycle, "json.yaml"))
+    (verdict,) = [v for v in record["verdicts"] if v["key"] == "bending_safety_margin"]
+    assert verdict["value"] == record["results"]["gear_b_bending_safety"]
+    assert verdict["limit"] == pytest.approx(2.5, rel=1e-12)
+    assert "< min 2.5" in run.out
+
+
+def test_a_softer_gear_takes_its_own_allowables_and_c_h(cli, spec_file):
+    """Through-hardened pinion 300 HB, gear B 200 HB, ratio 3: gear B's s_ac = 2.35·200 +
+    162.89 and C_H = 1 + (0.00898·1.5 − 0.00829)·2, against a gear B of 300 HB."""
+    base = EXAMPLE_15_2.replace("material: carburized", "material: through-hardened\n"
+                                "  hardness: 300 HB")
+    (same,) = solve_json(cli, spec_file(base, "same.yaml"))
+    (soft,) = solve_json(cli, spec_file(base.replace("hardness: 300 HB", "hardness: 300 HB\n"
+                                                     "  gear_hardness: 200 HB"), "soft.yaml"))
+    c_h = 1 + (0.00898 * 1.5 - 0.00829) * 2
+    contact = (2.35 * 200 + 162.89) / (2.35 * 300 + 162.89) * c_h
+    bending = (0.30 * 200 + 14.48) / (0.30 * 300 + 14.48)
+    assert soft["results"]["gear_b_contact_safety"] == pytest.approx(
+        same["results"]["gear_b_contact_safety"] * contact, rel=1e-12)
+    assert soft["results"]["gear_b_bending_safety"] == pytest.approx(
+        same["results"]["gear_b_bending_safety"] * bending, rel=1e-12)
+    assert soft["results"]["contact_safety"] == same["results"]["contact_safety"]
+
+
+def test_a_gear_hardness_without_gear_bs_j_is_refused(cli, spec_file):
+    text = EXAMPLE_15_2.replace("material: carburized", "material: through-hardened\n"
+                                "  hardness: 300 HB\n  gear_hardness: 200 HB").replace(
+        "  geometry_factor_bending_gear: 0.202\n", "")
+    run = cli("solve", spec_file(text))
+    assert run.code == 2 and run.err.count("\n") == 1
+    assert ": rating.geometry_factor_bending_gear: " in run.err

@@ -383,10 +383,15 @@ def _material_terms(inputs: Mapping[str, ArrayLike | None]) -> dict[str, Any]:
     if inputs.get("geometry_factor_bending_gear") is not None:
         ratio = np.asarray(inputs["gear_b_teeth"], dtype=float) / np.asarray(
             inputs["gear_a_teeth"], dtype=float)
-        c_h = (1.0 if inputs.get("gear_hardness") is None
-               else gear_materials.hardness_ratio_factor(inputs["hardness"],
-                                                         inputs["gear_hardness"], ratio))
-        terms["gear"] = (inputs["geometry_factor_bending_gear"], ratio, c_h)
+        gear_hardness = inputs.get("gear_hardness")
+        if gear_hardness is None:  # gear B of the pinion's steel
+            terms["gear"] = (inputs["geometry_factor_bending_gear"], ratio, 1.0, None, None)
+        else:  # a softer through-hardened gear B: its own allowables, and C_H
+            terms["gear"] = (inputs["geometry_factor_bending_gear"], ratio,
+                             gear_materials.hardness_ratio_factor(inputs["hardness"],
+                                                                  gear_hardness, ratio),
+                             *gear_materials.allowable_stresses(str(material), grade,
+                                                                gear_hardness))
     return terms
 
 

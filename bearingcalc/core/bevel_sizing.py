@@ -9,6 +9,8 @@ mm, N, MPa and m/s, as that form is written.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
@@ -184,7 +186,7 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
                 cycles: ArrayLike, reliability: ArrayLike, *,
                 allowables: tuple[ArrayLike, ArrayLike] | None = None,
                 temperature_factor: ArrayLike = 1.0,
-                gear: tuple[ArrayLike, ArrayLike, ArrayLike] | None = None
+                gear: tuple[Any, ...] | None = None
                 ) -> dict[str, NDArray]:
     r"""AGMA 2003 bending and contact stresses, safety factors and power ratings of a
     straight bevel pair of through-hardened grade 1 steel, in the SI form of
@@ -219,8 +221,9 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
     allowables : (s_at, s_ac) of the steel [Pa] (:mod:`bearingcalc.core.gear_materials`);
         by default those of through-hardened grade 1 steel of ``hardness``.
     temperature_factor : K_T. [1]
-    gear : (J_G, N/n, C_H) to rate gear B as well: its geometry factor, the gear ratio
-        (its cycles are N·n/N) and its hardness-ratio factor. [1]
+    gear : (J_G, N/n, C_H, s_at,G, s_ac,G) to rate gear B as well: its geometry factor,
+        the gear ratio (its cycles are N·n/N), its hardness-ratio factor [1] and its own
+        allowable stress numbers [Pa] (None: the pinion's).
 
     Returns
     -------
@@ -265,13 +268,16 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
            "bending_power_rating": power * bending_safety,
            "contact_power_rating": power * contact_safety ** 2}
     if gear is not None:
-        j_g, gear_ratio, c_h = (np.asarray(value, dtype=float) for value in gear)
+        j_g, gear_ratio, c_h = (np.asarray(value, dtype=float) for value in gear[:3])
+        gear_s_at, gear_s_ac = ((s_at, s_ac) if gear[3] is None else
+                                (np.asarray(gear[3], dtype=float) / 1e6,
+                                 np.asarray(gear[4], dtype=float) / 1e6))
         gear_cycles = n / gear_ratio
         gear_bending = bending * np.asarray(bending_geometry_factor, dtype=float) / j_g
         out.update({
             "gear_b_bending_stress": gear_bending * 1e6,
-            "gear_b_bending_safety": s_at * 1.683 * gear_cycles ** -BENDING_LIFE_SLOPE / (
-                k_t * k_r * gear_bending),
-            "gear_b_contact_safety": s_ac * 3.4822 * gear_cycles ** -CONTACT_LIFE_SLOPE
+            "gear_b_bending_safety": gear_s_at * 1.683 * gear_cycles ** -BENDING_LIFE_SLOPE
+            / (k_t * k_r * gear_bending),
+            "gear_b_contact_safety": gear_s_ac * 3.4822 * gear_cycles ** -CONTACT_LIFE_SLOPE
             * c_h / (k_t * np.sqrt(k_r) * contact)})
     return out

@@ -50,7 +50,7 @@ DRIVE_CYCLE_RESULTS: dict[str, tuple[str, str]] = {
     **GEAR_CYCLE_RESULTS,
 }
 #: The pair's results that are the worst over the bins.
-GEAR_LARGEST = ("bending_stress", "contact_stress")
+GEAR_LARGEST = ("bending_stress", "contact_stress", "gear_b_bending_stress")
 
 
 def spectrum_safety(shares: ArrayLike, safeties: ArrayLike, slope: float,
@@ -103,7 +103,13 @@ def _gear_cycle(results: Mapping[str, NDArray], shares: NDArray, inputs: Mapping
         safety = spectrum_safety(shares, safeties, slope, governing)
         out[f"{load}_safety"] = safety
         out[f"{load}_damage"] = np.sum(damage, axis=0)
-        out[f"{load}_safety_margin"] = safety - np.asarray(
+        weaker = safety
+        if f"gear_b_{load}_safety" in results:  # gear B's spectrum, at its own cycles
+            gear = results[f"gear_b_{load}_safety"]
+            out[f"gear_b_{load}_safety"] = spectrum_safety(
+                shares, gear, slope, np.argmax(shares * gear ** (-1.0 / slope), axis=0))
+            weaker = np.minimum(safety, out[f"gear_b_{load}_safety"])
+        out[f"{load}_safety_margin"] = weaker - np.asarray(
             inputs[f"min_{load}_safety"], dtype=float)[0]
         per_bin[load] = damage
     turning = _turning(inputs)

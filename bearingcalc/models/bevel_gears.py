@@ -87,6 +87,9 @@ class BevelRating(SpecModel):
         if self.material == "through-hardened" and self.hardness is None:
             return SpecFieldError("hardness", "through-hardened steel needs its Brinell "
                                   "hardness, like 300 HB", at="material")
+        if self.gear_hardness is not None and self.geometry_factor_bending_gear is None:
+            return SpecFieldError("geometry_factor_bending_gear", "gear_hardness rates gear "
+                                  "B: give its J too, like 0.202", at="gear_hardness")
         if self.material != "through-hardened":
             for field in ("hardness", "gear_hardness"):
                 if getattr(self, field) is not None:
