@@ -292,6 +292,15 @@ def _pair_cases() -> dict[str, str]:
         "bevel-temperature-text.yaml": sizing.replace("  hardness: 180 HB",
                                                       "  hardness: 180 HB\n"
                                                       "  temperature: hot"),
+        "bevel-spiral-rated.yaml": sizing + "spiral_angle: 35 deg\nhand: right\n"
+        "rotation: clockwise\n",
+        "bevel-spiral-no-hand.yaml": sizing.replace("rating:", "spiral_angle: 35 deg\n"
+                                                    "rotation: clockwise\nrating:"),
+        "bevel-spiral-hand-wrong.yaml": sizing + "spiral_angle: 35 deg\nhand: up\n"
+        "rotation: clockwise\n",
+        "bevel-hand-alone.yaml": sizing + "hand: left\n",
+        "bevel-spiral-steep.yaml": sizing + "spiral_angle: 70 deg\nhand: left\n"
+        "rotation: clockwise\n",
     }
 
 

@@ -168,8 +168,8 @@ def shaft_axial_loads(arrangement: str, bearings: list[Mapping[str, Any]],
                       ) -> tuple[list[NDArray], dict[str, list[NDArray]]]:
     """Each bearing's axial load, and for an adjusted pair the induced forces and the
     load case of each. Locating-floating: the locating bearing takes the whole force."""
-    if arrangement == "locating-floating":
-        return [axial_force if bearing["locating"] == "locating"
+    if arrangement == "locating-floating":  # a spiral pair's force may point either way
+        return [np.abs(axial_force) if bearing["locating"] == "locating"
                 else np.zeros_like(axial_force) for bearing in bearings], {}
     factors = [induced_axial_factor(bearing) for bearing in bearings]
     positions = [np.asarray(bearing["position"], dtype=float) for bearing in bearings]

@@ -67,10 +67,11 @@ RESULTS: dict[str, tuple[str, str]] = {
     "gear_b_crown_to_apex": ("m", "pitch apex to crown X2 = Re·cosδ2 − ha2·sinδ2"),
     "contact_ratio": ("1", "εα of the virtual spur pair at the mean section"),
     "tangential_force": ("N", "Wt = 2T/dm1 at the mean pitch point"),
-    "gear_a_radial_force": ("N", "Wr1 = Wt·tanφ·cosδ1"),
-    "gear_a_axial_force": ("N", "Wa1 = Wt·tanφ·sinδ1"),
-    "gear_b_radial_force": ("N", "Wr2 = Wt·tanφ·cosδ2 (= Wa1 at Σ = 90°)"),
-    "gear_b_axial_force": ("N", "Wa2 = Wt·tanφ·sinδ2 (= Wr1 at Σ = 90°)"),
+    "gear_a_radial_force": ("N", "Wr1, toward gear A's axis (straight: Wt·tanφ·cosδ1)"),
+    "gear_a_axial_force": ("N", "Wa1, away from the apex; < 0 toward it (straight: "
+                                "Wt·tanφ·sinδ1)"),
+    "gear_b_radial_force": ("N", "Wr2, toward gear B's axis (straight: Wt·tanφ·cosδ2)"),
+    "gear_b_axial_force": ("N", "Wa2, away from the apex (straight: Wt·tanφ·sinδ2)"),
     "bending_stress": ("Pa", "AGMA 2003 s_F"),
     "contact_stress": ("Pa", "AGMA 2003 s_H"),
     "bending_safety": ("1", "S_F of gear A (the pinion)"),
@@ -347,8 +348,13 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
         checks.append((8, by_power & ~(speed > 0)))
         with np.errstate(divide="ignore", invalid="ignore"):
             torque = np.where(by_power, np.asarray(power, dtype=float) / speed, torque)
-    out.update(bevel_sizing.tooth_forces(torque, out["gear_a_mean_pitch_diameter"], phi,
-                                         alpha, beta))
+    if inputs.get("spiral_angle") is None:
+        out.update(bevel_sizing.tooth_forces(torque, out["gear_a_mean_pitch_diameter"], phi,
+                                             alpha, beta))
+    else:
+        out.update(bevel_sizing.spiral_tooth_forces(
+            torque, out["gear_a_mean_pitch_diameter"], phi, inputs["spiral_angle"], alpha,
+            beta, inputs["thrust_sign"]))
     if inputs.get("quality_number") is None:
         return out, checks
     rating = bevel_sizing.agma_rating(

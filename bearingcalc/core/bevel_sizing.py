@@ -281,3 +281,51 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
             "gear_b_contact_safety": gear_s_ac * 3.4822 * gear_cycles ** -CONTACT_LIFE_SLOPE
             * c_h / (k_t * np.sqrt(k_r) * contact)})
     return out
+
+
+def spiral_tooth_forces(pinion_torque: ArrayLike, pinion_mean_diameter: ArrayLike,
+                        normal_pressure_angle: ArrayLike, spiral_angle: ArrayLike,
+                        pinion_pitch_angle: ArrayLike, gear_pitch_angle: ArrayLike,
+                        thrust_sign: ArrayLike) -> dict[str, NDArray]:
+    r"""Tooth forces of a spiral (or Zerol) bevel pair driven by its pinion, at the mean
+    pitch point, with the signs the hand and rotation give.
+
+    .. math:: W_{a1} = \frac{W_t}{\cos\beta}(\tan\varphi_n\sin\delta_1
+              - s\sin\beta\cos\delta_1), \quad
+              W_{r1} = \frac{W_t}{\cos\beta}(\tan\varphi_n\cos\delta_1
+              + s\sin\beta\sin\delta_1)
+
+    and for the driven gear, of the opposite hand, the same with δ2 and −s. W_a is
+    positive away from the pitch-cone apex, W_r toward the member's own axis (a
+    negative W_a pulls the member toward the apex, into mesh). s = +1 for a driving
+    pinion of right hand turning clockwise, or left hand turning counterclockwise,
+    viewed from its back (the large end) toward the apex; s = −1 for the other two.
+    At β = 0 (straight, Zerol) the forces are :func:`tooth_forces`'.
+
+    Parameters
+    ----------
+    pinion_torque : T on the pinion, the driver. [N·m]
+    pinion_mean_diameter : d_m1. [m]
+    normal_pressure_angle : φ_n. [rad]
+    spiral_angle : β at the mean point. [rad]
+    pinion_pitch_angle, gear_pitch_angle : δ1, δ2. [rad]
+    thrust_sign : s. [1]
+
+    Source: the spiral-bevel force formulas of bearing and gear makers' handbooks (NTN,
+    *Ball and Roller Bearings*, gear loads; Arrow Gear, stock gear bearing loads), the
+    Gleason form; ``docs/physics.md`` §8.
+    """
+    torque = np.abs(np.asarray(pinion_torque, dtype=float))
+    tangential = 2.0 * torque / np.asarray(pinion_mean_diameter, dtype=float)
+    beta = np.asarray(spiral_angle, dtype=float)
+    tan_phi = np.tan(np.asarray(normal_pressure_angle, dtype=float))
+    sign = np.asarray(thrust_sign, dtype=float)
+    scale = tangential / np.cos(beta)
+    d1, d2 = (np.asarray(x, dtype=float) for x in (pinion_pitch_angle, gear_pitch_angle))
+    sin_beta = np.sin(beta)
+    return {"tangential_force": tangential,
+            "gear_a_radial_force": scale * (tan_phi * np.cos(d1) + sign * sin_beta * np.sin(d1)),
+            "gear_a_axial_force": scale * (tan_phi * np.sin(d1) - sign * sin_beta * np.cos(d1)),
+            "gear_b_radial_force": scale * (tan_phi * np.cos(d2) - sign * sin_beta * np.sin(d2)),
+            "gear_b_axial_force": scale * (tan_phi * np.sin(d2) + sign * sin_beta * np.cos(d2))}
+

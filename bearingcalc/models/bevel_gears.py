@@ -128,7 +128,43 @@ class BevelPair(Spec):
     pressure_angle: Angle = Field(math.radians(20.0), description="φ, default 20 deg")
     torque: Torque | None = Field(None, description="on gear A (the pinion)")
     power: PositivePower | None = Field(None, description="through gear A, instead of torque")
+    spiral_angle: Angle | None = Field(
+        None, description="β_m at the mean point: a spiral bevel pair (0 for Zerol)")
+    hand: Literal["left", "right"] | None = Field(
+        None, description="hand of the pinion's spiral (gear B's is the other)")
+    rotation: Literal["clockwise", "counterclockwise"] | None = Field(
+        None, description="the pinion's, seen from its back (large end) toward the apex")
     rating: BevelRating | None = None
+
+    @rule
+    def _spiral_given(self) -> SpecFieldError | None:
+        if self.spiral_angle is None:
+            for field in ("hand", "rotation"):
+                if getattr(self, field) is not None:
+                    return SpecFieldError(field, "applies to a spiral bevel pair: give "
+                                          "spiral_angle too, like 35 deg")
+            return None
+        if not 0 <= self.spiral_angle <= math.radians(50):
+            return SpecFieldError("spiral_angle", "must be from 0 deg (Zerol) to 50 deg, "
+                                  "like 35 deg")
+        for field, example in (("hand", "right"), ("rotation", "clockwise")):
+            if getattr(self, field) is None and self.spiral_angle > 0:
+                return SpecFieldError(field, f"a spiral bevel pair's forces need the "
+                                      f"pinion's {field}, like {field}: {example}",
+                                      at="spiral_angle")
+        if self.rating is not None and self.spiral_angle > 0:
+            return SpecFieldError("rating", "AGMA 2003's factors of spiral bevels (the "
+                                  "lengthwise curvature factor K_x, the face contact) are "
+                                  "not built in: rate a straight or Zerol pair "
+                                  "(spiral_angle: 0 deg), or leave rating out",
+                                  at="spiral_angle")
+        return None
+
+    @property
+    def thrust_sign(self) -> float:
+        """s of the spiral forces: +1 for a right-hand pinion turning clockwise or a
+        left-hand one turning counterclockwise (seen from its back), else −1."""
+        return 1.0 if (self.hand == "right") == (self.rotation == "clockwise") else -1.0
 
     #: Inputs of the tooth geometry that AGMA 2003's geometry factors J and I depend on.
     TOOTH_GEOMETRY: ClassVar[tuple[str, ...]] = (
@@ -236,6 +272,8 @@ class BevelPair(Spec):
             "pressure_angle": self.pressure_angle,
             "torque": self.torque,
             "power": self.power,
+            "spiral_angle": self.spiral_angle,
+            "thrust_sign": None if self.spiral_angle is None else self.thrust_sign,
             "quality_number": rating.quality_number if rating else None,
             "hardness": rating.hardness if rating else None,
             "material": rating.material if rating else None,
