@@ -307,6 +307,8 @@ def _member_field(members: Members, name: str, field: str) -> str:
 LIFE = Judged("modified rating life", "modified_rating_life", True, "ratio", "required")
 STATIC = Judged("static safety s0", "static_safety_factor", True)
 CONTACT = Judged("contact pressure", "max_contact_pressure", False, "fraction")
+
+
 def _weaker(key: str) -> Callable[[Mapping[str, float | None]], float | None]:
     """The smaller of the pinion's and gear B's ``key`` (gear B's where it is rated)."""
     def weaker(results: Mapping[str, float | None]) -> float | None:

@@ -15,6 +15,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core.common import MM
+from bearingcalc.core.gear_materials import THROUGH_HARDENED
 
 #: Gleason whole depth: h = 2.188·m + 0.051 mm. [m]
 WHOLE_DEPTH_FACTOR, WHOLE_DEPTH_EXTRA = 2.188, 0.051e-3
@@ -178,6 +179,26 @@ def dynamic_factor(quality_number: ArrayLike, pitch_line_speed: ArrayLike) -> ND
     return ((a_coeff + np.sqrt(200.0 * np.abs(np.asarray(pitch_line_speed)))) / a_coeff) ** b_exp
 
 
+def life_factors(cycles: ArrayLike) -> tuple[NDArray, NDArray]:
+    r"""AGMA 2003's stress-cycle factors of through-hardened steel beyond 10⁷ cycles.
+
+    .. math:: K_L = 1.683\,N^{-0.0323}, \qquad C_L = 3.4822\,N^{-0.0602}
+
+    Parameters
+    ----------
+    cycles : N, load cycles of the member. [1]
+
+    Returns
+    -------
+    (K_L [1], C_L [1]), bending and contact.
+
+    Source: Budynas & Nisbett, *Shigley's Mechanical Engineering Design*, 10th ed.,
+    ch. 15, the stress-cycle factors of straight bevel gears.
+    """
+    n = np.asarray(cycles, dtype=float)
+    return 1.683 * n ** -BENDING_LIFE_SLOPE, 3.4822 * n ** -CONTACT_LIFE_SLOPE
+
+
 def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: ArrayLike,
                 pinion_outer_diameter: ArrayLike, face_width: ArrayLike,
                 quality_number: ArrayLike, hardness: ArrayLike, mounting_factor: ArrayLike,
@@ -251,13 +272,14 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
         wt * ko * kv * km * cs * cxc / (b * de1 * np.asarray(pitting_geometry_factor, dtype=float)))
     if allowables is None:
         hb = np.asarray(hardness, dtype=float)
-        s_at, s_ac = 0.30 * hb + 14.48, 2.35 * hb + 162.89
+        bending_slope, bending_intercept, contact_slope, contact_intercept = (
+            THROUGH_HARDENED[1])
+        s_at, s_ac = bending_slope * hb + bending_intercept, contact_slope * hb + contact_intercept
     else:
         s_at, s_ac = (np.asarray(value, dtype=float) / 1e6 for value in allowables)
     n = np.asarray(cycles, dtype=float)
     r = np.asarray(reliability, dtype=float)
-    k_l = 1.683 * n ** -BENDING_LIFE_SLOPE
-    c_l = 3.4822 * n ** -CONTACT_LIFE_SLOPE
+    k_l, c_l = life_factors(n)
     k_r = np.where(r >= 0.99, 0.50 - 0.25 * np.log10(1.0 - r), 0.70 - 0.15 * np.log10(1.0 - r))
     k_t = np.asarray(temperature_factor, dtype=float)
     bending_safety = s_at * k_l / (k_t * k_r * bending)
@@ -272,14 +294,13 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
         gear_s_at, gear_s_ac = ((s_at, s_ac) if gear[3] is None else
                                 (np.asarray(gear[3], dtype=float) / 1e6,
                                  np.asarray(gear[4], dtype=float) / 1e6))
-        gear_cycles = n / gear_ratio
+        gear_k_l, gear_c_l = life_factors(n / gear_ratio)  # gear B turns N/n times
         gear_bending = bending * np.asarray(bending_geometry_factor, dtype=float) / j_g
         out.update({
             "gear_b_bending_stress": gear_bending * 1e6,
-            "gear_b_bending_safety": gear_s_at * 1.683 * gear_cycles ** -BENDING_LIFE_SLOPE
-            / (k_t * k_r * gear_bending),
-            "gear_b_contact_safety": gear_s_ac * 3.4822 * gear_cycles ** -CONTACT_LIFE_SLOPE
-            * c_h / (k_t * np.sqrt(k_r) * contact)})
+            "gear_b_bending_safety": gear_s_at * gear_k_l / (k_t * k_r * gear_bending),
+            "gear_b_contact_safety": gear_s_ac * gear_c_l * c_h
+            / (k_t * np.sqrt(k_r) * contact)})
     return out
 
 

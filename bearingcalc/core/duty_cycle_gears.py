@@ -90,6 +90,12 @@ def spectrum_damage(shares: ArrayLike, safeties: ArrayLike, slope: float) -> NDA
                   * np.asarray(safeties, dtype=float) ** (-1.0 / slope), axis=0)
 
 
+def _spectrum(shares: NDArray, safeties: NDArray, slope: float) -> tuple[NDArray, NDArray]:
+    """A member's safety over the spectrum, and each bin's damage Uᵢ·Sᵢ^(−1/b)."""
+    damage = shares * safeties ** (-1.0 / slope)
+    return spectrum_safety(shares, safeties, slope, np.argmax(damage, axis=0)), damage
+
+
 def _gear_cycle(results: Mapping[str, NDArray], shares: NDArray, inputs: Mapping[str, Any],
                 out: dict[str, NDArray]) -> tuple[NDArray, NDArray]:
     """The pair's rating over the cycle into ``out``; (bending, contact) damage per bin."""
@@ -97,17 +103,13 @@ def _gear_cycle(results: Mapping[str, NDArray], shares: NDArray, inputs: Mapping
         return np.zeros_like(shares), np.zeros_like(shares)
     per_bin = {}
     for load, slope in (("bending", BENDING_LIFE_SLOPE), ("contact", CONTACT_LIFE_SLOPE)):
-        safeties = results[f"{load}_safety"]
-        damage = shares * safeties ** (-1.0 / slope)
-        governing = np.argmax(damage, axis=0)
-        safety = spectrum_safety(shares, safeties, slope, governing)
+        safety, damage = _spectrum(shares, results[f"{load}_safety"], slope)
         out[f"{load}_safety"] = safety
         out[f"{load}_damage"] = np.sum(damage, axis=0)
         weaker = safety
         if f"gear_b_{load}_safety" in results:  # gear B's spectrum, at its own cycles
-            gear = results[f"gear_b_{load}_safety"]
-            out[f"gear_b_{load}_safety"] = spectrum_safety(
-                shares, gear, slope, np.argmax(shares * gear ** (-1.0 / slope), axis=0))
+            out[f"gear_b_{load}_safety"], _ = _spectrum(
+                shares, results[f"gear_b_{load}_safety"], slope)
             weaker = np.minimum(safety, out[f"gear_b_{load}_safety"])
         out[f"{load}_safety_margin"] = weaker - np.asarray(
             inputs[f"min_{load}_safety"], dtype=float)[0]
