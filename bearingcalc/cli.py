@@ -345,19 +345,10 @@ def sweep(
         chart = plot_target(plot)
         refuse_unwritable("sweep", [batch.spec_file(spec_path)], results_file, chart)
         kind, spec, document = load_one_spec(spec_path)
-        try:
-            axes = [sweeps.parse_axis(text, spec) for text in vary]
-            sweeps.check_axes(document, axes)
-            solved = sweeps.run_sweep(kind, spec, document.source, axes)
-        except sweeps.SweepError as error:
-            raise SpecError(str(error), source=document.source) from None
+        solved = sweeps.sweep_spec(kind, spec, document, vary)
         for note in solved.warnings:  # on stderr: the results may be a CSV or JSON stream
             print(f"warning: {note}", file=sys.stderr)
-        keys = result or [k for k in kind.governing if k in solved.results]
-        unknown = [k for k in keys if k not in solved.results]
-        if unknown:
-            raise SpecError(f"--result {unknown[0]!r} is not a result of this {kind.name} spec;"
-                            f" choose from {', '.join(solved.results)}", source=document.source)
+        keys = sweeps.shown_results(solved, result)
 
         writers: dict[SweepFormat, Writer] = {
             SweepFormat.table: lambda stream: reports.print_sweep_table(solved, keys, stream),

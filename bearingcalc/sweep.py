@@ -201,3 +201,25 @@ def run_sweep(kind: Kind, spec: Spec, source: str, axes: list[Axis]) -> Sweep:
     return Sweep(kind, source, name, axes, inputs, solved,
                  np.broadcast_to(status, shape).copy(), limits,
                  spec.study_notes([axis.name for axis in axes]))
+
+
+def sweep_spec(kind: Kind, spec: Spec, document: Document, vary: list[str]) -> Sweep:
+    """The sweep of a loaded spec over the axes written as ``--vary`` gives them; a bad
+    axis is a :class:`SpecError` of the spec."""
+    try:
+        axes = [parse_axis(text, spec) for text in vary]
+        check_axes(document, axes)
+        return run_sweep(kind, spec, document.source, axes)
+    except SweepError as error:
+        raise SpecError(str(error), source=document.source) from None
+
+
+def shown_results(solved: Sweep, asked: list[str] | None) -> list[str]:
+    """The results a table or chart shows: those asked for, else the kind's governing
+    ones; one the sweep has not is a :class:`SpecError`."""
+    keys = asked or [key for key in solved.kind.governing if key in solved.results]
+    unknown = [key for key in keys if key not in solved.results]
+    if unknown:
+        raise SpecError(f"--result {unknown[0]!r} is not a result of this {solved.kind.name} "
+                        f"spec; choose from {', '.join(solved.results)}", source=solved.source)
+    return keys
