@@ -15,7 +15,6 @@ Inputs in SI (m, rad, rad/s), floats or broadcasting arrays.
 from __future__ import annotations
 
 from collections.abc import Collection, Mapping
-from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -362,7 +361,7 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
         inputs["quality_number"], inputs["hardness"], inputs["mounting_factor"],  # type: ignore[arg-type]
         inputs["crowned"], inputs["geometry_factor_bending"],  # type: ignore[arg-type]
         inputs["geometry_factor_pitting"], inputs["overload_factor"], inputs["cycles"],  # type: ignore[arg-type]
-        inputs["reliability"], **_material_terms(inputs))  # type: ignore[arg-type]
+        inputs["reliability"], **gear_materials.rating_terms(inputs))  # type: ignore[arg-type]
     out.update(rating)
     bending, contact = rating["bending_safety"], rating["contact_safety"]
     if "gear_b_bending_safety" in rating:  # the weaker member of the two governs
@@ -371,34 +370,6 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
     out["bending_safety_margin"] = bending - np.asarray(inputs["min_bending_safety"])
     out["contact_safety_margin"] = contact - np.asarray(inputs["min_contact_safety"])
     return out, checks
-
-
-def _material_terms(inputs: Mapping[str, ArrayLike | None]) -> dict[str, Any]:
-    """The steel's allowable stresses, the temperature factor and gear B's own terms,
-    where the spec gives them (through-hardened grade 1 at normal temperature, the
-    pinion alone, otherwise)."""
-    terms: dict[str, Any] = {}
-    material = inputs.get("material")
-    # The grade is one number, repeated along a duty cycle's bins.
-    grade = None if material is None else int(np.asarray(inputs["grade"]).flat[0])
-    if material is not None and (material, grade) != ("through-hardened", 1):
-        terms["allowables"] = gear_materials.allowable_stresses(
-            str(material), grade, inputs.get("hardness"))
-    if inputs.get("temperature") is not None:
-        terms["temperature_factor"] = gear_materials.temperature_factor(inputs["temperature"])
-    if inputs.get("geometry_factor_bending_gear") is not None:
-        ratio = np.asarray(inputs["gear_b_teeth"], dtype=float) / np.asarray(
-            inputs["gear_a_teeth"], dtype=float)
-        gear_hardness = inputs.get("gear_hardness")
-        if gear_hardness is None:  # gear B of the pinion's steel
-            terms["gear"] = (inputs["geometry_factor_bending_gear"], ratio, 1.0, None, None)
-        else:  # a softer through-hardened gear B: its own allowables, and C_H
-            terms["gear"] = (inputs["geometry_factor_bending_gear"], ratio,
-                             gear_materials.hardness_ratio_factor(inputs["hardness"],
-                                                                  gear_hardness, ratio),
-                             *gear_materials.allowable_stresses(str(material), grade,
-                                                                gear_hardness))
-    return terms
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,

@@ -1,10 +1,14 @@
-"""AGMA 2003's allowable stress numbers of bevel-gear steels, and its temperature and
-hardness-ratio factors (``docs/physics.md`` §8).
+"""AGMA 2003's allowable stress numbers of bevel-gear steels, its temperature and
+hardness-ratio factors, and the rating terms a pair's steels set (``docs/physics.md``
+§8).
 
 Every function takes SI values as floats or numpy arrays and returns arrays.
 """
 
 from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -108,3 +112,32 @@ def hardness_ratio_factor(pinion_hardness: ArrayLike, gear_hardness: ArrayLike,
     ratio = np.asarray(pinion_hardness, dtype=float) / np.asarray(gear_hardness, dtype=float)
     b1 = np.where(ratio < 1.2, 0.0, 0.00898 * np.minimum(ratio, 1.7) - 0.00829)
     return 1.0 + b1 * (np.asarray(gear_ratio, dtype=float) - 1.0)
+
+
+def rating_terms(inputs: Mapping[str, ArrayLike | None]) -> dict[str, Any]:
+    """The keyword terms of :func:`bearingcalc.core.bevel_sizing.agma_rating` that the
+    steel sets: its allowable stresses, the temperature factor and gear B's own terms,
+    where the inputs [SI] give them (through-hardened grade 1 at normal temperature, the
+    pinion alone, otherwise)."""
+    terms: dict[str, Any] = {}
+    material = inputs.get("material")
+    # The grade is one number, repeated along a duty cycle's bins.
+    grade = None if material is None else int(np.asarray(inputs["grade"]).flat[0])
+    if material is not None and (material, grade) != ("through-hardened", 1):
+        terms["allowables"] = allowable_stresses(
+            str(material), grade, inputs.get("hardness"))
+    if inputs.get("temperature") is not None:
+        terms["temperature_factor"] = temperature_factor(inputs["temperature"])
+    if inputs.get("geometry_factor_bending_gear") is not None:
+        ratio = np.asarray(inputs["gear_b_teeth"], dtype=float) / np.asarray(
+            inputs["gear_a_teeth"], dtype=float)
+        gear_hardness = inputs.get("gear_hardness")
+        if gear_hardness is None:  # gear B of the pinion's steel
+            terms["gear"] = (inputs["geometry_factor_bending_gear"], ratio, 1.0, None, None)
+        else:  # a softer through-hardened gear B: its own allowables, and C_H
+            terms["gear"] = (inputs["geometry_factor_bending_gear"], ratio,
+                             hardness_ratio_factor(inputs["hardness"],
+                                                                  gear_hardness, ratio),
+                             *allowable_stresses(str(material), grade,
+                                                                gear_hardness))
+    return terms

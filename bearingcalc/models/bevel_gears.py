@@ -1,102 +1,28 @@
-"""Spec of ``kind: bevel-gears``: an epicyclic bevel pair (docs/physics.md §4)."""
+"""Spec of ``kind: bevel-gears``: a bevel pair on fixed axes, or an epicyclic one
+(docs/physics.md §4)."""
 
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Collection, Mapping
-from typing import Annotated, Any, ClassVar, Literal
+from typing import Any, ClassVar, Literal
 
-from pydantic import BeforeValidator, Field, WithJsonSchema
+from pydantic import Field
 
-from bearingcalc.core.gear_materials import GRADES
+from bearingcalc.core.bevel_sizing import MOUNTING_FACTOR
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
+from bearingcalc.models.bevel_rating import BevelRating
 from bearingcalc.models.duty import DutyCycleRules, bin_model
-from bearingcalc.models.plain_numbers import Ratio, ToothCount, ranged_number, reliability, shown
+from bearingcalc.models.plain_numbers import Ratio, ToothCount
 from bearingcalc.models.quantities import (
     Angle,
     AngularSpeed,
     PositiveLength,
     PositivePower,
-    Temperature,
     Torque,
 )
 from bearingcalc.models.rules import rule, whole_spec_rule
-from bearingcalc.number_grammar import UNSIGNED_DECIMAL
-
-MOUNTING_FACTOR = {"both-straddle": 1.00, "one-straddle": 1.10, "neither-straddle": 1.25}
-
-
-def _hardness(value: Any) -> float:
-    if isinstance(value, str):
-        match = re.fullmatch(rf"\s*({UNSIGNED_DECIMAL})\s*(?:HB|HBW|BHN)\s*", value, re.ASCII)
-        if match is None:
-            raise ValueError(f"write the Brinell hardness like '180 HB', got {value!r}")
-        value = float(match[1])
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise ValueError(f"write the Brinell hardness like '180 HB', got {value!r}")
-    if not 180 <= value <= 400:
-        got = shown(value) if isinstance(value, int) else f"{value:g}"
-        raise ValueError(f"must be from 180 to 400 HB (through-hardened steel in AGMA "
-                         f"2003), got {got}")
-    return float(value)
-
-
-Hardness = Annotated[float, BeforeValidator(_hardness), WithJsonSchema({"anyOf": [
-    {"type": "string", "pattern": rf"^\s*{UNSIGNED_DECIMAL}\s*(HB|HBW|BHN)\s*$"},
-    {"type": "number", "minimum": 180, "maximum": 400}]})]
-RatingReliability = reliability(0.9, 0.9999, "AGMA 2003's K_R")
-
-
-class BevelRating(SpecModel):
-    """The AGMA 2003 strength rating of a straight bevel pair of steel."""
-
-    quality_number: ranged_number(5, 11, "AGMA transmission accuracy number Qv", "7",  # type: ignore[valid-type]
-                                   whole=True)
-    material: Literal["through-hardened", "carburized", "nitrided",
-                      "flame-or-induction-hardened"] = Field(
-        "through-hardened", description="the heat treatment, which sets the allowable "
-        "stress numbers (with grade, and hardness for through-hardened steel)")
-    grade: Literal[1, 2, 3] = Field(1, description="AGMA metallurgical grade")
-    hardness: Hardness | None = Field(None, description="Brinell hardness of "
-                                      "through-hardened steel (the pinion's)")
-    gear_hardness: Hardness | None = Field(
-        None, description="gear B's Brinell hardness, through-hardened, for the "
-        "hardness-ratio factor C_H")
-    temperature: Temperature | None = Field(None, description="the blank's temperature, "
-                                            "for K_T (1 up to 250 °F)")
-    geometry_factor_bending_gear: ranged_number(1e-6, 10, "J of gear B, from AGMA 2003",  # type: ignore[valid-type]
-                                                "0.202") | None = Field(
-        None, description="J of gear B, to rate it too")
-    mounting: Literal["both-straddle", "one-straddle", "neither-straddle"] = Field(
-        description="Kmb 1.00 / 1.10 / 1.25")
-    crowned: bool = False
-    geometry_factor_bending: ranged_number(1e-6, 10, "J, from AGMA 2003", "0.216")  # type: ignore[valid-type]
-    geometry_factor_pitting: ranged_number(1e-6, 10, "I, from AGMA 2003", "0.065")  # type: ignore[valid-type]
-    overload_factor: ranged_number(1, 10, "Ko", "1.0") = 1.0  # type: ignore[valid-type]
-    cycles: ranged_number(1e3, 1e10, "load cycles of the pinion", "1e7") = 1e7  # type: ignore[valid-type]
-    reliability: RatingReliability = 0.99
-
-    @rule
-    def _steel_given(self) -> SpecFieldError | None:
-        grades = GRADES[self.material]
-        if self.grade not in grades:
-            return SpecFieldError("grade", f"{self.material} steel has grade "
-                                  f"{' or '.join(map(str, grades))} in AGMA 2003's table")
-        if self.material == "through-hardened" and self.hardness is None:
-            return SpecFieldError("hardness", "through-hardened steel needs its Brinell "
-                                  "hardness, like 300 HB", at="material")
-        if self.gear_hardness is not None and self.geometry_factor_bending_gear is None:
-            return SpecFieldError("geometry_factor_bending_gear", "gear_hardness rates gear "
-                                  "B: give its J too, like 0.202", at="gear_hardness")
-        if self.material != "through-hardened":
-            for field in ("hardness", "gear_hardness"):
-                if getattr(self, field) is not None:
-                    return SpecFieldError(field, f"{self.material} steel's allowable "
-                                          "stresses are fixed by its grade: leave the "
-                                          "Brinell hardness out")
-        return None
 
 
 class Gear(SpecModel):
