@@ -134,3 +134,32 @@ def test_a_spiral_pair_is_not_rated(cli, spec_file):
         "spiral_angle: 35 deg\nhand: right\nrotation: clockwise\n")
     run = cli("solve", spec_file(text))
     assert run.code == 2 and run.err.count("\n") == 1 and ": rating: " in run.err, run.err
+
+
+@pytest.mark.parametrize("sigma", [90.0, 70.0])
+def test_the_normal_section_is_the_virtual_helical_gears(cli, spec_file, sigma):
+    """The normal-section spur gear whose flank has the curvature of the virtual helical
+    gear's involute helicoid at the pitch point, reached through the transverse section:
+    α_t = atan(tan φn/cos β), tan β_b = tan β·cos α_t, the transverse flank radius
+    ρ_t = r_v·sin α_t, the normal one ρ_n = ρ_t/cos β_b, and z_vn = 2ρ_n/(m_mn·sin φn)."""
+    (record,) = solve_json(cli, spec_file(PAIR.format(sigma=sigma, hand="left",
+                                                      rotation="clockwise")))
+    results = record["results"]
+    beta, phi_n = math.radians(35.0), math.radians(20.0)
+    normal_module = results["mean_module"] * math.cos(beta)
+    assert results["mean_normal_module"] == pytest.approx(normal_module, rel=1e-12)
+    alpha_t = math.atan(math.tan(phi_n) / math.cos(beta))
+    base_helix = math.atan(math.tan(beta) * math.cos(alpha_t))
+    for gear in ("gear_a", "gear_b"):
+        virtual_radius = results[f"{gear}_virtual_teeth"] * results["mean_module"] / 2
+        normal_flank = virtual_radius * math.sin(alpha_t) / math.cos(base_helix)
+        expected = 2 * normal_flank / (normal_module * math.sin(phi_n))
+        assert results[f"{gear}_normal_virtual_teeth"] == pytest.approx(expected, rel=1e-12)
+
+
+def test_a_straight_pair_has_no_normal_section(cli, spec_file):
+    straight = PAIR.format(sigma=90, hand="right", rotation="clockwise").replace(
+        "spiral_angle: 35 deg\nhand: right\nrotation: clockwise\n", "")
+    (record,) = solve_json(cli, spec_file(straight))
+    assert "mean_normal_module" not in record["results"]
+    assert "gear_a_normal_virtual_teeth" not in record["results"]

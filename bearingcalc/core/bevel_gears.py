@@ -54,6 +54,10 @@ RESULTS: dict[str, tuple[str, str]] = {
     "gear_b_mean_pitch_diameter": ("m", "dm2 = de2·Rm/Re"),
     "gear_a_virtual_teeth": ("1", "zv1 = z1/cosδ1 (Tredgold)"),
     "gear_b_virtual_teeth": ("1", "zv2 = z2/cosδ2"),
+    "mean_normal_module": ("m", "a spiral pair's mmn = mm·cosβm"),
+    "gear_a_normal_virtual_teeth": ("1", "a spiral pair's zvn1 = zv1/(cos²βvb·cosβm), "
+                                         "sinβvb = sinβm·cosφn (ISO 10300-1)"),
+    "gear_b_normal_virtual_teeth": ("1", "a spiral pair's zvn2 = zv2/(cos²βvb·cosβm)"),
     "gear_a_addendum": ("m", "ha1 = 2m − ha2 (Gleason)"),
     "gear_b_addendum": ("m", "ha2 (Gleason)"),
     "gear_a_dedendum": ("m", "hf1 = h − ha1, h = 2.188·m + 0.051 mm"),
@@ -95,7 +99,9 @@ GROUPS: dict[str, tuple[str, ...]] = {
     "geometry": ("outer_cone_distance", "mean_cone_distance", "face_width_ratio",
                  "mean_module", "gear_a_outer_pitch_diameter", "gear_b_outer_pitch_diameter",
                  "gear_a_mean_pitch_diameter", "gear_b_mean_pitch_diameter",
-                 "gear_a_virtual_teeth", "gear_b_virtual_teeth", "gear_a_addendum",
+                 "gear_a_virtual_teeth", "gear_b_virtual_teeth", "mean_normal_module",
+                 "gear_a_normal_virtual_teeth", "gear_b_normal_virtual_teeth",
+                 "gear_a_addendum",
                  "gear_b_addendum", "gear_a_dedendum", "gear_b_dedendum",
                  "gear_a_dedendum_angle", "gear_b_dedendum_angle", "gear_a_outside_diameter",
                  "gear_b_outside_diameter", "gear_a_crown_to_apex", "gear_b_crown_to_apex",
@@ -333,6 +339,10 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
                                       inputs["module"], alpha, beta, face, phi)  # type: ignore[arg-type]
     checks: list[tuple[int, NDArray]] = [(7, ~(face < 0.5 * out["outer_cone_distance"]))]
     out["face_width_margin"] = np.asarray(inputs["max_face_width_ratio"]) - out["face_width_ratio"]
+    if inputs.get("spiral_angle") is not None:
+        out.update(bevel_sizing.spiral_normal_section(
+            out["mean_module"], out["gear_a_virtual_teeth"], out["gear_b_virtual_teeth"],
+            inputs["spiral_angle"], phi))  # type: ignore[arg-type]
     # Not a result: the undercut warning's flag, which evaluate() takes out.
     out["undercut"] = out["gear_a_virtual_teeth"] < 2.0 / np.sin(phi) ** 2
     speed = np.abs(kinematics["gear_a_speed_relative_to_arm"])

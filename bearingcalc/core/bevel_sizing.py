@@ -105,6 +105,41 @@ def blank_geometry(pinion_teeth: ArrayLike, gear_teeth: ArrayLike, module: Array
     return out
 
 
+def spiral_normal_section(mean_module: ArrayLike, virtual_teeth_1: ArrayLike,
+                          virtual_teeth_2: ArrayLike, spiral_angle: ArrayLike,
+                          normal_pressure_angle: ArrayLike) -> dict[str, NDArray]:
+    r"""The virtual cylindrical gears of a spiral bevel pair in the normal section at the
+    mean point of the face.
+
+    .. math:: m_{mn} = m_m\cos\beta_m, \qquad \sin\beta_{vb} = \sin\beta_m\cos\alpha_n,
+              \qquad z_{vn} = \frac{z_v}{\cos^2\beta_{vb}\,\cos\beta_m}
+
+    z_vn is the number of teeth of the spur gear whose flank, in the normal section,
+    has the curvature of the virtual helical gear's at the pitch point; β_vb is the
+    virtual gear's base helix angle.
+
+    Parameters
+    ----------
+    mean_module : m_m, the mean transverse module. [m]
+    virtual_teeth_1, virtual_teeth_2 : z_v = z/cosδ of each gear. [1]
+    spiral_angle : β_m. [rad]
+    normal_pressure_angle : α_n. [rad]
+
+    Returns
+    -------
+    mean_normal_module [m], gear_a_normal_virtual_teeth and
+    gear_b_normal_virtual_teeth [1].
+
+    Source: ISO 10300-1:2014, the virtual cylindrical gears in the normal section.
+    """
+    beta = np.asarray(spiral_angle, dtype=float)
+    sin_base_helix = np.sin(beta) * np.cos(np.asarray(normal_pressure_angle, dtype=float))
+    to_normal = 1.0 / ((1.0 - sin_base_helix**2) * np.cos(beta))
+    return {"mean_normal_module": np.asarray(mean_module, dtype=float) * np.cos(beta),
+            "gear_a_normal_virtual_teeth": np.asarray(virtual_teeth_1, dtype=float) * to_normal,
+            "gear_b_normal_virtual_teeth": np.asarray(virtual_teeth_2, dtype=float) * to_normal}
+
+
 def virtual_contact_ratio(pitch_radius_1: ArrayLike, pitch_radius_2: ArrayLike,
                           addendum_1: ArrayLike, addendum_2: ArrayLike, module: ArrayLike,
                           pressure_angle: ArrayLike) -> NDArray:
