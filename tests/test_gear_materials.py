@@ -4,6 +4,7 @@ printed and the factors' formulas written here."""
 
 from __future__ import annotations
 
+import json
 import math
 
 import pytest
@@ -176,3 +177,28 @@ def test_a_gear_hardness_without_gear_bs_j_is_refused(cli, spec_file):
     run = cli("solve", spec_file(text))
     assert run.code == 2 and run.err.count("\n") == 1
     assert ": rating.geometry_factor_bending_gear: " in run.err
+
+
+def test_a_sweep_over_the_grade_is_each_grade_solved_alone(cli, spec_file, tmp_path):
+    """A choice of whole numbers sweeps like a count: each point is the spec with that
+    grade (carburized grades 1 to 3, Table 15-6's numbers), solved on its own."""
+    spec = spec_file(EXAMPLE_15_2, "steel.yaml")
+    run = cli("sweep", spec, "--vary", "rating.grade=1:3:3", "-f", "json")
+    assert run.code == 0, run.err
+    points = [json.loads(line) for line in run.out.splitlines()]
+    assert [point["inputs"]["rating.grade"] for point in points] == [1, 2, 3]
+    for point in points:
+        grade = point["inputs"]["rating.grade"]
+        (alone,) = solve_json(cli, spec_file(EXAMPLE_15_2.replace("grade: 1",
+                                                                  f"grade: {grade}"),
+                                             f"grade-{grade}.yaml"))
+        for key in ("bending_safety", "contact_safety", "gear_b_bending_safety"):
+            assert point["results"][key] == pytest.approx(alone["results"][key],
+                                                          rel=1e-12), (grade, key)
+
+
+def test_a_grade_the_steel_has_not_stops_the_sweep(cli, spec_file):
+    spec = spec_file(EXAMPLE_15_2.replace("material: carburized", "material: nitrided")
+                     .replace("grade: 1", "grade: 2"))
+    run = cli("sweep", spec, "--vary", "rating.grade=1:2:2")
+    assert run.code == 2 and run.err.count("\n") == 1 and "rating.grade" in run.err, run.err

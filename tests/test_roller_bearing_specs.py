@@ -10,7 +10,7 @@ import math
 import pytest
 
 from bearingcalc.core import roller_bearing_contacts as rbc
-from tests.conftest import solve_json
+from tests.conftest import ROOT, solve_json
 from tests.test_roller_bearing import DEG, REL, results_of
 
 # --- 4. the ISO 76 basis: 4000 MPa at C0 -------------------------------------------------------
@@ -103,3 +103,19 @@ def test_ball_bearing_kind_is_an_alias_of_rolling_bearing(cli, spec_file):
     assert json.dumps(rolling["results"]) == json.dumps(ball["results"])
     assert rolling["units"] == ball["units"] and rolling["warnings"] == ball["warnings"]
     assert "pair_dynamic_load_rating" in rolling["results"]
+
+
+def test_a_sweep_over_the_rows_is_each_row_count_solved_alone(cli, spec_file):
+    """rows, a choice of 1 or 2, sweeps like a count: a tapered roller bearing's C grows
+    by 2^(7/9) from one row to two, and each point is the spec solved alone."""
+    text = (ROOT / "specs" / "rolling-bearing-tapered-geometry.yaml").read_text().replace(
+        "type: tapered-roller\n", "type: tapered-roller\nrows: 1\n")
+    run = cli("sweep", spec_file(text, "one-row.yaml"), "--vary", "rows=1:2:2", "-f", "json")
+    assert run.code == 0, run.err
+    points = {json.loads(line)["inputs"]["rows"]: json.loads(line)["results"]
+              for line in run.out.splitlines()}
+    assert points[2]["dynamic_load_rating"] == pytest.approx(
+        points[1]["dynamic_load_rating"] * 2 ** (7 / 9), rel=1e-12)
+    (alone,) = solve_json(cli, spec_file(text.replace("rows: 1", "rows: 2"), "two.yaml"))
+    for key in ("dynamic_load_rating", "modified_rating_life"):
+        assert points[2][key] == pytest.approx(alone["results"][key], rel=1e-12)

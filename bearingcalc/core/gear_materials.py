@@ -38,7 +38,7 @@ GRADES: dict[str, tuple[int, ...]] = {
 TEMPERATURE_FACTOR_FROM = (250.0 - 32.0) / 1.8 + 273.15    # K
 
 
-def allowable_stresses(material: str, grade: int, hardness: ArrayLike | None = None
+def allowable_stresses(material: str, grade: ArrayLike, hardness: ArrayLike | None = None
                        ) -> tuple[NDArray, NDArray]:
     r"""AGMA 2003's allowable bending and contact stress numbers s_at, s_ac of a bevel
     gear steel.
@@ -52,24 +52,26 @@ def allowable_stresses(material: str, grade: int, hardness: ArrayLike | None = N
     ----------
     material : "through-hardened", "carburized", "nitrided" or
         "flame-or-induction-hardened".
-    grade : the metallurgical grade (see :data:`GRADES`).
+    grade : the metallurgical grade (see :data:`GRADES`), a number or an array. [1]
     hardness : HB, through-hardened steel only. [1]
 
     Returns
     -------
-    (s_at, s_ac). [Pa]
+    (s_at, s_ac) [Pa]; NaN where the material has no such grade.
 
     Source: ANSI/AGMA 2003-B97; Budynas & Nisbett, *Shigley's Mechanical Engineering
     Design*, §15-3, Tables 15-4 and 15-6, Figures 15-12 and 15-13 (SI).
     """
+    grades = np.asarray(grade, dtype=float)
+    which = [grades == choice for choice in GRADES[material]]
     if material == "through-hardened":
-        bending_slope, bending_intercept, contact_slope, contact_intercept = (
-            THROUGH_HARDENED[grade])
         hb = np.asarray(hardness, dtype=float)
-        return ((bending_slope * hb + bending_intercept) * 1e6,
-                (contact_slope * hb + contact_intercept) * 1e6)
-    s_at, s_ac = FIXED_ALLOWABLES[(material, grade)]
-    return np.asarray(s_at * 1e6), np.asarray(s_ac * 1e6)
+        lines = [THROUGH_HARDENED[choice] for choice in GRADES[material]]
+        return (np.select(which, [(line[0] * hb + line[1]) * 1e6 for line in lines], np.nan),
+                np.select(which, [(line[2] * hb + line[3]) * 1e6 for line in lines], np.nan))
+    numbers = [FIXED_ALLOWABLES[(material, choice)] for choice in GRADES[material]]
+    return (np.select(which, [s_at * 1e6 for s_at, _ in numbers], np.nan),
+            np.select(which, [s_ac * 1e6 for _, s_ac in numbers], np.nan))
 
 
 def temperature_factor(temperature: ArrayLike) -> NDArray:
@@ -121,11 +123,9 @@ def rating_terms(inputs: Mapping[str, ArrayLike | None]) -> dict[str, Any]:
     pinion alone, otherwise)."""
     terms: dict[str, Any] = {}
     material = inputs.get("material")
-    # The grade is one number, repeated along a duty cycle's bins.
-    grade = None if material is None else int(np.asarray(inputs["grade"]).flat[0])
-    if material is not None and (material, grade) != ("through-hardened", 1):
-        terms["allowables"] = allowable_stresses(
-            str(material), grade, inputs.get("hardness"))
+    grade = None if material is None else np.asarray(inputs["grade"], dtype=float)
+    if material is not None and not (material == "through-hardened" and np.all(grade == 1)):
+        terms["allowables"] = allowable_stresses(str(material), grade, inputs.get("hardness"))
     if inputs.get("temperature") is not None:
         terms["temperature_factor"] = temperature_factor(inputs["temperature"])
     if inputs.get("geometry_factor_bending_gear") is not None:
@@ -136,8 +136,6 @@ def rating_terms(inputs: Mapping[str, ArrayLike | None]) -> dict[str, Any]:
             terms["gear"] = (inputs["geometry_factor_bending_gear"], ratio, 1.0, None, None)
         else:  # a softer through-hardened gear B: its own allowables, and C_H
             terms["gear"] = (inputs["geometry_factor_bending_gear"], ratio,
-                             hardness_ratio_factor(inputs["hardness"],
-                                                                  gear_hardness, ratio),
-                             *allowable_stresses(str(material), grade,
-                                                                gear_hardness))
+                             hardness_ratio_factor(inputs["hardness"], gear_hardness, ratio),
+                             *allowable_stresses(str(material), grade, gear_hardness))
     return terms

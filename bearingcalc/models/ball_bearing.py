@@ -345,6 +345,6 @@ class BallBearingSpec(DutyCycleRules, RollerRules, OperatingRules, GeometryRules
             return {}
         spherical = self.type in ("spherical-roller", "thrust-spherical-roller")
         return {"roller_count": self.roller_count, "roller_diameter": self.roller_diameter,
-                "roller_length": self.roller_length, "rows": float(self.rows),
+                "roller_length": self.roller_length, "rows": self.rows,
                 "roller_profile_radius": self.roller_profile_radius if spherical else None,
                 "raceway_radius": self.raceway_radius if spherical else None}

@@ -95,8 +95,9 @@ def _model_in(annotation: Any) -> type[BaseModel] | None:
 def field_parser(info: FieldInfo) -> tuple[str, Any, str] | None:
     """How to read a value of a spec field from text, for sweeps.
 
-    Returns ("quantity", text -> SI float, SI unit), ("integer", text -> int, "1"),
-    ("number", text -> float, "1"), or None for fields that are not numbers.
+    Returns ("quantity", text -> SI float, SI unit), ("integer", text -> int, "1") (a
+    count, or a choice of whole numbers), ("number", text -> float, "1"), or None for
+    fields that are not numbers.
     """
     metadata = list(info.metadata)
     for arg in typing.get_args(info.annotation):
@@ -110,7 +111,19 @@ def field_parser(info: FieldInfo) -> tuple[str, Any, str] | None:
             return "integer", _whole_number, "1"
         if func is _plain_number or isinstance(func, (_Percentage, _RangedNumber)):
             return "number", _finite_number, "1"
+    if _whole_choices(info.annotation):  # a grade, a number of rows: validated per point
+        return "integer", _whole_number, "1"
     return None
+
+
+def _whole_choices(annotation: Any) -> bool:
+    """Whether the annotation is a choice of whole numbers (``Literal[1, 2, 3]``, maybe
+    optional)."""
+    for arg in (annotation, *typing.get_args(annotation)):
+        if typing.get_origin(arg) is typing.Literal:
+            choices = typing.get_args(arg)
+            return all(isinstance(c, int) and not isinstance(c, bool) for c in choices)
+    return False
 
 
 def _parse_as(text: str, dimension: Dimension) -> float:

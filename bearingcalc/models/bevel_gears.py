@@ -203,7 +203,7 @@ class BevelPair(Spec):
             "quality_number": rating.quality_number if rating else None,
             "hardness": rating.hardness if rating else None,
             "material": rating.material if rating else None,
-            "grade": float(rating.grade) if rating else None,
+            "grade": rating.grade if rating else None,
             "gear_hardness": rating.gear_hardness if rating else None,
             "temperature": rating.temperature if rating else None,
             "geometry_factor_bending_gear": (rating.geometry_factor_bending_gear
