@@ -11,7 +11,7 @@ from typing import IO, TYPE_CHECKING, Any
 
 from bearingcalc.reports.formatting import console, format_number, safe_text, verdict_line
 from bearingcalc.units import to_display
-from bearingcalc.wording import plural, printable
+from bearingcalc.wording import printable
 
 if TYPE_CHECKING:  # the report types only; their modules load with their commands
     from bearingcalc.evaluation import Evaluation, Verdict
@@ -111,9 +111,12 @@ def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
         if not evaluation.margins:
             out.print(f"[bold green]PASS[/]: {safe_text(_no_margins(kind))}")
         elif evaluation.within_limits:
-            closest = (f": {verdict_line(evaluation.verdicts[0])}, the closest of "
-                       f"{plural(len(evaluation.verdicts), 'limit')}"
-                       if evaluation.verdicts else ": within limits")
+            count = len(evaluation.verdicts)
+            closest = (": within limits" if not count else
+                       f": {verdict_line(evaluation.verdicts[0])}, the only limit judged"
+                       if count == 1 else
+                       f": {verdict_line(evaluation.verdicts[0])}, the closest of {count} "
+                       "limits")
             out.print(f"[bold green]PASS[/]{safe_text(closest)}")
         else:
             for line in evaluation.violations:
