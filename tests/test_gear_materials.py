@@ -202,3 +202,23 @@ def test_a_grade_the_steel_has_not_stops_the_sweep(cli, spec_file):
                      .replace("grade: 1", "grade: 2"))
     run = cli("sweep", spec, "--vary", "rating.grade=1:2:2")
     assert run.code == 2 and run.err.count("\n") == 1 and "rating.grade" in run.err, run.err
+
+
+def test_a_sweep_over_the_hardness_follows_the_allowables(cli, spec_file):
+    """Through-hardened grade 1: S_F ∝ s_at = 0.30·HB + 14.48 and S_H ∝ s_ac = 2.35·HB +
+    162.89 MPa (Budynas & Nisbett Figs 15-12, 15-13), the bounds written with HB."""
+    base = EXAMPLE_15_2.replace("material: carburized", "material: through-hardened\n"
+                                "  hardness: 300 HB").replace("  temperature: 300 degF\n", "")
+    run = cli("sweep", spec_file(base), "--vary", "rating.hardness=200HB:400 HB:3", "-f",
+              "json")
+    assert run.code == 0, run.err
+    points = {json.loads(line)["inputs"]["rating.hardness"]: json.loads(line)["results"]
+              for line in run.out.splitlines()}
+    assert sorted(points) == [200.0, 300.0, 400.0]
+    for hardness, results in points.items():
+        assert results["bending_safety"] == pytest.approx(
+            points[200.0]["bending_safety"] * (0.30 * hardness + 14.48) / (0.30 * 200 + 14.48),
+            rel=1e-12)
+        assert results["contact_safety"] == pytest.approx(
+            points[200.0]["contact_safety"] * (2.35 * hardness + 162.89)
+            / (2.35 * 200 + 162.89), rel=1e-12)

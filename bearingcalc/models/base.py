@@ -110,7 +110,8 @@ def field_parser(info: FieldInfo) -> tuple[str, Any, str] | None:
         if isinstance(func, _Count):
             return "integer", _whole_number, "1"
         if func is _plain_number or isinstance(func, (_Percentage, _RangedNumber)):
-            return "number", _finite_number, "1"
+            # A number written with a word of its own ('250HB') is read by its validator.
+            return "number", getattr(func, "read", _finite_number), "1"
     if _whole_choices(info.annotation):  # a grade, a number of rows: validated per point
         return "integer", _whole_number, "1"
     return None

@@ -11,28 +11,44 @@ from pydantic import BeforeValidator, Field, WithJsonSchema
 from bearingcalc.core.gear_materials import GRADES
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import SpecModel
-from bearingcalc.models.plain_numbers import ranged_number, reliability, shown
+from bearingcalc.models.plain_numbers import _RangedNumber, ranged_number, reliability, shown
 from bearingcalc.models.quantities import Temperature
 from bearingcalc.models.rules import rule
 from bearingcalc.number_grammar import UNSIGNED_DECIMAL
 
 
-def _hardness(value: Any) -> float:
-    if isinstance(value, str):
-        match = re.fullmatch(rf"\s*({UNSIGNED_DECIMAL})\s*(?:HB|HBW|BHN)\s*", value, re.ASCII)
+class _BrinellHardness(_RangedNumber):
+    """A Brinell hardness within AGMA 2003's 180 to 400 HB of through-hardened steel,
+    written '300 HB' or 300: a ranged number (so a sweep steps through it) that may carry
+    its unit."""
+
+    def __init__(self) -> None:
+        super().__init__(180, 400, "through-hardened steel in AGMA 2003", "300 HB",
+                         whole=False, exclusive=False)
+
+    def read(self, text: str) -> float:
+        """A hardness as a sweep's bounds give it: '250HB' or 250."""
+        match = re.fullmatch(rf"\s*({UNSIGNED_DECIMAL})\s*(?:HB|HBW|BHN)?\s*", text, re.ASCII)
         if match is None:
+            raise ValueError(f"write the Brinell hardness like '180 HB', got {text!r}")
+        return float(match[1])
+
+    def __call__(self, value: Any) -> float:
+        if isinstance(value, str):
+            match = re.fullmatch(rf"\s*({UNSIGNED_DECIMAL})\s*(?:HB|HBW|BHN)\s*", value,
+                                 re.ASCII)
+            if match is None:
+                raise ValueError(f"write the Brinell hardness like '180 HB', got {value!r}")
+            value = float(match[1])
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise ValueError(f"write the Brinell hardness like '180 HB', got {value!r}")
-        value = float(match[1])
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise ValueError(f"write the Brinell hardness like '180 HB', got {value!r}")
-    if not 180 <= value <= 400:
-        got = shown(value) if isinstance(value, int) else f"{value:g}"
-        raise ValueError(f"must be from 180 to 400 HB (through-hardened steel in AGMA "
-                         f"2003), got {got}")
-    return float(value)
+        if not self.low <= value <= self.high:
+            got = shown(value) if isinstance(value, int) else f"{value:g}"
+            raise ValueError(f"must be from 180 to 400 HB ({self.what}), got {got}")
+        return float(value)
 
 
-Hardness = Annotated[float, BeforeValidator(_hardness), WithJsonSchema({"anyOf": [
+Hardness = Annotated[float, BeforeValidator(_BrinellHardness()), WithJsonSchema({"anyOf": [
     {"type": "string", "pattern": rf"^\s*{UNSIGNED_DECIMAL}\s*(HB|HBW|BHN)\s*$"},
     {"type": "number", "minimum": 180, "maximum": 400}]})]
 RatingReliability = reliability(0.9, 0.9999, "AGMA 2003's K_R")
