@@ -28,24 +28,25 @@ class _BrinellHardness(_RangedNumber):
 
     def read(self, text: str) -> float:
         """A hardness as a sweep's bounds give it: '250HB' or 250."""
-        match = re.fullmatch(rf"\s*({UNSIGNED_DECIMAL})\s*(?:HB|HBW|BHN)?\s*", text, re.ASCII)
-        if match is None:
-            raise ValueError(f"write the Brinell hardness like '180 HB', got {text!r}")
-        return float(match[1])
+        return _written_hardness(text, word_required=False)
 
     def __call__(self, value: Any) -> float:
-        if isinstance(value, str):
-            match = re.fullmatch(rf"\s*({UNSIGNED_DECIMAL})\s*(?:HB|HBW|BHN)\s*", value,
-                                 re.ASCII)
-            if match is None:
-                raise ValueError(f"write the Brinell hardness like '180 HB', got {value!r}")
-            value = float(match[1])
+        if isinstance(value, str):  # in a spec, a number in quotes carries its word
+            value = _written_hardness(value, word_required=True)
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise ValueError(f"write the Brinell hardness like '180 HB', got {value!r}")
         if not self.low <= value <= self.high:
             got = shown(value) if isinstance(value, int) else f"{value:g}"
             raise ValueError(f"must be from 180 to 400 HB ({self.what}), got {got}")
         return float(value)
+
+
+def _written_hardness(text: str, *, word_required: bool) -> float:
+    """The number of '300 HB' (or HBW, BHN; or bare where the word is not required)."""
+    match = re.fullmatch(rf"\s*({UNSIGNED_DECIMAL})\s*(HB|HBW|BHN)?\s*", text, re.ASCII)
+    if match is None or (word_required and match[2] is None):
+        raise ValueError(f"write the Brinell hardness like '180 HB', got {text!r}")
+    return float(match[1])
 
 
 Hardness = Annotated[float, BeforeValidator(_BrinellHardness()), WithJsonSchema({"anyOf": [
