@@ -15,8 +15,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from bearingcalc.errors import SpecError
-from bearingcalc.evaluation import Evaluation, Verdict, evaluate_documents, load_selected
+from bearingcalc.evaluation import Evaluation, evaluate_documents, load_selected
 from bearingcalc.models.yaml_loader import Document, is_spec_file
+from bearingcalc.verdicts import Verdict
 
 PASS, FAIL, INVALID = "pass", "fail", "invalid"
 #: Below this many files a worker pool costs more than it saves.

@@ -10,7 +10,7 @@ from __future__ import annotations
 import functools
 import math
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -27,27 +27,8 @@ from bearingcalc.models.yaml_loader import (
     Document,
     load_documents,
 )
+from bearingcalc.verdicts import Verdict, judge
 from bearingcalc.wording import did_you_mean, plural
-
-
-@dataclass(frozen=True)
-class Verdict:
-    """One limit judged: the quantity, its value and limit [SI], and the margin as a
-    fraction of the limit (value/limit − 1 for a lower limit, 1 − value/limit for an
-    upper one; below 0 where the limit is broken)."""
-
-    key: str          # the margin's result key
-    name: str         # what is judged, in words
-    value: float
-    limit: float
-    unit: str         # SI unit of value and limit
-    margin: float
-    at_least: bool    # a lower limit (a life, a safety) or an upper one (a pressure)
-    limit_word: str   # how the limit is named: "required", "min", "max"
-
-    @property
-    def passed(self) -> bool:
-        return self.margin >= 0
 
 
 @dataclass
@@ -302,25 +283,7 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
     name = spec.name or _default_name(document)
     warnings += spec.result_notes(results)
     return Evaluation(document.source, kind.name, name, results, units, margins, warnings,
-                      spec.row_names(), _verdicts(kind, results, margins))
-
-
-def _verdicts(kind: Kind, results: Mapping[str, float | None],
-              margins: Mapping[str, float]) -> list[Verdict]:
-    """Each judged margin as a :class:`Verdict`, the worst first."""
-    verdicts = []
-    for key, margin in margins.items():
-        judged = kind.judged.get(key)
-        value = None if judged is None else judged.value(results)
-        if judged is None or value is None:
-            continue
-        limit = judged.limit(value, margin)
-        unit = (kind.results[judged.quantity][0] if isinstance(judged.quantity, str)
-                else kind.results[key][0])
-        verdicts.append(Verdict(key, judged.name, value, limit, unit,
-                                judged.fraction(margin, limit), judged.at_least,
-                                judged.limit_word))
-    return sorted(verdicts, key=lambda verdict: verdict.margin)
+                      spec.row_names(), judge(kind, results, margins))
 
 
 def _default_name(document: Document) -> str:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import functools
 import importlib
 import re
-from collections.abc import Callable, Collection, Iterator, Mapping
+from collections.abc import Collection, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -20,6 +20,15 @@ from numpy.typing import NDArray
 
 from bearingcalc.core.common import STATUS_DTYPE
 from bearingcalc.core.solver import BIN_PREFIX, MAX_BINS, Members, Solution, Solver
+from bearingcalc.verdicts import (
+    CONTACT,
+    LIFE,
+    PAIR,
+    SPIN_TO_ROLL,
+    STATIC,
+    Judged,
+    smallest_bearing_safety,
+)
 
 if TYPE_CHECKING:
     from bearingcalc.models.base import Spec
@@ -31,57 +40,6 @@ OUT_OF_RANGE = 99
 MEMBER_CODES_FROM = 100
 OUT_OF_RANGE_REASON = ("", "the design's numbers are out of the range of double precision; "
                        "check the magnitudes of the inputs")
-
-
-@dataclass(frozen=True)
-class Judged:
-    """How a margin judges a result against its limit, for verdicts in engineering terms.
-
-    ``quantity`` is the result judged (or a function of the results where no one result
-    is it: a drive's smallest s0). The margin is formed as ``form`` says: "ratio"
-    (quantity/limit − 1), "difference" (quantity − limit, or limit − |quantity| for an
-    upper limit) or "fraction" (1 − quantity/limit); the limit follows from the margin
-    and the quantity, and every margin reads as a fraction of its limit.
-    """
-
-    name: str
-    quantity: str | Callable[[Mapping[str, float | None]], float | None]
-    at_least: bool
-    form: str = "difference"
-    #: how a verdict names the limit: "required" (a life), "min" (a safety), "max"
-    word: str = ""
-
-    @property
-    def limit_word(self) -> str:
-        return self.word or ("min" if self.at_least else "max")
-
-    def value(self, results: Mapping[str, float | None]) -> float | None:
-        """The judged quantity (its size, for an upper limit on a signed one)."""
-        value = (self.quantity(results) if callable(self.quantity)
-                 else results.get(self.quantity))
-        return None if value is None else (value if self.at_least else abs(value))
-
-    def limit(self, value: float, margin: float) -> float:
-        """The limit that gives ``margin`` at ``value``."""
-        if self.form == "ratio":
-            return value / (1.0 + margin)
-        if self.form == "fraction":
-            return value / (1.0 - margin)
-        return value - margin if self.at_least else value + margin
-
-    def fraction(self, margin: float, limit: float) -> float:
-        """The margin as a fraction of the limit: value/limit − 1 for a lower limit,
-        1 − value/limit for an upper one."""
-        if self.form in ("ratio", "fraction") or limit == 0:
-            return margin  # a zero limit: the margin itself (0 where the limit is met)
-        return margin / limit
-
-
-def smallest_bearing_safety(results: Mapping[str, float | None]) -> float | None:
-    """The smallest s0 of a drive's bearings."""
-    found = [value for key, value in results.items()
-             if key.endswith("_static_safety_factor") and value is not None]
-    return min(found) if found else None
 
 
 @dataclass(frozen=True)
@@ -303,36 +261,6 @@ def _member_field(members: Members, name: str, field: str) -> str:
     return f"{name}.{field}"
 
 
-#: What the margins the kinds share judge.
-LIFE = Judged("modified rating life", "modified_rating_life", True, "ratio", "required")
-STATIC = Judged("static safety s0", "static_safety_factor", True)
-CONTACT = Judged("contact pressure", "max_contact_pressure", False, "fraction")
-
-
-def _weaker(key: str) -> Callable[[Mapping[str, float | None]], float | None]:
-    """The smaller of the pinion's and gear B's ``key`` (gear B's where it is rated)."""
-    def weaker(results: Mapping[str, float | None]) -> float | None:
-        found = [value for name in (key, f"gear_b_{key}")
-                 if (value := results.get(name)) is not None]
-        return min(found) if found else None
-    return weaker
-
-
-PAIR = {
-    "face_width_margin": Judged("face width ratio b/Re", "face_width_ratio", False),
-    "bending_safety_margin": Judged("bending safety S_F", _weaker("bending_safety"), True),
-    "contact_safety_margin": Judged("contact safety S_H", _weaker("contact_safety"), True),
-    "slip_margin": Judged("apex mismatch", "apex_mismatch", False),
-}
-
-
-def _spin_to_roll(results: Mapping[str, float | None]) -> float | None:
-    """A ball bearing's larger |spin/roll| of its two races."""
-    found = [abs(value) for key in ("inner_spin_to_roll", "outer_spin_to_roll")
-             if (value := results.get(key)) is not None]
-    return max(found) if found else None
-
-
 KINDS: dict[str, Kind] = {
     kind.name: kind
     for kind in (
@@ -368,8 +296,7 @@ KINDS: dict[str, Kind] = {
                governing=("life_margin", "modified_rating_life", "static_safety_factor"),
                judged={"life_margin": LIFE, "static_safety_margin": STATIC,
                        "contact_pressure_margin": CONTACT,
-                       "spin_to_roll_margin": Judged("spin-to-roll ratio", _spin_to_roll,
-                                                     False)})
+                       "spin_to_roll_margin": SPIN_TO_ROLL})
           for name, summary in (
               ("rolling-bearing", "a ball or roller bearing, single or paired: ISO 281 "
                "rating life, ISO 76 static safety"),

@@ -257,3 +257,13 @@ def test_solver_is_importable_and_takes_arrays():
 
     out = solve_thrust_bearing(0.005, np.radians([10.0, 20.0, 30.0]), None, 100.0)
     assert out["pitch_radius"].shape == (3,)
+
+
+def test_a_limit_no_margin_can_name_is_said_as_the_plain_margin(cli, spec_file):
+    """At rest and with no axial load the contact pressure is 0: its margin 1 − p/p_max
+    is 1 against any limit, so no limit can be stated and the verdict names the other."""
+    text = (ROOT / "specs" / "thrust-bearing-loaded.yaml").read_text()
+    run = cli("solve", spec_file(text.replace("axial_load: 2 kN", "axial_load: 0 kN").replace(
+        "shaft_speed: 1500 rpm", "shaft_speed: 0 rpm")))
+    assert run.code == 0, run.err
+    assert "PASS: spin-to-roll ratio" in run.out and "the only limit judged" in run.out

@@ -84,6 +84,7 @@ def test_temperature_factor():
     (300, 300, 3.0, 1.0),                                  # ratio 1: no factor
     (360, 200, 3.0, 1 + (0.00898 * 1.7 - 0.00829) * 2.0),  # 1.8 taken as 1.7
     (300, 200, 2.5, 1 + (0.00898 * 1.5 - 0.00829) * 1.5),
+    (300, 200, 1 / 3, 1.0),   # the softer member has fewer teeth: no gain, and no loss
 ])
 def test_hardness_ratio_factor(hb_pinion, hb_gear, ratio, expected):
     """C_H = 1 + B1(N/n − 1), B1 = 0.00898·H_BP/H_BG − 0.00829 on 1.2 ≤ H_BP/H_BG ≤ 1.7
@@ -150,6 +151,8 @@ def test_the_weaker_member_is_judged_at_a_point_and_over_a_cycle(cli, spec_file,
     assert verdict["value"] == record["results"]["gear_b_bending_safety"]
     assert verdict["limit"] == pytest.approx(2.5, rel=1e-12)
     assert "< min 2.5" in run.out
+    assert "FAIL: gear B's bending safety S_F" in run.out
+    assert verdict["name"] == "gear B's bending safety S_F"
 
 
 def test_a_softer_gear_takes_its_own_allowables_and_c_h(cli, spec_file):

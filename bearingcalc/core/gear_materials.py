@@ -101,7 +101,8 @@ def hardness_ratio_factor(pinion_hardness: ArrayLike, gear_hardness: ArrayLike,
               B_1 = 0.00898\,\frac{H_{BP}}{H_{BG}} - 0.00829
 
     with the ratio H_BP/H_BG taken from 1.2 to 1.7 (below 1.2, C_H = 1; above 1.7, as
-    1.7) and N/n the gear ratio.
+    1.7) and N/n the gear ratio, at least 1: a softer member with fewer teeth than the
+    harder one is worked less often than it, and gains nothing (C_H = 1).
 
     Parameters
     ----------
@@ -113,7 +114,7 @@ def hardness_ratio_factor(pinion_hardness: ArrayLike, gear_hardness: ArrayLike,
     """
     ratio = np.asarray(pinion_hardness, dtype=float) / np.asarray(gear_hardness, dtype=float)
     b1 = np.where(ratio < 1.2, 0.0, 0.00898 * np.minimum(ratio, 1.7) - 0.00829)
-    return 1.0 + b1 * (np.asarray(gear_ratio, dtype=float) - 1.0)
+    return 1.0 + b1 * (np.maximum(np.asarray(gear_ratio, dtype=float), 1.0) - 1.0)
 
 
 def rating_terms(inputs: Mapping[str, ArrayLike | None]) -> dict[str, Any]:

@@ -9,7 +9,7 @@ from bearingcalc.units import to_display
 from bearingcalc.wording import printable
 
 if TYPE_CHECKING:  # the report type only
-    from bearingcalc.evaluation import Verdict
+    from bearingcalc.verdicts import Verdict
 
 #: Width of tables when the output is not a terminal (a pipe, a CI log, a file): wide
 #: enough that a row stays one line, instead of rich's 80 columns.

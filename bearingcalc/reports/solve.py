@@ -14,8 +14,9 @@ from bearingcalc.units import to_display
 from bearingcalc.wording import printable
 
 if TYPE_CHECKING:  # the report types only; their modules load with their commands
-    from bearingcalc.evaluation import Evaluation, Verdict
+    from bearingcalc.evaluation import Evaluation
     from bearingcalc.kinds import Kind
+    from bearingcalc.verdicts import Verdict
 
 
 def evaluation_record(evaluation: Evaluation) -> dict[str, Any]:

@@ -1,0 +1,151 @@
+"""Verdicts in engineering terms: what each margin judges (:class:`Judged`, in the
+registry), and each limit judged as a value against its limit (:class:`Verdict`)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:  # the registry's type only: the registry imports this module
+    from bearingcalc.kinds import Kind
+
+
+@dataclass(frozen=True)
+class Judged:
+    """How a margin judges a result against its limit, for verdicts in engineering terms.
+
+    ``quantity`` is the result judged (or a function of the results where no one result
+    is it: a drive's smallest s0). The margin is formed as ``form`` says: "ratio"
+    (quantity/limit − 1), "difference" (quantity − limit, or limit − |quantity| for an
+    upper limit) or "fraction" (1 − quantity/limit); the limit follows from the margin
+    and the quantity, and every margin reads as a fraction of its limit.
+    """
+
+    #: what is judged, in words (or a function of the results: which gear governs)
+    name: str | Callable[[Mapping[str, float | None]], str]
+    quantity: str | Callable[[Mapping[str, float | None]], float | None]
+    at_least: bool
+    form: str = "difference"
+    #: how a verdict names the limit: "required" (a life), "min" (a safety), "max"
+    word: str = ""
+
+    @property
+    def limit_word(self) -> str:
+        return self.word or ("min" if self.at_least else "max")
+
+    def named(self, results: Mapping[str, float | None]) -> str:
+        return self.name(results) if callable(self.name) else self.name
+
+    def value(self, results: Mapping[str, float | None]) -> float | None:
+        """The judged quantity (its size, for an upper limit on a signed one)."""
+        value = (self.quantity(results) if callable(self.quantity)
+                 else results.get(self.quantity))
+        return None if value is None else (value if self.at_least else abs(value))
+
+    def limit(self, value: float, margin: float) -> float:
+        """The limit that gives ``margin`` at ``value``; NaN where the margin does not
+        tell it (a pressure of 0 has the margin 1 against any limit)."""
+        if self.form in ("ratio", "fraction"):
+            scale = 1.0 + margin if self.form == "ratio" else 1.0 - margin
+            return value / scale if scale != 0 else math.nan
+        return value - margin if self.at_least else value + margin
+
+    def fraction(self, margin: float, limit: float) -> float:
+        """The margin as a fraction of the limit: value/limit − 1 for a lower limit,
+        1 − value/limit for an upper one."""
+        if self.form in ("ratio", "fraction") or limit == 0:
+            return margin  # a zero limit: the margin itself (0 where the limit is met)
+        return margin / limit
+
+
+def smallest_bearing_safety(results: Mapping[str, float | None]) -> float | None:
+    """The smallest s0 of a drive's bearings."""
+    found = [value for key, value in results.items()
+             if key.endswith("_static_safety_factor") and value is not None]
+    return min(found) if found else None
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """One limit judged: the quantity, its value and limit [SI], and the margin as a
+    fraction of the limit (value/limit − 1 for a lower limit, 1 − value/limit for an
+    upper one; below 0 where the limit is broken)."""
+
+    key: str          # the margin's result key
+    name: str         # what is judged, in words
+    value: float
+    limit: float
+    unit: str         # SI unit of value and limit
+    margin: float
+    at_least: bool    # a lower limit (a life, a safety) or an upper one (a pressure)
+    limit_word: str   # how the limit is named: "required", "min", "max"
+
+    @property
+    def passed(self) -> bool:
+        return self.margin >= 0
+
+
+def judge(kind: Kind, results: Mapping[str, float | None],
+              margins: Mapping[str, float]) -> list[Verdict]:
+    """Each judged margin as a :class:`Verdict`, the worst first."""
+    verdicts = []
+    for key, margin in margins.items():
+        judged = kind.judged.get(key)
+        value = None if judged is None else judged.value(results)
+        if judged is None or value is None:
+            continue
+        limit = judged.limit(value, margin)
+        if not math.isfinite(limit):  # said as the plain margin instead
+            continue
+        unit = (kind.results[judged.quantity][0] if isinstance(judged.quantity, str)
+                else kind.results[key][0])
+        verdicts.append(Verdict(key, judged.named(results), value, limit, unit,
+                                judged.fraction(margin, limit), judged.at_least,
+                                judged.limit_word))
+    return sorted(verdicts, key=lambda verdict: verdict.margin)
+
+
+#: What the margins the kinds share judge.
+LIFE = Judged("modified rating life", "modified_rating_life", True, "ratio", "required")
+STATIC = Judged("static safety s0", "static_safety_factor", True)
+CONTACT = Judged("contact pressure", "max_contact_pressure", False, "fraction")
+
+
+def _weaker(name: str, key: str) -> Judged:
+    """A safety judged at the weaker of the pinion and gear B (where gear B is rated),
+    named for the member that governs."""
+    def members(results: Mapping[str, float | None]) -> tuple[float | None, float | None]:
+        return results.get(key), results.get(f"gear_b_{key}")
+
+    def value(results: Mapping[str, float | None]) -> float | None:
+        found = [v for v in members(results) if v is not None]
+        return min(found) if found else None
+
+    def named(results: Mapping[str, float | None]) -> str:
+        pinion, gear = members(results)
+        if gear is None or pinion is None:
+            return name
+        return f"gear B's {name}" if gear < pinion else f"the pinion's {name}"
+
+    return Judged(named, value, True)
+
+
+PAIR = {
+    "face_width_margin": Judged("face width ratio b/Re", "face_width_ratio", False),
+    "bending_safety_margin": _weaker("bending safety S_F", "bending_safety"),
+    "contact_safety_margin": _weaker("contact safety S_H", "contact_safety"),
+    "slip_margin": Judged("apex mismatch", "apex_mismatch", False),
+}
+
+
+def _spin_to_roll(results: Mapping[str, float | None]) -> float | None:
+    """A ball bearing's larger |spin/roll| of its two races."""
+    found = [abs(value) for key in ("inner_spin_to_roll", "outer_spin_to_roll")
+             if (value := results.get(key)) is not None]
+    return max(found) if found else None
+
+
+#: A ball bearing's spin-to-roll limit, on the larger ratio of its two races.
+SPIN_TO_ROLL = Judged("spin-to-roll ratio", _spin_to_roll, False)
