@@ -318,8 +318,9 @@ def _one_problem(document: Document, model: type[Spec], error: Any) -> SpecError
         # Words are quoted in pydantic's list, numbers (a grade: 1, 2 or 3) are not.
         options = re.findall(r"'([^']*)'", expected) or re.findall(r"-?\d+(?:\.\d+)?",
                                                                   expected)
-        message = (f"must be one of {', '.join(options)}, got {given!r}"
-                   f"{did_you_mean(str(given), options)}")
+        hint = (" (a number: write it without quotes)" if str(given) in options
+                else did_you_mean(str(given), options))
+        message = f"must be one of {', '.join(options)}, got {given!r}{hint}"
     elif error_type in _OWN_WORDS:
         message = f"{_OWN_WORDS[error_type]}, got {error.get('input')!r}"
     else:

@@ -225,3 +225,13 @@ def test_a_sweep_over_the_hardness_follows_the_allowables(cli, spec_file):
         assert results["contact_safety"] == pytest.approx(
             points[200.0]["contact_safety"] * (2.35 * hardness + 162.89)
             / (2.35 * 200 + 162.89), rel=1e-12)
+
+
+@pytest.mark.parametrize(("written", "says"), [
+    ("true", "got true"),                                  # YAML's true is not 1
+    ('"2"', "got '2' (a number: write it without quotes)"),
+])
+def test_a_grade_must_be_a_plain_whole_number(cli, spec_file, written, says):
+    run = cli("solve", spec_file(EXAMPLE_15_2.replace("grade: 1", f"grade: {written}")))
+    assert run.code == 2 and run.err.count("\n") == 1, run.err
+    assert f": rating.grade: must be one of 1, 2, 3, {says}" in run.err

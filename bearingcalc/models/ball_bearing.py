@@ -23,6 +23,7 @@ from bearingcalc.models.plain_numbers import (
     RollerCount,
     ranged_number,
     reliability,
+    whole_choice,
 )
 from bearingcalc.models.quantities import (
     Angle,
@@ -58,7 +59,7 @@ Arrangement = Literal["single", "back-to-back", "face-to-face", "tandem"]
 
 
 Reliability = reliability(*RELIABILITY_RANGE, "ISO 281's range for a1")
-RollerRows = Literal[1, 2]
+RollerRows = whole_choice(1, 2)
 
 
 UnitFraction = ranged_number(0.0, 1.0, "a fraction", "0.5")

@@ -11,7 +11,13 @@ from pydantic import BeforeValidator, Field, WithJsonSchema
 from bearingcalc.core.gear_materials import GRADES
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import SpecModel
-from bearingcalc.models.plain_numbers import _RangedNumber, ranged_number, reliability, shown
+from bearingcalc.models.plain_numbers import (
+    _RangedNumber,
+    ranged_number,
+    reliability,
+    shown,
+    whole_choice,
+)
 from bearingcalc.models.quantities import Temperature
 from bearingcalc.models.rules import rule
 from bearingcalc.number_grammar import UNSIGNED_DECIMAL
@@ -64,7 +70,8 @@ class BevelRating(SpecModel):
                       "flame-or-induction-hardened"] = Field(
         "through-hardened", description="the heat treatment, which sets the allowable "
         "stress numbers (with grade, and hardness for through-hardened steel)")
-    grade: Literal[1, 2, 3] = Field(1, description="AGMA metallurgical grade")
+    grade: whole_choice(1, 2, 3) = Field(  # type: ignore[valid-type]
+        1, description="AGMA metallurgical grade")
     hardness: Hardness | None = Field(None, description="Brinell hardness of "
                                       "through-hardened steel (the pinion's)")
     gear_hardness: Hardness | None = Field(

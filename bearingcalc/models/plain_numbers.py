@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 import re
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 from pydantic import BeforeValidator, WithJsonSchema
 
@@ -156,3 +156,15 @@ def percentage(low: float, high: float, source: str, what: str = "reliability",
 def reliability(low: float, high: float, source: str) -> Any:
     """A reliability field: '99 %' or the fraction 0.99, from ``low`` to ``high``."""
     return percentage(low, high, source)
+
+
+def whole_choice(*choices: int) -> Any:
+    """One of a few whole numbers (a grade, a number of rows). YAML's true and false are
+    refused: Python counts them as 1 and 0, which would pass for a choice."""
+    def not_a_truth_value(value: Any) -> Any:
+        if isinstance(value, bool):
+            raise ValueError(f"must be one of {', '.join(map(str, choices))}, got "
+                             f"{str(value).lower()}")
+        return value
+
+    return Annotated[Literal[choices], BeforeValidator(not_a_truth_value)]  # type: ignore[valid-type]
