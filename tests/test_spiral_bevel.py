@@ -163,3 +163,13 @@ def test_a_straight_pair_has_no_normal_section(cli, spec_file):
     (record,) = solve_json(cli, spec_file(straight))
     assert "mean_normal_module" not in record["results"]
     assert "gear_a_normal_virtual_teeth" not in record["results"]
+
+
+def test_a_spiral_angle_without_sizing_is_refused(cli, spec_file):
+    """The kinematics do not depend on the spiral: a spiral_angle on a pair that is not
+    sized would be silently ignored, so it is refused naming face_width."""
+    text = PAIR.format(sigma=90, hand="left", rotation="clockwise").replace(
+        "face_width: 15 mm\n", "").replace("torque: 10 N*m\n", "")
+    run = cli("solve", spec_file(text))
+    assert run.code == 2 and run.err.count("\n") == 1 and ": face_width: " in run.err, run.err
+

@@ -73,6 +73,11 @@ class BevelPair(Spec):
         if not 0 <= self.spiral_angle <= math.radians(50):
             return SpecFieldError("spiral_angle", "must be from 0 deg (Zerol) to 50 deg, "
                                   "like 35 deg")
+        if self.face_width is None:  # the kinematics do not depend on the spiral
+            return SpecFieldError("face_width", "a spiral_angle gives a sized pair its "
+                                  "normal section and tooth forces: give face_width too, "
+                                  "like 15 mm (and a torque or power for the forces)",
+                                  at="spiral_angle")
         for field, example in (("hand", "right"), ("rotation", "clockwise")):
             if getattr(self, field) is None and self.spiral_angle > 0:
                 return SpecFieldError(field, f"a spiral bevel pair's forces need the "
