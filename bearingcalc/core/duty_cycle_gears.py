@@ -83,13 +83,6 @@ def spectrum_safety(shares: ArrayLike, safeties: ArrayLike, slope: float,
                               * (safeties / reference) ** (-1.0 / slope), axis=0) ** -slope
 
 
-def spectrum_damage(shares: ArrayLike, safeties: ArrayLike, slope: float) -> NDArray:
-    """D = Σ Uᵢ·Sᵢ^(−1/b), the damage of the spectrum at its loads (see
-    :func:`spectrum_safety`)."""
-    return np.sum(np.asarray(shares, dtype=float)
-                  * np.asarray(safeties, dtype=float) ** (-1.0 / slope), axis=0)
-
-
 def _spectrum(shares: NDArray, safeties: NDArray, slope: float) -> tuple[NDArray, NDArray]:
     """A member's safety over the spectrum, and each bin's damage Uᵢ·Sᵢ^(−1/b)."""
     damage = shares * safeties ** (-1.0 / slope)
