@@ -173,3 +173,11 @@ def test_a_spiral_angle_without_sizing_is_refused(cli, spec_file):
     run = cli("solve", spec_file(text))
     assert run.code == 2 and run.err.count("\n") == 1 and ": face_width: " in run.err, run.err
 
+
+def test_a_spiral_pair_takes_no_duty_cycle(cli, spec_file):
+    text = PAIR.format(sigma=90, hand="left", rotation="clockwise") + (
+        "duty_cycle:\n  - {time: 100 %}\n")
+    run = cli("solve", spec_file(text))
+    assert run.code == 2 and run.err.count("\n") == 1, run.err
+    assert ": duty_cycle: " in run.err and "spiral pair" in run.err and "rating too" not in run.err
+

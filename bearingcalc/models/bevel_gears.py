@@ -337,6 +337,10 @@ class BevelGearsSpec(DutyCycleRules, BevelPair):
     @whole_spec_rule
     def _cycle_rated(self) -> SpecFieldError | None:
         if self.duty_cycle is not None and self.rating is None:
+            if self.spiral_angle:  # a spiral pair is not rated
+                return SpecFieldError("duty_cycle", "a duty cycle is for the strength "
+                                      "rating, which a spiral pair does not have: leave "
+                                      "the duty cycle out")
             return SpecFieldError("duty_cycle", "a duty cycle is for the strength rating: "
                                   "give face_width, torque or power, and rating too")
         return None
