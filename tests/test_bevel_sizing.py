@@ -9,6 +9,7 @@ import math
 import numpy as np
 import pytest
 
+from bearingcalc.core import bevel_rating
 from bearingcalc.core import bevel_sizing as bs
 from tests.conftest import ROOT, csv_column, solve_json
 
@@ -21,8 +22,9 @@ def _shigley_15_1(cycles=1e7, reliability=0.99, torque=1.0):
     """Example 15-1's pair in SI: Pd = 5/in, 25/25 teeth, F = 1.1 in, 20°, Qv 7, 180 HB,
     600 rev/min, uncrowned, outboard (neither member straddle), J = 0.216, I = 0.065."""
     module = INCH / 5
-    return bs.agma_rating(torque, 600 * 2 * math.pi / 60, module, 25 * module, 1.1 * INCH, 7,
-                          180, 1.25, 0, 0.216, 0.065, 1.0, cycles, reliability)
+    return bevel_rating.agma_rating(torque, 600 * 2 * math.pi / 60, module, 25 * module,
+                                    1.1 * INCH, 7, 180, 1.25, 0, 0.216, 0.065, 1.0, cycles,
+                                    reliability)
 
 
 def test_shigley_example_15_1_bending_and_wear_ratings():

@@ -19,7 +19,7 @@ from collections.abc import Collection, Mapping
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core import bevel_sizing, gear_materials
+from bearingcalc.core import bevel_rating, bevel_sizing, gear_materials
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
 from bearingcalc.core.duty_cycle_gears import GEAR_COLUMNS, GEAR_CYCLE_RESULTS, gear_pair_cycle
 from bearingcalc.core.solver import DutyCycle, Solution, Solver
@@ -366,7 +366,7 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
             beta, inputs["thrust_sign"]))
     if inputs.get("quality_number") is None:
         return out, checks
-    rating = bevel_sizing.agma_rating(
+    rating = bevel_rating.agma_rating(
         torque, speed, inputs["module"], out["gear_a_outer_pitch_diameter"], face,  # type: ignore[arg-type]
         inputs["quality_number"], inputs["hardness"], inputs["mounting_factor"],  # type: ignore[arg-type]
         inputs["crowned"], inputs["geometry_factor_bending"],  # type: ignore[arg-type]

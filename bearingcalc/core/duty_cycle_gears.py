@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core.bevel_sizing import BENDING_LIFE_SLOPE, CONTACT_LIFE_SLOPE
+from bearingcalc.core.bevel_rating import BENDING_LIFE_SLOPE, CONTACT_LIFE_SLOPE
 from bearingcalc.core.duty_cycle import (
     LIFE_EXPONENT,
     ROLLER_TYPES,

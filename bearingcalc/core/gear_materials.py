@@ -118,7 +118,7 @@ def hardness_ratio_factor(pinion_hardness: ArrayLike, gear_hardness: ArrayLike,
 
 
 def rating_terms(inputs: Mapping[str, ArrayLike | None]) -> dict[str, Any]:
-    """The keyword terms of :func:`bearingcalc.core.bevel_sizing.agma_rating` that the
+    """The keyword terms of :func:`bearingcalc.core.bevel_rating.agma_rating` that the
     steel sets: its allowable stresses, the temperature factor and gear B's own terms,
     where the inputs [SI] give them (through-hardened grade 1 at normal temperature, the
     pinion alone, otherwise)."""

@@ -9,7 +9,7 @@ from typing import Any, ClassVar, Literal
 
 from pydantic import Field
 
-from bearingcalc.core.bevel_sizing import MOUNTING_FACTOR
+from bearingcalc.core.bevel_rating import MOUNTING_FACTOR
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.bevel_rating import BevelRating

@@ -1,0 +1,172 @@
+"""The AGMA 2003 strength rating of a bevel pair: straight, Zerol and spiral teeth of
+steel (``docs/physics.md`` §8).
+
+Gear A is the pinion. Inputs are SI floats or broadcasting arrays; inside the rating,
+the SI form of AGMA 2003 (Budynas & Nisbett, *Shigley's Mechanical Engineering
+Design*, ch. 15; ANSI/AGMA 2003-D19's "M" equations) works in mm, N, MPa and m/s, as
+that form is written.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from bearingcalc.core.common import MM
+from bearingcalc.core.gear_materials import THROUGH_HARDENED
+
+#: AGMA 2003 load-distribution base factor Kmb by mounting.
+MOUNTING_FACTOR = {"both-straddle": 1.00, "one-straddle": 1.10, "neither-straddle": 1.25}
+#: Elastic coefficient of steel on steel. [√MPa]
+STEEL_ELASTIC_COEFFICIENT = 190.0
+
+
+#: The slopes b of AGMA 2003's life factors K_L = 1.683·N^(−b) (bending) and
+#: C_L = 3.4822·N^(−b) (contact) for N > 10⁷ cycles, as Budynas & Nisbett give them.
+BENDING_LIFE_SLOPE = 0.0323
+CONTACT_LIFE_SLOPE = 0.0602
+
+
+def dynamic_factor(quality_number: ArrayLike, pitch_line_speed: ArrayLike) -> NDArray:
+    r"""AGMA dynamic factor, SI form.
+
+    .. math:: K_v = \left(\frac{A + \sqrt{200\,v_{et}}}{A}\right)^B, \quad
+              B = 0.25(12 - Q_v)^{2/3}, \quad A = 50 + 56(1 - B)
+
+    with v_et in m/s.
+
+    Source: Budynas & Nisbett, eq. (15-5).
+    """
+    qv = np.asarray(quality_number, dtype=float)
+    b_exp = 0.25 * (12.0 - qv) ** (2.0 / 3.0)
+    a_coeff = 50.0 + 56.0 * (1.0 - b_exp)
+    return ((a_coeff + np.sqrt(200.0 * np.abs(np.asarray(pitch_line_speed)))) / a_coeff) ** b_exp
+
+
+def life_factors(cycles: ArrayLike) -> tuple[NDArray, NDArray]:
+    r"""AGMA 2003's stress-cycle factors of through-hardened steel beyond 10⁷ cycles.
+
+    .. math:: K_L = 1.683\,N^{-0.0323}, \qquad C_L = 3.4822\,N^{-0.0602}
+
+    Parameters
+    ----------
+    cycles : N, load cycles of the member. [1]
+
+    Returns
+    -------
+    (K_L [1], C_L [1]), bending and contact.
+
+    Source: Budynas & Nisbett, *Shigley's Mechanical Engineering Design*, 10th ed.,
+    ch. 15, the stress-cycle factors of straight bevel gears.
+    """
+    n = np.asarray(cycles, dtype=float)
+    return 1.683 * n ** -BENDING_LIFE_SLOPE, 3.4822 * n ** -CONTACT_LIFE_SLOPE
+
+
+def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: ArrayLike,
+                pinion_outer_diameter: ArrayLike, face_width: ArrayLike,
+                quality_number: ArrayLike, hardness: ArrayLike, mounting_factor: ArrayLike,
+                crowned: ArrayLike, bending_geometry_factor: ArrayLike,
+                pitting_geometry_factor: ArrayLike, overload_factor: ArrayLike,
+                cycles: ArrayLike, reliability: ArrayLike, *,
+                allowables: tuple[ArrayLike, ArrayLike] | None = None,
+                temperature_factor: ArrayLike = 1.0,
+                gear: tuple[Any, ...] | None = None
+                ) -> dict[str, NDArray]:
+    r"""AGMA 2003 bending and contact stresses, safety factors and power ratings of a
+    straight bevel pair of through-hardened grade 1 steel, in the SI form of
+    Budynas & Nisbett ch. 15.
+
+    Wt = 2T/d_e1 at the outer pitch diameter, v_et its pitch-line speed;
+    s_F = (Wt/b)·Ks·Km/(Kx·J)·Ko·Kv/m with Ks = 0.4867 + 0.008339·m,
+    Km = Kmb + 5.6e−6·b², Kx = 1; s_H = Cp·√(Wt·Ko·Kv·Km·Cs·Cxc/(b·d_e1·I)) with
+    Cp = 190 √MPa, Cs = 0.00492·b + 0.4375, Cxc = 2 (1.5 crowned); allowables
+    s_at = 0.30·HB + 14.48 and s_ac = 2.35·HB + 162.89 MPa; K_L = 1.683·N^−0.0323,
+    C_L = 3.4822·N^−0.0602, K_R = 0.50 − 0.25·log10(1 − R) (R ≥ 0.99) else
+    0.70 − 0.15·log10(1 − R), C_R = √K_R, K_T = C_H = 1;
+    S_F = s_at·K_L/(K_T·K_R·s_F), S_H = s_ac·C_L/(K_T·C_R·s_H). The power at which
+    S = 1 at the same speed is P·S_F (bending, s_F ∝ Wt) and P·S_H² (contact,
+    s_H ∝ √Wt).
+
+    Parameters
+    ----------
+    pinion_torque : T. [N·m]
+    pinion_speed : n of gear A (relative to its arm). [rad/s]
+    module : m, outer. [m]
+    pinion_outer_diameter : d_e1. [m]
+    face_width : b. [m]
+    quality_number : Qv, 5 to 11. [1]
+    hardness : Brinell HB. [1]
+    mounting_factor : Kmb. [1]
+    crowned : true (1) for crowned teeth, Cxc = 1.5; else Cxc = 2.
+    bending_geometry_factor, pitting_geometry_factor : J, I. [1]
+    overload_factor : Ko. [1]
+    cycles : N, load cycles of the pinion. [1]
+    reliability : R, 0.9 to 0.9999. [1]
+    allowables : (s_at, s_ac) of the steel [Pa] (:mod:`bearingcalc.core.gear_materials`);
+        by default those of through-hardened grade 1 steel of ``hardness``.
+    temperature_factor : K_T. [1]
+    gear : (J_G, N/n, C_H, s_at,G, s_ac,G) to rate gear B as well: its geometry factor,
+        the gear ratio (its cycles are N·n/N), its hardness-ratio factor [1] and its own
+        allowable stress numbers [Pa] (None: the pinion's).
+
+    Returns
+    -------
+    dict with bending_stress and contact_stress [Pa], bending_safety and
+    contact_safety [1], bending_power_rating and contact_power_rating [W].
+
+    Source: ANSI/AGMA 2003-B97; Budynas & Nisbett, *Shigley's Mechanical Engineering
+    Design*, 10th ed., §15-1 to 15-4, eqs. (15-1)–(15-23), SI form.
+    """
+    torque = np.abs(np.asarray(pinion_torque, dtype=float))
+    speed = np.abs(np.asarray(pinion_speed, dtype=float))
+    m = np.asarray(module, dtype=float) * MM
+    de1 = np.asarray(pinion_outer_diameter, dtype=float) * MM
+    b = np.asarray(face_width, dtype=float) * MM
+    wt = 2.0 * torque * MM / de1                       # N, with T in N·mm
+    v = 0.5 * de1 / MM * speed                         # m/s
+    kv = dynamic_factor(quality_number, v)
+    ks = 0.4867 + 0.008339 * m
+    km = np.asarray(mounting_factor, dtype=float) + 5.6e-6 * b * b
+    ko = np.asarray(overload_factor, dtype=float)
+    bending = wt / b * ks * km / np.asarray(bending_geometry_factor, dtype=float) * ko * kv / m
+    cs = 0.00492 * b + 0.4375
+    cxc = np.where(np.asarray(crowned, dtype=bool), 1.5, 2.0)
+    contact = STEEL_ELASTIC_COEFFICIENT * np.sqrt(
+        wt * ko * kv * km * cs * cxc / (b * de1 * np.asarray(pitting_geometry_factor, dtype=float)))
+    if allowables is None:
+        hb = np.asarray(hardness, dtype=float)
+        bending_slope, bending_intercept, contact_slope, contact_intercept = (
+            THROUGH_HARDENED[1])
+        s_at, s_ac = bending_slope * hb + bending_intercept, contact_slope * hb + contact_intercept
+    else:
+        s_at, s_ac = (np.asarray(value, dtype=float) / 1e6 for value in allowables)
+    n = np.asarray(cycles, dtype=float)
+    r = np.asarray(reliability, dtype=float)
+    k_l, c_l = life_factors(n)
+    k_r = np.where(r >= 0.99, 0.50 - 0.25 * np.log10(1.0 - r), 0.70 - 0.15 * np.log10(1.0 - r))
+    k_t = np.asarray(temperature_factor, dtype=float)
+    bending_safety = s_at * k_l / (k_t * k_r * bending)
+    contact_safety = s_ac * c_l / (k_t * np.sqrt(k_r) * contact)
+    power = torque * speed
+    out = {"bending_stress": bending * 1e6, "contact_stress": contact * 1e6,
+           "bending_safety": bending_safety, "contact_safety": contact_safety,
+           "bending_power_rating": power * bending_safety,
+           "contact_power_rating": power * contact_safety ** 2}
+    if gear is not None:
+        j_g, gear_ratio, c_h = (np.asarray(value, dtype=float) for value in gear[:3])
+        gear_s_at, gear_s_ac = ((s_at, s_ac) if gear[3] is None else
+                                (np.asarray(gear[3], dtype=float) / 1e6,
+                                 np.asarray(gear[4], dtype=float) / 1e6))
+        gear_k_l, gear_c_l = life_factors(n / gear_ratio)  # gear B turns N/n times
+        gear_bending = bending * np.asarray(bending_geometry_factor, dtype=float) / j_g
+        out.update({
+            "gear_b_bending_stress": gear_bending * 1e6,
+            "gear_b_bending_safety": gear_s_at * gear_k_l / (k_t * k_r * gear_bending),
+            "gear_b_contact_safety": gear_s_ac * gear_c_l * c_h
+            / (k_t * np.sqrt(k_r) * contact)})
+    return out
+
+
