@@ -268,6 +268,7 @@ def _physics_cases() -> dict[str, str]:
 def _pair_cases() -> dict[str, str]:
     """Bevel pairs whose speeds mix the fixed-axis and the epicyclic forms."""
     sizing = (SPECS / "bevel-gears-sizing.yaml").read_text()
+    spiral = (SPECS / "bevel-gears-spiral.yaml").read_text()
     speed = re.compile(r"^gear_a_speed: .*$", re.MULTILINE)
     return {
         "bevel-speed-key.yaml": speed.sub("speed: 600 rpm", sizing),
@@ -301,6 +302,21 @@ def _pair_cases() -> dict[str, str]:
         "bevel-hand-alone.yaml": sizing + "hand: left\n",
         "bevel-spiral-steep.yaml": sizing + "spiral_angle: 70 deg\nhand: left\n"
         "rotation: clockwise\n",
+        "bevel-spiral-cutter-negative.yaml": spiral.replace("cutter_radius: 4.5 in",
+                                                            "cutter_radius: -4.5 in"),
+        "bevel-spiral-cutter-text.yaml": spiral.replace("cutter_radius: 4.5 in",
+                                                        "cutter_radius: large"),
+        "bevel-spiral-cutter-unit.yaml": spiral.replace("cutter_radius: 4.5 in",
+                                                        "cutter_radius: 4.5 deg"),
+        "bevel-straight-cutter.yaml": sizing.replace("  hardness: 180 HB",
+                                                     "  hardness: 180 HB\n"
+                                                     "  cutter_radius: 4.5 in"),
+        "bevel-temperature-frozen.yaml": sizing.replace("  hardness: 180 HB",
+                                                        "  hardness: 180 HB\n"
+                                                        "  temperature: -40 degC"),
+        "bevel-temperature-huge.yaml": sizing.replace("  hardness: 180 HB",
+                                                      "  hardness: 180 HB\n"
+                                                      "  temperature: 1e6 K"),
     }
 
 

@@ -235,3 +235,18 @@ def test_a_grade_must_be_a_plain_whole_number(cli, spec_file, written, says):
     run = cli("solve", spec_file(EXAMPLE_15_2.replace("grade: 1", f"grade: {written}")))
     assert run.code == 2 and run.err.count("\n") == 1, run.err
     assert f": rating.grade: must be one of 1, 2, 3, {says}" in run.err
+
+
+@pytest.mark.parametrize(("temperature", "accepted"), [
+    ("32 degF", True), ("392 degF", True), ("31 degF", False), ("393 degF", False),
+    ("-40 degC", False), ("1e6 K", False)])
+def test_the_temperature_is_within_what_k_t_covers(cli, spec_file, temperature, accepted):
+    """K_T = 1 starts at 32 °F (0 °C); above about 200 °C a hardened steel tempers, which
+    K_T does not model: outside 0–200 °C the temperature is refused in one line."""
+    text = EXAMPLE_15_2.replace("temperature: 300 degF", f"temperature: {temperature}")
+    run = cli("solve", spec_file(text))
+    if accepted:
+        assert run.code == 0, run.err
+    else:
+        assert run.code == 2 and run.err.count("\n") == 1, run.err
+        assert ": rating.temperature: " in run.err and "0 °C to 200 °C" in run.err, run.err

@@ -129,11 +129,12 @@ def test_bad_spiral_input_is_one_line(cli, spec_file, extra, field):
     assert run.code == 2 and run.err.count("\n") == 1 and f": {field}: " in run.err, run.err
 
 
-def test_a_spiral_pair_is_not_rated(cli, spec_file):
+def test_a_spiral_rating_needs_the_cutter_radius(cli, spec_file):
     text = (ROOT / "specs" / "bevel-gears-sizing.yaml").read_text() + (
         "spiral_angle: 35 deg\nhand: right\nrotation: clockwise\n")
     run = cli("solve", spec_file(text))
-    assert run.code == 2 and run.err.count("\n") == 1 and ": rating: " in run.err, run.err
+    assert run.code == 2 and run.err.count("\n") == 1, run.err
+    assert ": rating.cutter_radius: " in run.err, run.err
 
 
 @pytest.mark.parametrize("sigma", [90.0, 70.0])
@@ -174,10 +175,9 @@ def test_a_spiral_angle_without_sizing_is_refused(cli, spec_file):
     assert run.code == 2 and run.err.count("\n") == 1 and ": face_width: " in run.err, run.err
 
 
-def test_a_spiral_pair_takes_no_duty_cycle(cli, spec_file):
+def test_a_spiral_pair_without_a_rating_takes_no_duty_cycle(cli, spec_file):
     text = PAIR.format(sigma=90, hand="left", rotation="clockwise") + (
         "duty_cycle:\n  - {time: 100 %}\n")
     run = cli("solve", spec_file(text))
     assert run.code == 2 and run.err.count("\n") == 1, run.err
-    assert ": duty_cycle: " in run.err and "spiral pair" in run.err and "rating too" not in run.err
-
+    assert ": duty_cycle: " in run.err and "rating too" in run.err, run.err

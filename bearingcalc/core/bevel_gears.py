@@ -75,6 +75,8 @@ RESULTS: dict[str, tuple[str, str]] = {
                                 "Wt·tanφ·sinδ1)"),
     "gear_b_radial_force": ("N", "Wr2, toward gear B's axis (straight: Wt·tanφ·cosδ2)"),
     "gear_b_axial_force": ("N", "Wa2, away from the apex (straight: Wt·tanφ·sinδ2)"),
+    "lengthwise_curvature_factor": ("1", "a spiral pair's K_x = 0.211(rc/Rm)^q + 0.789, "
+                                         "q = 0.279/log10(sinβm), from 1 to 1.15"),
     "bending_stress": ("Pa", "AGMA 2003 s_F"),
     "contact_stress": ("Pa", "AGMA 2003 s_H"),
     "bending_safety": ("1", "S_F of gear A (the pinion)"),
@@ -108,17 +110,18 @@ GROUPS: dict[str, tuple[str, ...]] = {
                  "contact_ratio", "face_width_margin"),
     "forces": ("tangential_force", "gear_a_radial_force", "gear_a_axial_force",
                "gear_b_radial_force", "gear_b_axial_force"),
-    "rating": ("bending_stress", "contact_stress", "bending_safety", "contact_safety",
-               "gear_b_bending_stress", "gear_b_bending_safety", "gear_b_contact_safety",
+    "rating": ("lengthwise_curvature_factor", "bending_stress", "contact_stress",
+               "bending_safety", "contact_safety", "gear_b_bending_stress",
+               "gear_b_bending_safety", "gear_b_contact_safety",
                "bending_power_rating", "contact_power_rating", "bending_safety_margin",
                "contact_safety_margin"),
 }
 
 #: Conditions reported per design as warnings: flag key -> message.
 WARNINGS: dict[str, str] = {
-    "undercut": "the pinion's virtual teeth zv1 are below 2/sin²φ (17.1 at 20°): a "
-                      "generated pinion undercuts unless its addendum is lengthened; check "
-                      "the Gleason minimum for this ratio",
+    "undercut": "the pinion's virtual teeth zv1 (a spiral pinion's normal zvn1) are "
+                "below 2/sin²φ (17.1 at 20°): a generated pinion undercuts unless its "
+                "addendum is lengthened; check the Gleason minimum for this ratio",
 }
 
 STATUS_REASONS: dict[int, tuple[str, str]] = {
@@ -317,7 +320,8 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
         return Solution(_without(results, left_out(inputs)), status)
     sized, checks = size_pair(inputs, results)
     undercut = sized.pop("undercut")
-    shape = np.broadcast_shapes(status.shape, *(np.shape(c) for _, c in checks))
+    shape = np.broadcast_shapes(status.shape, np.shape(undercut),
+                                *(np.shape(c) for _, c in checks))
     status = np.where(np.broadcast_to(status, shape) != 0, np.broadcast_to(status, shape),
                       first_failure(checks, shape))
     results = broadcast_all(_without({**results, **sized}, left_out(inputs)))
@@ -343,8 +347,10 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
         out.update(bevel_sizing.spiral_normal_section(
             out["mean_module"], out["gear_a_virtual_teeth"], out["gear_b_virtual_teeth"],
             inputs["spiral_angle"], phi))  # type: ignore[arg-type]
-    # Not a result: the undercut warning's flag, which evaluate() takes out.
-    out["undercut"] = out["gear_a_virtual_teeth"] < 2.0 / np.sin(phi) ** 2
+    # Not a result: the undercut warning's flag, which evaluate() takes out. A spiral
+    # tooth is generated in its normal section, so its normal virtual teeth count.
+    virtual = out.get("gear_a_normal_virtual_teeth", out["gear_a_virtual_teeth"])
+    out["undercut"] = virtual < 2.0 / np.sin(phi) ** 2
     speed = np.abs(kinematics["gear_a_speed_relative_to_arm"])
     given, power = inputs.get("torque"), inputs.get("power")
     if given is None and power is None:
@@ -366,12 +372,18 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
             beta, inputs["thrust_sign"]))
     if inputs.get("quality_number") is None:
         return out, checks
+    curvature = 1.0
+    if inputs.get("spiral_angle") is not None:
+        curvature = out["lengthwise_curvature_factor"] = bevel_rating.lengthwise_curvature_factor(
+            inputs["spiral_angle"], inputs["cutter_radius"],  # type: ignore[arg-type]
+            out["mean_cone_distance"])
     rating = bevel_rating.agma_rating(
         torque, speed, inputs["module"], out["gear_a_outer_pitch_diameter"], face,  # type: ignore[arg-type]
         inputs["quality_number"], inputs["hardness"], inputs["mounting_factor"],  # type: ignore[arg-type]
         inputs["crowned"], inputs["geometry_factor_bending"],  # type: ignore[arg-type]
         inputs["geometry_factor_pitting"], inputs["overload_factor"], inputs["cycles"],  # type: ignore[arg-type]
-        inputs["reliability"], **gear_materials.rating_terms(inputs))  # type: ignore[arg-type]
+        inputs["reliability"], lengthwise_curvature_factor=curvature,
+        **gear_materials.rating_terms(inputs))  # type: ignore[arg-type]
     out.update(rating)
     bending, contact = rating["bending_safety"], rating["contact_safety"]
     if "gear_b_bending_safety" in rating:  # the weaker member of the two governs

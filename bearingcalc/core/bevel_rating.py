@@ -23,10 +23,42 @@ MOUNTING_FACTOR = {"both-straddle": 1.00, "one-straddle": 1.10, "neither-straddl
 STEEL_ELASTIC_COEFFICIENT = 190.0
 
 
+#: AGMA 2003's bounds on the lengthwise curvature factor K_x of spiral teeth.
+CURVATURE_FACTOR_BOUNDS = (1.0, 1.15)
+
 #: The slopes b of AGMA 2003's life factors K_L = 1.683·N^(−b) (bending) and
 #: C_L = 3.4822·N^(−b) (contact) for N > 10⁷ cycles, as Budynas & Nisbett give them.
 BENDING_LIFE_SLOPE = 0.0323
 CONTACT_LIFE_SLOPE = 0.0602
+
+
+def lengthwise_curvature_factor(spiral_angle: ArrayLike, cutter_radius: ArrayLike,
+                                mean_cone_distance: ArrayLike) -> NDArray:
+    r"""AGMA 2003's lengthwise curvature factor for bending strength K_x (Y_β).
+
+    .. math:: K_x = 0.211\left(\frac{r_c}{A_m}\right)^q + 0.789, \qquad
+              q = \frac{0.279}{\log_{10}\sin\beta_m}
+
+    held between 1 and 1.15; K_x = 1 for straight and Zerol teeth (β_m = 0). A face
+    cutter smaller than the mean cone distance curves the tooth more along its length,
+    which the standard credits with a stronger root (K_x > 1); a larger cutter gets no
+    credit (K_x = 1), as at r_c/A_m = 1.41 in the standard's own spiral example.
+
+    Parameters
+    ----------
+    spiral_angle : β_m at the mean point, 0 to 50°. [rad]
+    cutter_radius : r_c, the face cutter's nominal radius. [m]
+    mean_cone_distance : A_m = R_e − b/2. [m]
+
+    Source: ANSI/AGMA 2003-D19, clause 14, eqs. (21M)–(23M) and the bounds under them;
+    ISO 10300-1's K_F0 is the same curve with the same bounds.
+    """
+    beta = np.asarray(spiral_angle, dtype=float)
+    ratio = np.asarray(cutter_radius, dtype=float) / np.asarray(mean_cone_distance, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        exponent = 0.279 / np.log10(np.sin(beta))
+        factor = 0.211 * ratio ** exponent + 0.789
+    return np.where(beta > 0, np.clip(factor, *CURVATURE_FACTOR_BOUNDS), 1.0)
 
 
 def dynamic_factor(quality_number: ArrayLike, pitch_line_speed: ArrayLike) -> NDArray:
@@ -73,16 +105,18 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
                 cycles: ArrayLike, reliability: ArrayLike, *,
                 allowables: tuple[ArrayLike, ArrayLike] | None = None,
                 temperature_factor: ArrayLike = 1.0,
+                lengthwise_curvature_factor: ArrayLike = 1.0,
                 gear: tuple[Any, ...] | None = None
                 ) -> dict[str, NDArray]:
     r"""AGMA 2003 bending and contact stresses, safety factors and power ratings of a
-    straight bevel pair of through-hardened grade 1 steel, in the SI form of
-    Budynas & Nisbett ch. 15.
+    bevel pair (straight, Zerol or spiral teeth), by default of through-hardened grade 1
+    steel, in the SI form of Budynas & Nisbett ch. 15 and AGMA 2003-D19.
 
     Wt = 2T/d_e1 at the outer pitch diameter, v_et its pitch-line speed;
     s_F = (Wt/b)·Ks·Km/(Kx·J)·Ko·Kv/m with Ks = 0.4867 + 0.008339·m,
-    Km = Kmb + 5.6e−6·b², Kx = 1; s_H = Cp·√(Wt·Ko·Kv·Km·Cs·Cxc/(b·d_e1·I)) with
-    Cp = 190 √MPa, Cs = 0.00492·b + 0.4375, Cxc = 2 (1.5 crowned); allowables
+    Km = Kmb + 5.6e−6·b², Kx from :func:`lengthwise_curvature_factor`;
+    s_H = Cp·√(Wt·Ko·Kv·Km·Cs·Cxc/(b·d_e1·I)) with Cp = 190 √MPa,
+    Cs = 0.00492·b + 0.4375, Cxc = 2 (1.5 crowned); allowables
     s_at = 0.30·HB + 14.48 and s_ac = 2.35·HB + 162.89 MPa; K_L = 1.683·N^−0.0323,
     C_L = 3.4822·N^−0.0602, K_R = 0.50 − 0.25·log10(1 − R) (R ≥ 0.99) else
     0.70 − 0.15·log10(1 − R), C_R = √K_R, K_T = C_H = 1;
@@ -108,6 +142,7 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
     allowables : (s_at, s_ac) of the steel [Pa] (:mod:`bearingcalc.core.gear_materials`);
         by default those of through-hardened grade 1 steel of ``hardness``.
     temperature_factor : K_T. [1]
+    lengthwise_curvature_factor : K_x, 1 for straight and Zerol teeth. [1]
     gear : (J_G, N/n, C_H, s_at,G, s_ac,G) to rate gear B as well: its geometry factor,
         the gear ratio (its cycles are N·n/N), its hardness-ratio factor [1] and its own
         allowable stress numbers [Pa] (None: the pinion's).
@@ -131,7 +166,8 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
     ks = 0.4867 + 0.008339 * m
     km = np.asarray(mounting_factor, dtype=float) + 5.6e-6 * b * b
     ko = np.asarray(overload_factor, dtype=float)
-    bending = wt / b * ks * km / np.asarray(bending_geometry_factor, dtype=float) * ko * kv / m
+    bending = (wt / b * ks * km / np.asarray(bending_geometry_factor, dtype=float) * ko * kv / m
+               / np.asarray(lengthwise_curvature_factor, dtype=float))
     cs = 0.00492 * b + 0.4375
     cxc = np.where(np.asarray(crowned, dtype=bool), 1.5, 2.0)
     contact = STEEL_ELASTIC_COEFFICIENT * np.sqrt(

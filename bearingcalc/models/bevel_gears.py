@@ -69,6 +69,10 @@ class BevelPair(Spec):
                 if getattr(self, field) is not None:
                     return SpecFieldError(field, "applies to a spiral bevel pair: give "
                                           "spiral_angle too, like 35 deg")
+            if self.rating is not None and self.rating.cutter_radius is not None:
+                return SpecFieldError("rating.cutter_radius", "applies to a spiral bevel "
+                                      "pair: give spiral_angle too, like 35 deg, or leave "
+                                      "it out (a straight pair's K_x is 1)")
             return None
         if not 0 <= self.spiral_angle <= math.radians(50):
             return SpecFieldError("spiral_angle", "must be from 0 deg (Zerol) to 50 deg, "
@@ -83,12 +87,11 @@ class BevelPair(Spec):
                 return SpecFieldError(field, f"a spiral bevel pair's forces need the "
                                       f"pinion's {field}, like {field}: {example}",
                                       at="spiral_angle")
-        if self.rating is not None and self.spiral_angle > 0:
-            return SpecFieldError("rating", "AGMA 2003's factors of spiral bevels (the "
-                                  "lengthwise curvature factor K_x, the face contact) are "
-                                  "not built in: rate a straight or Zerol pair "
-                                  "(spiral_angle: 0 deg), or leave rating out",
-                                  at="spiral_angle")
+        if self.rating is not None and self.rating.cutter_radius is None and (
+                self.spiral_angle > 0):
+            return SpecFieldError("rating.cutter_radius", "a spiral pair's rating needs the "
+                                  "face cutter's radius for AGMA 2003's lengthwise curvature "
+                                  "factor K_x, like 114.3 mm (4.5 in)", at="spiral_angle")
         return None
 
     @property
@@ -101,7 +104,7 @@ class BevelPair(Spec):
     TOOTH_GEOMETRY: ClassVar[tuple[str, ...]] = (
         "gear_a.teeth", "gear_b.teeth", "gear_a.pitch_radius", "gear_b.pitch_radius",
         "gear_a.pitch_angle", "gear_b.pitch_angle", "module", "pressure_angle",
-        "face_width", "shaft_angle")
+        "face_width", "shaft_angle", "spiral_angle")
 
     def study_notes(self, varied: Collection[str]) -> list[str]:
         """J and I are typed for the spec's own tooth geometry: a study that varies that
@@ -204,6 +207,7 @@ class BevelPair(Spec):
             "torque": self.torque,
             "power": self.power,
             "spiral_angle": self.spiral_angle,
+            "cutter_radius": rating.cutter_radius if rating else None,
             "thrust_sign": None if self.spiral_angle is None else self.thrust_sign,
             "quality_number": rating.quality_number if rating else None,
             "hardness": rating.hardness if rating else None,
@@ -337,10 +341,6 @@ class BevelGearsSpec(DutyCycleRules, BevelPair):
     @whole_spec_rule
     def _cycle_rated(self) -> SpecFieldError | None:
         if self.duty_cycle is not None and self.rating is None:
-            if self.spiral_angle:  # a spiral pair is not rated
-                return SpecFieldError("duty_cycle", "a duty cycle is for the strength "
-                                      "rating, which a spiral pair does not have: leave "
-                                      "the duty cycle out")
             return SpecFieldError("duty_cycle", "a duty cycle is for the strength rating: "
                                   "give face_width, torque or power, and rating too")
         return None

@@ -18,7 +18,7 @@ from bearingcalc.models.plain_numbers import (
     shown,
     whole_choice,
 )
-from bearingcalc.models.quantities import Temperature
+from bearingcalc.models.quantities import PositiveLength, Temperature
 from bearingcalc.models.rules import rule
 from bearingcalc.number_grammar import UNSIGNED_DECIMAL
 
@@ -62,7 +62,8 @@ RatingReliability = reliability(0.9, 0.9999, "AGMA 2003's K_R")
 
 
 class BevelRating(SpecModel):
-    """The AGMA 2003 strength rating of a straight bevel pair of steel."""
+    """The AGMA 2003 strength rating of a bevel pair of steel (straight, Zerol or
+    spiral teeth)."""
 
     quality_number: ranged_number(5, 11, "AGMA transmission accuracy number Qv", "7",  # type: ignore[valid-type]
                                    whole=True)
@@ -82,6 +83,8 @@ class BevelRating(SpecModel):
     geometry_factor_bending_gear: ranged_number(1e-6, 10, "J of gear B, from AGMA 2003",  # type: ignore[valid-type]
                                                 "0.202") | None = Field(
         None, description="J of gear B, to rate it too")
+    cutter_radius: PositiveLength | None = Field(
+        None, description="r_c, the face cutter's nominal radius: a spiral pair's K_x")
     mounting: Literal["both-straddle", "one-straddle", "neither-straddle"] = Field(
         description="Kmb 1.00 / 1.10 / 1.25")
     crowned: bool = False
@@ -90,6 +93,18 @@ class BevelRating(SpecModel):
     overload_factor: ranged_number(1, 10, "Ko", "1.0") = 1.0  # type: ignore[valid-type]
     cycles: ranged_number(1e3, 1e10, "load cycles of the pinion", "1e7") = 1e7  # type: ignore[valid-type]
     reliability: RatingReliability = 0.99
+
+    @rule
+    def _temperature_covered(self) -> SpecFieldError | None:
+        if self.temperature is None:
+            return None
+        celsius = self.temperature - 273.15
+        if not 0.0 <= celsius <= 200.0:
+            return SpecFieldError("temperature", "must be from 0 °C to 200 °C (32 °F to "
+                                  "392 °F): AGMA 2003's K_T starts at 0 °C, and above about "
+                                  "200 °C a hardened steel tempers, losing the hardness its "
+                                  f"allowable stresses assume; got {celsius:.6g} °C")
+        return None
 
     @rule
     def _steel_given(self) -> SpecFieldError | None:
