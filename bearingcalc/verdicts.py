@@ -54,10 +54,13 @@ class Judged:
 
     def fraction(self, margin: float, limit: float) -> float:
         """The margin as a fraction of the limit: value/limit − 1 for a lower limit,
-        1 − value/limit for an upper one."""
-        if self.form in ("ratio", "fraction") or limit == 0:
-            return margin  # a zero limit: the margin itself (0 where the limit is met)
-        return margin / limit
+        1 − value/limit for an upper one. A limit of 0 has no fraction: any value off it
+        counts as ±100 % (of the value), so that it ranks with the true fractions."""
+        if self.form in ("ratio", "fraction"):
+            return margin
+        if limit == 0:
+            return 0.0 if margin == 0 else math.copysign(1.0, margin)
+        return margin / abs(limit)
 
 
 def smallest_bearing_safety(results: Mapping[str, float | None]) -> float | None:

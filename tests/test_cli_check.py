@@ -319,3 +319,17 @@ def test_pre_commit_hook_definition():
     assert hook["id"] == "bearingcalc-check"
     assert hook["entry"] == "bearingcalc check"
     assert hook["language"] == "python"
+
+
+def test_a_zero_limit_ranks_as_a_whole_limit_broken(cli, tmp_path):
+    """A limit of 0 has no fraction: a value off it counts as −100 %, so it ranks first
+    among true fractions instead of by its raw size (a mismatch of 1e-3 against 0 is not
+    a margin of −0.1 %)."""
+    text = ((ROOT / "specs" / "bevel-gears.yaml").read_text()
+            .replace("gear_a: {teeth: 12}", "gear_a: {teeth: 12, pitch_angle: 26 deg}")
+            .replace("max_apex_mismatch: 0.001", "max_apex_mismatch: 0"))
+    (tmp_path / "a.yaml").write_text(text)
+    (record,) = json_records(cli("check", tmp_path / "a.yaml", "--format", "json"))
+    (verdict,) = record["verdicts"]
+    assert verdict["limit"] == 0.0 and verdict["value"] > 0
+    assert verdict["margin"] == -1.0 and record["status"] == "fail"

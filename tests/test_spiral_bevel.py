@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import re
 
 import numpy as np
 import pytest
@@ -116,6 +117,32 @@ def test_the_drive_puts_the_thrust_on_the_bearing_the_3d_force_says(cli, spec_fi
         assert first - second == pytest.approx(thrust, rel=1e-9)
     else:
         assert second - first == pytest.approx(-thrust, rel=1e-9)
+
+
+@pytest.mark.parametrize(("hand", "rotation"), list(itertools.product(
+    ("left", "right"), ("clockwise", "counterclockwise"))))
+def test_a_one_way_locating_bearing_is_told_which_way_the_thrust_points(cli, spec_file,
+                                                                        hand, rotation):
+    """A single-row angular-contact bearing locating the pinion shaft carries thrust one
+    way only: the drive warns, naming the way the 3-D force says the thrust points. A
+    deep-groove bearing, which carries both, draws no such warning."""
+    plain = re.sub(r"^rating:.*$", f"spiral_angle: 35 deg\nhand: {hand}\n"
+                   f"rotation: {rotation}\nrating:\n  cutter_radius: 3 in",
+                   (ROOT / "specs" / "bevel-drive.yaml").read_text(), count=1,
+                   flags=re.MULTILINE)
+    one_way = plain.replace("{position: 90 mm, locating: true, type: deep-groove,",
+                            "{position: 90 mm, locating: true, type: angular-contact, "
+                            "contact_angle: 40 deg,")
+    assert one_way != plain
+    (record,) = solve_json(cli, spec_file(one_way, "one-way.yaml"))
+    pair = {"gear_a_pitch_angle": record["results"]["gear_a_pitch_angle"],
+            "tangential_force": record["results"]["tangential_force"]}
+    thrust = forces_3d(pair, 90.0, hand, rotation)["gear_a_axial_force"]
+    way = "away from the apex" if thrust > 0 else "toward the apex"
+    told = [w for w in record["warnings"] if w.startswith("pinion_bearing_1 locates")]
+    assert len(told) == 1 and way in told[0], told
+    (deep,) = solve_json(cli, spec_file(plain, "deep.yaml"))
+    assert not any("locates" in w for w in deep["warnings"]), deep["warnings"]
 
 
 @pytest.mark.parametrize(("extra", "field"), [

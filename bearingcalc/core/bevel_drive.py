@@ -85,7 +85,14 @@ WARNINGS: dict[str, str] = {
     **bevel_gears.WARNINGS,
     **{f"weakest_{name}": f"weakest bearing: {name} (the shortest modified life)"
        for name in _bearing_names()},
+    **{f"one_way_{name}_{way}": f"{name} locates its shaft, and a single-row "
+       "angular-contact or tapered roller bearing carries thrust one way only: mount it "
+       f"to take the gear's thrust, which points {way.replace('_', ' ')} the apex (a drive "
+       "that runs both ways needs a locating bearing that carries both)"
+       for name in _bearing_names() for way in ("away_from", "toward")},
 }
+#: Bearing types that carry thrust one way only in a single row.
+ONE_WAY_TYPES = ("angular-contact", "tapered-roller")
 
 #: The drive's own status codes: the pair's (1-8), then a shaft's coinciding bearings.
 COINCIDING_BEARINGS = {"pinion": 20, "gear": 21}
@@ -223,6 +230,10 @@ def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -
         for i, (bearing, radial, axial) in enumerate(zip(bearings, loads, axial_loads,
                                                          strict=True), 1):
             name = f"{shaft}_bearing_{i}"
+            if (bearing.get("locating") == "locating" and bearing.get("rows", 1) == 1
+                    and bearing["bearing_type"] in ONE_WAY_TYPES):
+                warnings[f"one_way_{name}_away_from"] = axial_force >= 0
+                warnings[f"one_way_{name}_toward"] = axial_force < 0
             solved = rolling_bearing.evaluate({
                 **bearing, "radial_load": radial, "axial_load": axial, "speed": speed,
                 "inner_speed": speed, "outer_speed": 0.0, "min_rating_life": None})
