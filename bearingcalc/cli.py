@@ -265,7 +265,7 @@ def tolerance(
     with errors_as_exit(debug):
         from bearingcalc import batch, reports
         from bearingcalc.evaluation import evaluate_document, load_one_spec
-        from bearingcalc.tolerance import StudyError, run_study
+        from bearingcalc.tolerance import StudyError, check_band_ends, run_study
 
         methods = [m.strip() for m in method.split(",") if m.strip()]
         check_plot_name(plot)
@@ -280,6 +280,7 @@ def tolerance(
         evaluate_document(document)  # a nominal design that solve refuses is refused here too
         threads = _workers(jobs)
         try:
+            check_band_ends(document, spec)
             report = with_progress(lambda tick: run_study(
                 kind, spec, document.source, methods=methods, samples=samples, seed=seed,
                 sampler=sampler, sobol=sobol, results=result or (), threads=threads,

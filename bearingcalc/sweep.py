@@ -7,8 +7,6 @@ and it carries the reason (the solver's status code).
 
 from __future__ import annotations
 
-import copy
-import dataclasses
 import itertools
 import re
 from dataclasses import dataclass, field
@@ -21,9 +19,9 @@ from pydantic import BaseModel
 from bearingcalc.errors import BearingcalcError, SpecError
 from bearingcalc.kinds import Kind
 from bearingcalc.models.base import Spec, field_parser
-from bearingcalc.models.field_path import NOT_INPUTS, FieldPath, FieldPathError, resolve_field
+from bearingcalc.models.field_path import NOT_INPUTS, FieldPathError, resolve_field
 from bearingcalc.models.yaml_loader import Document
-from bearingcalc.variation import evaluate_with
+from bearingcalc.variation import evaluate_with, invalid_at
 from bearingcalc.wording import plural
 
 MAX_POINTS = 4_000_000
@@ -153,25 +151,17 @@ def _example_field(model: type[BaseModel] | None, value: BaseModel | None) -> st
 
 
 def check_axes(document: Document, axes: list[Axis]) -> None:
-    """Validate the spec at every corner of the swept range, as ``solve`` would.
-
-    Sweeps put arrays in place of fields and skip the spec model's checks; each
-    field's checks are ranges (signs, bounds), so the ends of every axis are where
-    a value could break one. Raises SweepError naming the axis and the value.
-    """
-    from bearingcalc.evaluation import parse_document
-
+    """Validate the spec at every corner of the swept range, as ``solve`` would (see
+    :func:`bearingcalc.variation.invalid_at`). Raises SweepError naming the axis and the
+    value."""
     for corner in itertools.product(*((0, len(axis.values) - 1) for axis in axes)):
-        data = copy.deepcopy(document.data)
-        for axis, i in zip(axes, corner, strict=True):
-            FieldPath.parse(axis.name).set_in(data, _as_written(axis, axis.values[i]))
-        try:
-            parse_document(dataclasses.replace(document, data=data))
-        except SpecError as error:
-            at = ", ".join(f"{axis.name} = {_as_written(axis, axis.values[i])}"
-                           for axis, i in zip(axes, corner, strict=True))
+        written = {axis.name: _as_written(axis, axis.values[i])
+                   for axis, i in zip(axes, corner, strict=True)}
+        error = invalid_at(document, written)
+        if error is not None:
+            at = ", ".join(f"{name} = {value}" for name, value in written.items())
             what = f"{error.field}: {error.message}" if error.field else error.message
-            raise SweepError(f"--vary: the spec is invalid at {at}: {what}") from None
+            raise SweepError(f"--vary: the spec is invalid at {at}: {what}")
 
 
 def _as_written(axis: Axis, value: Any) -> Any:

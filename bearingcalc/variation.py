@@ -8,16 +8,20 @@ does for single values, so one vectorised solver call covers every point.
 
 from __future__ import annotations
 
+import copy
+import dataclasses
 from collections.abc import Collection, Iterator, Mapping
 from typing import Any
 
 from numpy.typing import ArrayLike, NDArray
 from pydantic import BaseModel
 
+from bearingcalc.errors import SpecError
 from bearingcalc.kinds import Kind
 from bearingcalc.models.base import Spec
 from bearingcalc.models.field_path import FieldPath, replaced, resolve_field
 from bearingcalc.models.quantities import Measured, Tolerance
+from bearingcalc.models.yaml_loader import Document
 
 
 def toleranced_fields(spec: BaseModel, prefix: str = "") -> dict[str, Tolerance]:
@@ -52,6 +56,27 @@ def evaluate_with(kind: Kind, spec: Spec, values: Mapping[str, ArrayLike],
     """Results and status codes of ``spec`` with ``values`` in place of its fields."""
     varied = with_values(spec, values) if values else spec
     return kind.evaluate(varied.solver_inputs(), wanted)
+
+
+def invalid_at(document: Document, written: Mapping[str, Any]) -> SpecError | None:
+    """What the spec model says of ``document`` with the dotted fields in ``written``
+    replaced by those values as a spec would write them (``'-0.0087 rad'``, ``2``);
+    None where it takes them.
+
+    Studies put arrays in place of fields and skip the spec model's checks; each
+    field's checks are ranges (signs, bounds, rules between fields), so a study checks
+    the ends of what it varies here, as ``solve`` would check one design.
+    """
+    from bearingcalc.evaluation import parse_document
+
+    data = copy.deepcopy(document.data)
+    for name, value in written.items():
+        FieldPath.parse(name).set_in(data, value)
+    try:
+        parse_document(dataclasses.replace(document, data=data))
+    except SpecError as error:
+        return error
+    return None
 
 
 def _fields(spec: BaseModel) -> Iterator[tuple[str, Any]]:

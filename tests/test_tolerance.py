@@ -445,3 +445,20 @@ def test_a_study_where_every_sample_is_impossible_still_reports_and_plots(cli, s
     assert "2048 samples" in run.out and "impossible designs" in run.out
     assert "FAIL" in run.out
     assert path.read_bytes().startswith(b"\x89PNG")
+
+
+@pytest.mark.parametrize(("old", "new", "field", "end"), [
+    ("spiral_angle: 35 deg", "spiral_angle: 0.5 deg ± 1 deg", "spiral_angle", "low"),
+    ("spiral_angle: 35 deg", "spiral_angle: 49.5 deg ± 1 deg", "spiral_angle", "high"),
+])
+def test_a_band_that_leaves_what_the_spec_takes_is_refused(cli, spec_file, old, new, field,
+                                                           end):
+    """The model's rules hold at both ends of every band, as at every corner of a sweep:
+    a spiral angle studied at −0.5° would flip the hand unseen."""
+    text = (ROOT / "specs" / "bevel-gears-spiral.yaml").read_text().replace(old, new)
+    assert new in text
+    run = cli("tolerance", spec_file(text), "-n", "1000")
+    assert run.code == 2 and run.err.count("\n") == 1 and run.out == "", run.err
+    assert f": {field}: the {end} end of its tolerance band" in run.err, run.err
+    line = next(i for i, row in enumerate(text.splitlines(), 1) if row.startswith(new))
+    assert f".yaml:{line}: " in run.err, run.err

@@ -36,7 +36,7 @@ from bearingcalc.tolerance.sampling import (
     inverse_cdf,
     normal_quantile_function,
 )
-from bearingcalc.tolerance.study import Study, StudyError, StudyInput
+from bearingcalc.tolerance.study import Study, StudyError, StudyInput, check_band_ends
 
 __all__ = [
     "BLOCK",
@@ -54,6 +54,7 @@ __all__ = [
     "StudyReport",
     "_Accumulator",
     "_Scratch",
+    "check_band_ends",
     "coarse_histogram",
     "inverse_cdf",
     "normal_quantile_function",

@@ -11,12 +11,15 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from bearingcalc.errors import BearingcalcError
+from bearingcalc.errors import BearingcalcError, SpecError
 from bearingcalc.kinds import Kind
-from bearingcalc.models.base import SpecModel
+from bearingcalc.models.base import SpecModel, field_parser
+from bearingcalc.models.field_path import resolve_field
 from bearingcalc.models.quantities import Tolerance
+from bearingcalc.models.yaml_loader import Document
 from bearingcalc.tolerance.sobol import sobol_stream
-from bearingcalc.variation import evaluate_with, field_value, toleranced_fields
+from bearingcalc.units import to_display
+from bearingcalc.variation import evaluate_with, field_value, invalid_at, toleranced_fields
 
 #: Designs in the interior of the box, besides its corners, that seed the worst-case search.
 INTERIOR_POINTS = 1 << 10
@@ -25,6 +28,28 @@ MAX_CORNER_INPUTS = 14
 
 class StudyError(BearingcalcError):
     """A tolerance study that cannot be run as asked (no tolerances, bad options)."""
+
+
+def check_band_ends(document: Document, spec: SpecModel) -> None:
+    """Validate the spec at both ends of every tolerance band, one input at a time, as
+    ``solve`` would (see :func:`bearingcalc.variation.invalid_at`): a band that reaches
+    past what the spec model takes (a spiral angle below 0, a length below 0) would be
+    studied silently. Raises SpecError at the input's line, naming the end and the
+    rule."""
+    for name, tolerance in toleranced_fields(spec).items():
+        info = resolve_field(spec, name).info
+        parsed = None if info is None else field_parser(info)
+        unit = "" if parsed is None or parsed[2] == "1" else f" {parsed[2]}"
+        for end, value in (("low", tolerance.low), ("high", tolerance.high)):
+            error = invalid_at(document, {name: f"{value!r}{unit}"})
+            if error is not None:
+                what = (error.message if error.field in (None, name)
+                        else f"{error.field}: {error.message}")
+                shown, shown_unit = to_display(value, unit.strip() or "1")
+                raise SpecError(f"the {end} end of its tolerance band, {shown:.6g}"
+                                f"{' ' + shown_unit if shown_unit else ''}, is outside what "
+                                f"the spec takes: {what}", source=document.source,
+                                line=error.line, field=name)
 
 
 @dataclass
