@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 from pydantic import BaseModel, ValidationError
 
+from bearingcalc.catalogue.fill import fill as fill_from_catalogue
 from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind, bin_column, unknown_kind
 from bearingcalc.models.base import Spec, nested_model
@@ -46,6 +47,9 @@ class Evaluation:
     row_names: dict[str, str] = field(default_factory=dict)
     #: every limit judged, the worst first
     verdicts: list[Verdict] = field(default_factory=list)
+    #: the catalogue row of each bearing taken from one: ``catalogue_source`` (or
+    #: ``pinion_bearing_1_catalogue_source``) -> designation, maker and source
+    sources: dict[str, str] = field(default_factory=dict)
 
     @property
     def within_limits(self) -> bool:
@@ -74,6 +78,9 @@ def parse_document(document: Document) -> tuple[Kind, Spec]:
     kind = KINDS.get(kind_name) if isinstance(kind_name, str) else None
     if kind is None:
         raise document.error(unknown_kind(kind_name), field="kind")
+    data, catalogue = fill_from_catalogue(data, kind.model.CATALOGUE_PLACES, document.path,
+                                          lambda message, field: document.error(message,
+                                                                                field=field))
     try:
         spec = kind.model.model_validate(data)
     except ValidationError as exc:
@@ -90,6 +97,13 @@ def parse_document(document: Document) -> tuple[Kind, Spec]:
     except SpecFieldError as problem:
         errors = [_rule_error(document, each) for each in (problem, *problem.more)]
         raise _in_line_order(document, errors) from None
+    if catalogue.rows:
+        spec._catalogue_sources = catalogue.sources()
+        spec._catalogue_notes = catalogue.notes
+    elif "catalogue" in data:
+        raise document.error("no bearing names a designation, so the catalogue is not read: "
+                             "give a bearing's designation, like designation: 6205, or leave "
+                             "catalogue out", field="catalogue")
     return kind, spec
 
 
@@ -266,7 +280,7 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
         got = f", got {written}" if isinstance(written, (str, int, float)) else ""
         raise document.error(f"{reason}{got}", field=name)
     results: dict[str, float | None] = {}
-    warnings: list[str] = [*spec.warnings(), *raised]
+    warnings: list[str] = [*spec.catalogue_notes(), *spec.warnings(), *raised]
     for key, value in raw.items():
         if math.isnan(value):
             raise document.error(f"{key} cannot be computed for this design; please report it")
@@ -283,7 +297,8 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
     name = spec.name or _default_name(document)
     warnings += spec.result_notes(results)
     return Evaluation(document.source, kind.name, name, results, units, margins, warnings,
-                      spec.row_names(), judge(kind, results, margins))
+                      spec.row_names(), judge(kind, results, margins),
+                      spec.catalogue_sources())
 
 
 def _default_name(document: Document) -> str:

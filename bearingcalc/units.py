@@ -61,11 +61,12 @@ TEMPERATURE = Dimension("temperature", "K", "kelvin", "80 degC", "degC")
 DENSITY = Dimension("density", "kg/m³", "gram / meter ** 3", "7850 kg/m^3", "kg/m³", 1e-3)
 POWER = Dimension("power", "W", "gram * meter ** 2 / second ** 3", "9.4 kW", "kW", 1e-3)
 TORQUE = Dimension("torque", "N·m", "gram * meter ** 2 / second ** 2", "150 N*m", "N·m", 1e-3)
+MASS = Dimension("mass", "kg", "gram", "0.13 kg", "kg", 1e-3)
 #: A plain number (a ratio such as a groove conformity), written without a unit.
 DIMENSIONLESS = Dimension("plain number", "1", "dimensionless", "0.52", "")
 DIMENSIONS = {d.name: d for d in (LENGTH, ANGLE, ANGULAR_SPEED, ANGULAR_ACCEL, FORCE, STRESS,
                                   TIME, KINEMATIC_VISCOSITY, TEMPERATURE, DENSITY, POWER,
-                                  TORQUE)}
+                                  TORQUE, MASS)}
 
 #: unit -> (scale, offset): kelvin = scale · value + offset.
 TEMPERATURE_UNITS: dict[str, tuple[float, float]] = {
@@ -124,6 +125,8 @@ COMMON_UNITS: dict[str, tuple[str, float]] = {
     "W": ("gram * meter ** 2 / second ** 3", 1e3),
     "kW": ("gram * meter ** 2 / second ** 3", 1e6),
     "kg/m^3": ("gram / meter ** 3", 1e3),
+    "kg": ("gram", 1e3),
+    "g": ("gram", 1.0),
     "kg/m³": ("gram / meter ** 3", 1e3),
 }
 
@@ -154,6 +157,7 @@ DISPLAY_UNITS: dict[str, tuple[str, float]] = {
     "W": ("kW", 1e-3),
     "N·m": ("N·m", 1.0),
     "kg/m³": ("kg/m³", 1.0),
+    "kg": ("kg", 1.0),
 }
 
 #: A number in plain ASCII digits (full-width digits and the like are refused, as the

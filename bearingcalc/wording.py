@@ -31,6 +31,17 @@ def printable(text: str) -> str:
     return _CONTROL.sub(lambda m: repr(m.group())[1:-1], text)
 
 
+def spreadsheet_text(text: str) -> str:
+    """``text`` as a CSV cell that a spreadsheet shows and never runs: printable, and
+    with a leading ' where it would start a formula (=, +, -, @, a tab or a return).
+
+    >>> spreadsheet_text("=cmd|' /c calc'!A1")
+    "'=cmd|' /c calc'!A1"
+    """
+    shown = printable(text)
+    return "'" + shown if shown[:1] in ("=", "+", "-", "@", "\t", "\r") else shown
+
+
 def did_you_mean(word: str, choices: Iterable[str]) -> str:
     """" (did you mean 'x'?)" for the closest of ``choices`` to a mistyped word, or "".
 

@@ -36,8 +36,8 @@ def refused(cli, spec, vary):
 @pytest.mark.parametrize(("vary", "message"), [
     ("pinion_bearings.2=100mm:200mm:5",
      "pinion_bearings.2 is an item of pinion_bearings, not a number: vary one of its fields, "
-     "like pinion_bearings.2.dynamic_load_rating; its fields are type, arrangement, "
-     "dynamic_load_rating, "),
+     "like pinion_bearings.2.dynamic_load_rating; its fields are designation, maker, type, "
+     "arrangement, dynamic_load_rating, "),
     ("pinion_bearings=100mm:200mm:5",
      "pinion_bearings is a list of 2 items, not a number: vary a field of one item, like "
      "pinion_bearings.1.dynamic_load_rating"),
@@ -56,7 +56,8 @@ def refused(cli, spec, vary):
     ("pinion_bearings.².position=100mm:200mm:5", "name an item by its number, from 1 to 2"),
     ("torque.x=1:2:3", "torque is a single value, with no fields inside; name torque itself"),
     ("pinion_bearings.1.position.x=1:2:3", "pinion_bearings.1.position is a single value"),
-    ("pinion_bearings.1.=1:2:3", "a name is missing after pinion_bearings.1; its inputs: type,"),
+    ("pinion_bearings.1.=1:2:3",
+     "a name is missing after pinion_bearings.1; its inputs: designation, maker, type,"),
     (".torque=1:2:3", "a name is missing before the first dot; inputs: gear_a, "),
     ("pinion_bearings.1.positon=1mm:2mm:3", "pinion_bearings.1 has no input 'positon'; inputs:"),
     ("pinion_bearings.1.load_factors.x=1:2:3", "the spec leaves pinion_bearings.1.load_factors "

@@ -6,10 +6,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from typing import Any, ClassVar, Literal
+from typing import Annotated, Any, ClassVar, Literal
 
 import numpy as np
-from pydantic import Field
+from pydantic import BeforeValidator, Field, StringConstraints, WithJsonSchema
 
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.ball_bearing_rules import GeometryRules, OperatingRules
@@ -38,7 +38,7 @@ from bearingcalc.models.quantities import (
     Temperature,
 )
 from bearingcalc.models.roller_bearing_rules import ROLLER_TYPES, RollerRules
-from bearingcalc.models.rules import whole_spec_rule
+from bearingcalc.models.rules import rule, whole_spec_rule
 
 RELIABILITY_RANGE = (0.90, 0.9995)
 #: ISO 76:2006 6.1: the contact pressure at C0 of a ball bearing and of a roller bearing.
@@ -63,6 +63,20 @@ RollerRows = whole_choice(1, 2)
 
 
 UnitFraction = ranged_number(0.0, 1.0, "a fraction", "0.5")
+
+
+def _designation_text(value: Any) -> Any:
+    """YAML reads ``designation: 6205`` as a number: it means the same as '6205'."""
+    if isinstance(value, int) and not isinstance(value, bool):
+        return str(value)
+    return value
+
+
+Designation = Annotated[str, BeforeValidator(_designation_text),
+                        StringConstraints(strip_whitespace=True, min_length=1, max_length=100),
+                        WithJsonSchema({"anyOf": [{"type": "string", "minLength": 1,
+                                                   "maxLength": 100},
+                                                  {"type": "integer", "minimum": 0}]})]
 
 
 class LoadFactors(SpecModel):
@@ -97,6 +111,11 @@ class BearingFields(SpecModel):
     and race control. ``kind: rolling-bearing`` adds loads, speeds and lubrication; a
     drive's bearing entry (``kind: bevel-drive``) adds its position on the shaft."""
 
+    designation: Designation | None = Field(
+        None, description="the catalogue's designation, like 6205-2RS: the row fills every "
+        "rating and dimension the spec leaves out")
+    maker: str | None = Field(None, description="the maker whose catalogue row to take, "
+                              "where the catalogue has the designation from several")
     type: BearingType = "deep-groove"
     arrangement: Arrangement = Field("single", description="a matched pair of single-row "
                                      "angular-contact ball or tapered roller bearings")
@@ -109,6 +128,8 @@ class BearingFields(SpecModel):
     pitch_diameter: PositiveLength | None = Field(None, description="Dpw")
     bore_diameter: PositiveLength | None = Field(None, description="d (for dm only)")
     outside_diameter: PositiveLength | None = Field(None, description="D (for dm only)")
+    width: PositiveLength | None = Field(None, description="B (T of a tapered bearing, H of "
+                                         "a thrust bearing); select's widest")
     roller_count: RollerCount | None = Field(None, description="Z, per row")
     roller_diameter: PositiveLength | None = Field(None, description="Dwe (a tapered "
                                                    "roller's mean diameter)")
@@ -132,6 +153,13 @@ class BearingFields(SpecModel):
         None, description="fo = outer groove radius / Dw (> 0.5)")
     material: ElasticMaterial = ElasticMaterial()
 
+    @rule
+    def _maker_of_a_designation(self) -> SpecFieldError | None:
+        if self.maker is not None and self.designation is None:
+            return SpecFieldError("maker", "names whose catalogue row to take: give the "
+                                  "designation too, like designation: 6205")
+        return None
+
 
 BearingBin = bin_model("BearingBin", {
     "radial_load": (Force, "Fr"), "axial_load": (Force, "Fa"),
@@ -153,8 +181,12 @@ class BallBearingSpec(DutyCycleRules, RollerRules, OperatingRules, GeometryRules
         "inner_speed": "inner_speed", "outer_speed": "outer_speed",
         "temperature": "lubrication.temperature", "viscosity": "lubrication.viscosity"}
 
+    CATALOGUE_PLACES: ClassVar[tuple[str, ...]] = ("",)
+
     kind: Literal["rolling-bearing", "ball-bearing"]
     name: str | None = None
+    catalogue: str | None = Field(None, description="a catalogue file (CSV), relative to "
+                                  "the spec, for designation")
     radial_load: Force = Field(0.0, description="Fr")
     axial_load: Force = Field(0.0, description="Fa")
     speed: AngularSpeed | None = Field(None, description="the rotating ring relative to the "

@@ -6,9 +6,9 @@ import functools
 import math
 import typing
 from collections.abc import Collection, Mapping
-from typing import Any
+from typing import Any, ClassVar
 
-from pydantic import BaseModel, ConfigDict, ValidationInfo, model_validator
+from pydantic import BaseModel, ConfigDict, PrivateAttr, ValidationInfo, model_validator
 from pydantic.fields import FieldInfo
 
 from bearingcalc.models.plain_numbers import _Count, _Percentage, _plain_number, _RangedNumber
@@ -38,6 +38,22 @@ class Spec(SpecModel):
     if typing.TYPE_CHECKING:
         kind: str
         name: str | None
+
+    #: Where the spec's bearings may take a catalogue's row by designation: '' for the
+    #: spec itself, a list field's name for each of its items.
+    CATALOGUE_PLACES: ClassVar[tuple[str, ...]] = ()
+    #: Result-style keys naming each catalogue row the spec took (``catalogue_source``),
+    #: and what the reader should know of them; set as the spec is read.
+    _catalogue_sources: dict[str, str] = PrivateAttr(default_factory=dict)
+    _catalogue_notes: list[str] = PrivateAttr(default_factory=list)
+
+    def catalogue_sources(self) -> dict[str, str]:
+        return dict(self._catalogue_sources)
+
+    def catalogue_notes(self) -> list[str]:
+        """What the reader should know of the catalogue rows taken (a value of the spec's
+        that overrides the catalogue's, bearings ISO's table does not hold)."""
+        return list(self._catalogue_notes)
 
     @model_validator(mode="after")
     def _cross_field_rules(self, info: ValidationInfo) -> Spec:

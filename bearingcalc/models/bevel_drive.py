@@ -88,6 +88,8 @@ class BevelDriveSpec(DutyCycleRules, BevelPair):
     BIN_FIELDS: ClassVar[Mapping[str, str]] = {
         field: field for field in ("torque", "power", "input_speed")}
 
+    CATALOGUE_PLACES: ClassVar[tuple[str, ...]] = ("pinion_bearings", "gear_bearings")
+
     kind: Literal["bevel-drive"]
     input_speed: AngularSpeed = Field(description="the pinion shaft's speed")
     pinion_bearings: list[DriveBearing] = Field(description="exactly two, on the pinion "
@@ -102,6 +104,8 @@ class BevelDriveSpec(DutyCycleRules, BevelPair):
     reliability: Reliability = 0.9
     lubrication: Lubrication | None = None
     contamination_factor: UnitFraction | None = None
+    catalogue: str | None = Field(None, description="a catalogue file (CSV), relative to "
+                                  "the spec, for the bearings' designations")
     limits: BevelDriveLimits = BevelDriveLimits()
     duty_cycle: list[DriveBin] | None = Field(  # type: ignore[valid-type]
         None, description="load cases with their shares of the time (a field a bin leaves "

@@ -11,7 +11,7 @@ from typing import IO, TYPE_CHECKING, Any
 
 from bearingcalc.reports.formatting import console, format_number, safe_text, verdict_line
 from bearingcalc.units import to_display
-from bearingcalc.wording import printable
+from bearingcalc.wording import printable, spreadsheet_text
 
 if TYPE_CHECKING:  # the report types only; their modules load with their commands
     from bearingcalc.evaluation import Evaluation
@@ -25,6 +25,7 @@ def evaluation_record(evaluation: Evaluation) -> dict[str, Any]:
         "spec": evaluation.source,
         "kind": evaluation.kind,
         "name": evaluation.name,
+        **evaluation.sources,
         "results": evaluation.results,
         "units": evaluation.units,
         "within_limits": evaluation.within_limits,
@@ -53,17 +54,20 @@ def write_csv(evaluations: Sequence[Evaluation], stream: IO[str]) -> None:
     if not evaluations:
         return
     columns: dict[str, str] = {}
+    sources: dict[str, None] = {}
     for evaluation in evaluations:
         for key, unit in evaluation.units.items():
             columns.setdefault(key, unit)
+        sources.update(dict.fromkeys(evaluation.sources))
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(["spec", "kind", "name", "within_limits",
+    writer.writerow(["spec", "kind", "name", *sources, "within_limits",
                      *(f"{key} [{unit}]" for key, unit in columns.items())])
     for evaluation in evaluations:
         values = [evaluation.results.get(key) for key in columns]
         writer.writerow([printable(evaluation.source), evaluation.kind,
                          printable(evaluation.name),
+                         *(spreadsheet_text(evaluation.sources.get(key, "")) for key in sources),
                          str(evaluation.within_limits).lower(),
                          *("" if value is None else repr(value) for value in values)])
     stream.write(buffer.getvalue())
@@ -82,8 +86,10 @@ def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
     out = console(stream)
     for evaluation in evaluations:
         kind = kinds[evaluation.kind]
+        cited = "".join(f"\n{key}: {safe_text(value)}"
+                        for key, value in evaluation.sources.items())
         table = Table(title=safe_text(f"{evaluation.name}  ({evaluation.kind}, "
-                                      f"{evaluation.source})"),
+                                      f"{evaluation.source})") + cited,
                       title_justify="left")
         table.add_column("result")
         table.add_column("value", justify="right")

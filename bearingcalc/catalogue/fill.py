@@ -1,0 +1,193 @@
+"""A spec's bearings filled from their catalogue rows, before the spec is validated.
+
+A bearing with a ``designation`` takes from its catalogue row every rating and dimension
+the spec does not give, written as the catalogue writes it (``'14.8 kN'``), so that the
+spec reads exactly as if it had been typed. A value the spec gives wins, and a note says
+so where it differs from the catalogue's. ``catalogue`` in a field's text stands for the
+catalogue's value: ``dynamic_load_rating: catalogue ± 5 %`` studies the spread between
+makers.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from bearingcalc.catalogue.catalogue import Catalogue, CatalogueRow, load_catalogue
+from bearingcalc.catalogue.columns import COLUMNS
+from bearingcalc.errors import SpecError
+from bearingcalc.units import DIMENSIONLESS, UnitError, parse_quantity
+
+#: The environment variable that names a default catalogue.
+CATALOGUE_VARIABLE = "BEARINGCALC_CATALOGUE"
+#: Roller types, whose catalogue e, Y and Y0 are their load factors (a ball bearing's
+#: come from ISO 281's and ISO 76's tables).
+ROLLER_TYPES = ("cylindrical-roller", "needle-roller", "tapered-roller", "spherical-roller",
+                "thrust-cylindrical-roller", "thrust-spherical-roller",
+                "thrust-tapered-roller")
+#: Roller types of two rows by their form (ISO 281 rates them as double row).
+DOUBLE_ROW_TYPES = ("spherical-roller",)
+#: Radial roller types whose contact angle follows from e = 1.5·tanα (ISO 281 Table 8).
+ANGLED_ROLLER_TYPES = ("tapered-roller", "spherical-roller")
+#: Load-factor columns -> the field of a bearing's ``load_factors``: single row, double.
+FACTOR_FIELDS = {"e": ("e", "e"), "y1": (None, "y1"), "y2": ("y", "y2"), "y0": ("y0", "y0")}
+_WORD = "catalogue"
+
+_default: list[str | None] = [None]
+
+
+def set_default_catalogue(path: str | None) -> None:
+    """The catalogue of specs that name none (a command's ``--catalogue``); None for the
+    environment's (``BEARINGCALC_CATALOGUE``)."""
+    _default[0] = path
+
+
+def default_catalogue() -> str | None:
+    return _default[0] or os.environ.get(CATALOGUE_VARIABLE) or None
+
+
+@dataclass
+class CatalogueUse:
+    """What the catalogue gave a spec: each bearing's row by its place (``''`` for a
+    spec that is one bearing, ``pinion_bearings.1`` for a drive's), and the notes."""
+
+    rows: dict[str, CatalogueRow] = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)
+
+    def sources(self) -> dict[str, str]:
+        """Result-style keys naming each row: ``catalogue_source``, or
+        ``pinion_bearing_1_catalogue_source`` for a drive's bearing."""
+        return {(_flat(place) + "_" if place else "") + "catalogue_source": row.cited
+                for place, row in self.rows.items()}
+
+
+def _flat(place: str) -> str:
+    list_name, _, index = place.rpartition(".")
+    return f"{list_name.removesuffix('s')}_{index}"
+
+
+def fill(data: dict[str, Any], places: tuple[str, ...], spec_path: str,
+         error: Any) -> tuple[dict[str, Any], CatalogueUse]:
+    """``data`` with each bearing at ``places`` (``''``: the spec itself;
+    ``'pinion_bearings'``: each item of that list) filled from its catalogue row.
+    ``error(message, field)`` makes the SpecError of a field of the spec."""
+    use = CatalogueUse()
+    bearings = list(_bearings(data, places))
+    if not any(isinstance(b, dict) and "designation" in b for _, b in bearings):
+        return data, use
+    data = copy.deepcopy(data)
+    catalogue: Catalogue | None = None
+    for place, bearing in _bearings(data, places):
+        if not isinstance(bearing, dict) or "designation" not in bearing:
+            continue
+        prefix = f"{place}." if place else ""
+        if catalogue is None:
+            catalogue = _catalogue(data, spec_path, error, f"{prefix}designation")
+            use.notes += catalogue.warnings
+        designation = bearing["designation"]
+        if isinstance(designation, bool) or not isinstance(designation, (str, int)):
+            raise error("a designation is text, like '6205-2RS'", f"{prefix}designation")
+        maker = bearing.get("maker")
+        try:
+            row = catalogue.find(designation, maker if isinstance(maker, str) else None)
+        except LookupError as problem:
+            raise error(str(problem), f"{prefix}designation") from None
+        _fill_bearing(bearing, row, prefix, use, error)
+        use.rows[place] = row
+    return data, use
+
+
+def _bearings(data: dict[str, Any], places: tuple[str, ...]) -> Any:
+    for place in places:
+        if not place:
+            yield "", data
+            continue
+        items = data.get(place)
+        if isinstance(items, list):
+            for i, item in enumerate(items, 1):
+                yield f"{place}.{i}", item
+
+
+def _catalogue(data: dict[str, Any], spec_path: str, error: Any, at: str) -> Catalogue:
+    named = data.get("catalogue")
+    if named is not None:
+        if not isinstance(named, str) or not named.strip():
+            raise error("write the catalogue's path, like catalogue: bearings.csv (relative "
+                        "to the spec)", "catalogue")
+        path = Path(spec_path).parent / named.strip()
+    else:
+        default = default_catalogue()
+        if default is None:
+            raise error("a designation needs a catalogue: give catalogue: bearings.csv "
+                        "(relative to the spec), --catalogue FILE, or the environment "
+                        f"variable {CATALOGUE_VARIABLE}", at)
+        path = Path(default)
+    return load_catalogue(path)
+
+
+def _fill_bearing(bearing: dict[str, Any], row: CatalogueRow, prefix: str, use: CatalogueUse,
+                  error: Any) -> None:
+    given_type = bearing.get("type")
+    if given_type is not None and given_type != row.type:
+        raise error(f"the catalogue's {row.label} is {row.type}, not {given_type}: leave type "
+                    "out, or choose another designation", f"{prefix}type")
+    bearing["type"] = row.type
+    if row.type in DOUBLE_ROW_TYPES and "rows" not in bearing:
+        bearing["rows"] = 2
+    for name, value in row.written.items():
+        target = COLUMNS[name].field
+        if target is None or "." in target:
+            continue
+        _put(bearing, target, value, row, name, prefix, use, error)
+    if row.type not in ROLLER_TYPES or "e" not in row.values:
+        return
+    if "contact_angle" not in row.values and "contact_angle" not in bearing and (
+            row.type in ANGLED_ROLLER_TYPES):
+        # ISO 281's e = 1.5·tanα of a radial roller bearing with α > 0
+        bearing["contact_angle"] = f"{math.degrees(math.atan(row.values['e'] / 1.5))!r} deg"
+    if "load_factors" in bearing:
+        return
+    if bearing.get("arrangement", "single") in ("back-to-back", "face-to-face"):
+        # a single bearing's e and Y are not the pair's: ISO's pair factors follow from α
+        use.notes.append(f"{prefix or 'the bearing'}: a pair's load factors are ISO 281's "
+                         f"for its contact angle, not {row.label}'s own e and Y (a single "
+                         "bearing's)")
+        return
+    double = bearing.get("rows", 1) == 2
+    bearing["load_factors"] = {FACTOR_FIELDS[column][double]: row.written[column]
+                               for column in FACTOR_FIELDS if column in row.written
+                               and FACTOR_FIELDS[column][double] is not None}
+
+
+def _put(bearing: dict[str, Any], target: str, value: str | float, row: CatalogueRow,
+         column: str, prefix: str, use: CatalogueUse, error: Any) -> None:
+    given = bearing.get(target)
+    if given is None:
+        bearing[target] = value
+        return
+    if isinstance(given, str) and given.strip().casefold().startswith(_WORD):
+        # 'catalogue ± 5 %': the catalogue's value with the spec's tolerance
+        bearing[target] = f"{value}{given.strip()[len(_WORD):]}"
+        return
+    if _differs(given, row.values[column], column):
+        use.notes.append(f"{prefix}{target}: the spec's {given} overrides the catalogue's "
+                         f"{value} ({row.label})")
+
+
+def _differs(given: Any, catalogue_value: float, column: str) -> bool:
+    dimension = COLUMNS[column].dimension
+    try:
+        ours = (float(given) if dimension is DIMENSIONLESS
+                else parse_quantity(given, dimension))  # type: ignore[arg-type]
+    except (UnitError, ValueError, TypeError):
+        return True  # the spec's own check says what is wrong with it
+    return abs(ours - catalogue_value) > 1e-12 * max(abs(catalogue_value), 1e-300)
+
+
+def refused(problem: SpecError) -> SpecError:
+    """A catalogue file's problem, as it stands."""
+    return problem

@@ -1,0 +1,53 @@
+"""The ISO boundary dimensions shipped with bearingcalc (``data/iso_boundary_dimensions.csv``:
+ISO 15 radial, ISO 355 tapered and ISO 104 thrust bearings of the common series, d 10
+to 100 mm), by basic designation."""
+
+from __future__ import annotations
+
+import csv
+import functools
+import io
+from dataclasses import dataclass
+from importlib import resources
+
+from bearingcalc.core.common import MM
+
+TABLE = "iso_boundary_dimensions.csv"
+
+
+@dataclass(frozen=True)
+class IsoDimensions:
+    """One designation's boundary dimensions [m]: width is B (radial), T (tapered) or
+    H (thrust); r_min the smallest chamfer r_s min."""
+
+    designation: str
+    type: str
+    bore_diameter: float
+    outside_diameter: float
+    width: float
+    r_min: float | None
+    iso355_series: str | None
+
+
+@functools.cache
+def iso_table() -> dict[str, IsoDimensions]:
+    """Basic designation -> its ISO boundary dimensions."""
+    text = resources.files("bearingcalc.data").joinpath(TABLE).read_text("utf-8")
+    lines = (line for line in io.StringIO(text) if not line.startswith("#"))
+    table: dict[str, IsoDimensions] = {}
+    for row in csv.DictReader(lines):
+        r_min = row["r_min [mm]"].strip()
+        table[row["designation"]] = IsoDimensions(
+            row["designation"], row["type"], float(row["bore_diameter [mm]"]) / MM,
+            float(row["outside_diameter [mm]"]) / MM, float(row["width [mm]"]) / MM,
+            float(r_min) / MM if r_min else None, row["iso355_series"].strip() or None)
+    return table
+
+
+def iso_series() -> list[str]:
+    """The series the table holds, as their designations begin (``62``, ``NU22``,
+    ``302``), in the table's order."""
+    seen: dict[str, None] = {}
+    for designation in iso_table():
+        seen.setdefault(designation[:-2], None)
+    return list(seen)

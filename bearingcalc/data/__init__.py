@@ -1,0 +1,1 @@
+"""Data shipped with bearingcalc: the ISO boundary dimensions of common bearing series."""
