@@ -208,7 +208,12 @@ def check_files(files: Sequence[Path], jobs: int = 1,
     chunk_size = max(50, min(500, len(files) // (jobs * 4)))
     # fork shares the loaded modules with the workers: no second start-up per worker.
     context = get_context("fork") if "fork" in get_all_start_methods() else None
-    with ProcessPoolExecutor(max_workers=jobs, mp_context=context) as pool:
+    from bearingcalc.catalogue.fill import default_catalogue, set_default_catalogue
+
+    # A worker that does not fork learns the command's --catalogue here.
+    with ProcessPoolExecutor(max_workers=jobs, mp_context=context,
+                             initializer=set_default_catalogue,
+                             initargs=(default_catalogue(),)) as pool:
         chunks = list(_chunks(files, chunk_size))
         for chunk, result in zip(chunks, pool.map(check_chunk, chunks), strict=True):
             records.extend(result)

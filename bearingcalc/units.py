@@ -260,6 +260,16 @@ def parse_quantity(text: Any, dimension: Dimension) -> float:
     return value
 
 
+def unit_scale(unit: str, dimension: Dimension) -> tuple[float, bool]:
+    """How :func:`parse_quantity` turns a number written with ``unit`` into SI: (factor,
+    divides), so that a column of numbers in one unit is read at once with the same
+    arithmetic (``26 mm`` is 26/1000, not 26·0.001). Raises UnitError as parsing
+    ``'1 unit'`` would."""
+    one = parse_quantity(f"1 {unit}", dimension)
+    divisor = _DIVISORS.get(unit.strip())
+    return (divisor, True) if divisor else (one, False)
+
+
 def _number_before_one(number: str, unit: str) -> str | None:
     """The number of ``15001/min`` written without the 1 of ``1/min`` (``1500``), or None
     when the unit does not start with / or no number is left."""

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import difflib
 import functools
+import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -16,7 +17,7 @@ from bearingcalc.catalogue.designation import Designation, parse_designation
 from bearingcalc.catalogue.iso import iso_series, iso_table
 from bearingcalc.catalogue.reader import RawCatalogue, RawRow, read_csv
 from bearingcalc.errors import SpecError
-from bearingcalc.units import DIMENSIONLESS, UnitError, parse_quantity, to_display
+from bearingcalc.units import DIMENSIONLESS, MAX_MAGNITUDE, to_display, unit_scale
 
 #: How far a row's dimension may be from ISO's before it contradicts it. [m]
 DIMENSION_TOLERANCE = 1e-7
@@ -120,8 +121,9 @@ def build(raw: RawCatalogue) -> Catalogue:
     rows: list[CatalogueRow] = []
     seen: dict[tuple[str, str], int] = {}
     special: list[str] = []
+    scales = _scales(raw)
     for raw_row in raw.rows:
-        row = _row(raw, raw_row)
+        row = _row(raw, raw_row, scales)
         key = (_normal(row.designation), row.maker.casefold())
         if key in seen:
             raise SpecError(f"{row.label} is given twice (first at line {seen[key]})",
@@ -141,28 +143,36 @@ def build(raw: RawCatalogue) -> Catalogue:
     return Catalogue(raw.path, rows, warnings)
 
 
-def _row(raw: RawCatalogue, raw_row: RawRow) -> CatalogueRow:
+def _scales(raw: RawCatalogue) -> dict[str, tuple[float, bool] | None]:
+    """Each number column's conversion to SI (None: a plain number)."""
+    return {name: None if column.dimension is DIMENSIONLESS
+            else unit_scale(unit, column.dimension)  # type: ignore[arg-type]
+            for name, (column, unit) in raw.columns.items() if name in NUMERIC}
+
+
+def _row(raw: RawCatalogue, raw_row: RawRow, scales: dict[str, tuple[float, bool] | None]
+         ) -> CatalogueRow:
     values: dict[str, float] = {}
     written: dict[str, str | float] = {}
     for name, text in raw_row.cells.items():
-        if name not in NUMERIC:
+        if name not in scales:
             continue
+        number = float(text)
+        scale = scales[name]
         column, unit = raw.columns[name]
-        try:
-            if column.dimension is DIMENSIONLESS:
-                value = float(text)
-                if column.whole and not value.is_integer():
-                    raise UnitError(f"{text!r} is not a whole number")
-                written[name] = int(value) if column.whole else value
-            else:
-                value = parse_quantity(f"{text} {unit}", column.dimension)  # type: ignore[arg-type]
-                written[name] = f"{text} {unit}"
-        except (UnitError, ValueError) as error:
-            raise SpecError(str(error), source=raw.path, line=raw_row.line,
-                            field=name) from None
-        if value <= 0 and name != "contact_angle":
-            raise SpecError(f"must be greater than zero, got {text}", source=raw.path,
-                            line=raw_row.line, field=name)
+        if scale is None:
+            if column.whole and not number.is_integer():
+                raise SpecError(f"{text!r} is not a whole number", source=raw.path,
+                                line=raw_row.line, field=name)
+            value = number
+            written[name] = int(number) if column.whole else number
+        else:
+            value = number / scale[0] if scale[1] else number * scale[0]
+            written[name] = f"{text} {unit}"
+        if not (math.isfinite(value) and abs(value) <= MAX_MAGNITUDE) or (
+                value <= 0 and name != "contact_angle"):
+            raise SpecError(f"must be a finite number greater than zero, got {text}",
+                            source=raw.path, line=raw_row.line, field=name)
         values[name] = value
     cells = raw_row.cells
     return CatalogueRow(cells["designation"], cells["maker"], cells["type"], cells["source"],

@@ -19,7 +19,6 @@ from typing import Any
 
 from bearingcalc.catalogue.catalogue import Catalogue, CatalogueRow, load_catalogue
 from bearingcalc.catalogue.columns import COLUMNS
-from bearingcalc.errors import SpecError
 from bearingcalc.units import DIMENSIONLESS, UnitError, parse_quantity
 
 #: The environment variable that names a default catalogue.
@@ -36,6 +35,8 @@ ANGLED_ROLLER_TYPES = ("tapered-roller", "spherical-roller")
 #: Load-factor columns -> the field of a bearing's ``load_factors``: single row, double.
 FACTOR_FIELDS = {"e": ("e", "e"), "y1": (None, "y1"), "y2": ("y", "y2"), "y0": ("y0", "y0")}
 _WORD = "catalogue"
+#: Arrangements of two single-row bearings whose load factors are the pair's own.
+PAIRS = ("back-to-back", "face-to-face")
 
 _default: list[str | None] = [None]
 
@@ -129,6 +130,36 @@ def _catalogue(data: dict[str, Any], spec_path: str, error: Any, at: str) -> Cat
     return load_catalogue(path)
 
 
+def row_fields(row: CatalogueRow, arrangement: str = "single", rows: int | None = None
+               ) -> dict[str, tuple[float, str | float]]:
+    """The bearing fields a catalogue row gives (dotted within the bearing), each as
+    (SI value, as a spec writes it), for a bearing of ``arrangement`` and ``rows``.
+
+    A roller bearing's e, Y and Y0 become its ``load_factors`` in its form (a single
+    row's Y is the row's y2, the Y above e); a pair's are ISO 281's for its contact
+    angle, not one bearing's. Where the row gives e but no contact angle, a tapered or
+    spherical roller bearing's follows from ISO 281's e = 1.5·tanα.
+    """
+    fields: dict[str, tuple[float, str | float]] = {}
+    for name, written in row.written.items():
+        target = COLUMNS[name].field
+        if target is not None and "." not in target:
+            fields[target] = (row.values[name], written)
+    if row.type not in ROLLER_TYPES or "e" not in row.values:
+        return fields
+    if "contact_angle" not in fields and row.type in ANGLED_ROLLER_TYPES:
+        alpha = math.atan(row.values["e"] / 1.5)
+        fields["contact_angle"] = (alpha, f"{alpha!r} rad")
+    if arrangement in PAIRS:
+        return fields
+    double = (rows if rows is not None else 2 if row.type in DOUBLE_ROW_TYPES else 1) == 2
+    for column, targets in FACTOR_FIELDS.items():
+        if column in row.written and targets[double] is not None:
+            fields[f"load_factors.{targets[double]}"] = (row.values[column],
+                                                         row.written[column])
+    return fields
+
+
 def _fill_bearing(bearing: dict[str, Any], row: CatalogueRow, prefix: str, use: CatalogueUse,
                   error: Any) -> None:
     given_type = bearing.get("type")
@@ -138,33 +169,26 @@ def _fill_bearing(bearing: dict[str, Any], row: CatalogueRow, prefix: str, use: 
     bearing["type"] = row.type
     if row.type in DOUBLE_ROW_TYPES and "rows" not in bearing:
         bearing["rows"] = 2
-    for name, value in row.written.items():
-        target = COLUMNS[name].field
-        if target is None or "." in target:
+    arrangement = bearing.get("arrangement", "single")
+    fields = row_fields(row, arrangement if isinstance(arrangement, str) else "single",
+                        bearing.get("rows") if isinstance(bearing.get("rows"), int) else None)
+    factors_given = "load_factors" in bearing
+    for target, (_, written) in fields.items():
+        if target.startswith("load_factors."):
+            if not factors_given:
+                bearing.setdefault("load_factors", {})[target.split(".")[1]] = written
             continue
-        _put(bearing, target, value, row, name, prefix, use, error)
-    if row.type not in ROLLER_TYPES or "e" not in row.values:
-        return
-    if "contact_angle" not in row.values and "contact_angle" not in bearing and (
-            row.type in ANGLED_ROLLER_TYPES):
-        # ISO 281's e = 1.5·tanα of a radial roller bearing with α > 0
-        bearing["contact_angle"] = f"{math.degrees(math.atan(row.values['e'] / 1.5))!r} deg"
-    if "load_factors" in bearing:
-        return
-    if bearing.get("arrangement", "single") in ("back-to-back", "face-to-face"):
-        # a single bearing's e and Y are not the pair's: ISO's pair factors follow from α
+        column = next((name for name, col in COLUMNS.items() if col.field == target), None)
+        _put(bearing, target, written, row, column, prefix, use)
+    if arrangement in PAIRS and "e" in row.values and row.type in ROLLER_TYPES and (
+            not factors_given):
         use.notes.append(f"{prefix or 'the bearing'}: a pair's load factors are ISO 281's "
                          f"for its contact angle, not {row.label}'s own e and Y (a single "
                          "bearing's)")
-        return
-    double = bearing.get("rows", 1) == 2
-    bearing["load_factors"] = {FACTOR_FIELDS[column][double]: row.written[column]
-                               for column in FACTOR_FIELDS if column in row.written
-                               and FACTOR_FIELDS[column][double] is not None}
 
 
 def _put(bearing: dict[str, Any], target: str, value: str | float, row: CatalogueRow,
-         column: str, prefix: str, use: CatalogueUse, error: Any) -> None:
+         column: str | None, prefix: str, use: CatalogueUse) -> None:
     given = bearing.get(target)
     if given is None:
         bearing[target] = value
@@ -173,7 +197,7 @@ def _put(bearing: dict[str, Any], target: str, value: str | float, row: Catalogu
         # 'catalogue ± 5 %': the catalogue's value with the spec's tolerance
         bearing[target] = f"{value}{given.strip()[len(_WORD):]}"
         return
-    if _differs(given, row.values[column], column):
+    if column is not None and _differs(given, row.values[column], column):
         use.notes.append(f"{prefix}{target}: the spec's {given} overrides the catalogue's "
                          f"{value} ({row.label})")
 
@@ -186,8 +210,3 @@ def _differs(given: Any, catalogue_value: float, column: str) -> bool:
     except (UnitError, ValueError, TypeError):
         return True  # the spec's own check says what is wrong with it
     return abs(ours - catalogue_value) > 1e-12 * max(abs(catalogue_value), 1e-300)
-
-
-def refused(problem: SpecError) -> SpecError:
-    """A catalogue file's problem, as it stands."""
-    return problem

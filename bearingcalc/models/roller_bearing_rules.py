@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
+from bearingcalc.catalogue.designation import parse_designation
 from bearingcalc.core.roller_ratings import (
     RADIAL_ROLLER_TYPES,
     STRAIGHT_ROLLER_TYPES,
@@ -52,12 +53,29 @@ class _ReadsRollerBearing:
         outside_diameter: float | None
         model_fields_set: set[str]
         limits: Any
+        designation: str | None
 
         def _element_fits(self, field: str, element: str, *, in_section: bool
                           ) -> SpecFieldError | None: ...
 
 
 class RollerRules(_ReadsRollerBearing):
+    @rule
+    def _ribless_ring_takes_no_thrust(self) -> SpecFieldError | None:
+        """An NU bearing has no ribs on its inner ring, an N bearing none on its outer:
+        neither carries an axial load (NJ, NUP and NF do)."""
+        parsed = parse_designation(self.designation) if self.designation else None
+        if parsed is None or self.type != "cylindrical-roller" or not self.axial_load > 0:
+            return None
+        form = parsed.basic.rstrip("0123456789")
+        if form not in ("NU", "N"):
+            return None
+        ring = "inner" if form == "NU" else "outer"
+        return SpecFieldError("axial_load", f"{self.designation} is an {form} bearing, with "
+                              f"no ribs on its {ring} ring: it carries no axial load; choose "
+                              "an NJ or NUP bearing, or let another bearing take the thrust",
+                              at="designation")
+
     """Balls or rollers, the roller bearings' own rules, pairs and catalogue factors."""
 
     @rule

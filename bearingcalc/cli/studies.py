@@ -1,0 +1,205 @@
+"""The study commands, ``tolerance`` and ``sweep``: a spec varied over its tolerances or
+over a line or grid of its inputs."""
+
+from __future__ import annotations
+
+import sys
+from enum import Enum
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from bearingcalc.cli import (
+    EXIT_LIMIT,
+    EXIT_OK,
+    CatalogueOption,
+    DebugOption,
+    OutputOption,
+    PlotOption,
+    _workers,
+    app,
+)
+from bearingcalc.cli_output import (
+    Writer,
+    check_parquet_output,
+    check_plot_name,
+    emit,
+    errors_as_exit,
+    output_target,
+    plot_target,
+    refuse_unwritable,
+    stage_plot,
+    with_progress,
+)
+from bearingcalc.errors import SpecError
+from bearingcalc.output import StagedFiles
+
+#: Most Monte Carlo samples: 1e10 takes about half an hour on two cores.
+MAX_SAMPLES = 10**10
+
+
+def _sample_count(text: str | int) -> int:
+    """``--samples`` as engineers write it: 100000, 1e5 or 100_000."""
+    try:
+        number = float(str(text).replace("_", ""))
+    except ValueError:
+        raise typer.BadParameter(f"{text!r} is not a number of samples, like 1e5") from None
+    if not (number.is_integer() and 2 <= number <= MAX_SAMPLES):
+        raise typer.BadParameter(f"{text!r}: give a whole number from 2 to {MAX_SAMPLES:.0e}")
+    return int(number)
+
+
+
+class StudyFormat(str, Enum):
+    table = "table"
+    json = "json"
+
+
+@app.command()
+def tolerance(
+    spec_path: Annotated[Path, typer.Argument(
+        help="A YAML spec with tolerances on some inputs ('20 deg ± 0.25 deg').",
+        show_default=False, metavar="SPEC")],
+    method: Annotated[str, typer.Option(
+        "--method", "-m", help="Comma-separated: worst-case, rss, monte-carlo.")
+    ] = "worst-case,rss,monte-carlo",
+    samples: Annotated[int, typer.Option("--samples", "-n", parser=_sample_count,
+                                         help="Monte Carlo samples (1e5, 100000).")] = 100_000,
+    seed: Annotated[int, typer.Option("--seed", min=0, help="Seed of the sampler.")] = 0,
+    sampler: Annotated[str, typer.Option("--sampler", help="sobol or random.")] = "sobol",
+    sobol: Annotated[bool, typer.Option("--sobol", help="Add Sobol sensitivity indices.")
+                     ] = False,
+    result: Annotated[list[str] | None, typer.Option(
+        "--result", "-r", help="Study this result (repeatable): it leads the table and plot, "
+        "and Monte Carlo and Sobol cover only the chosen results.")] = None,
+    output_format: Annotated[StudyFormat, typer.Option(
+        "--format", "-f", help="table (engineering units) or json (SI).")] = StudyFormat.table,
+    plot: PlotOption = None,
+    output: OutputOption = None,
+    jobs: Annotated[int | None, typer.Option(
+        "--jobs", "-j", min=1, help="Threads for Monte Carlo (default: the number of cores).",
+        show_default=False)] = None,
+    catalogue: CatalogueOption = None,
+    debug: DebugOption = False,
+) -> None:
+    """Worst case, RSS and Monte Carlo of every result under the spec's tolerances.
+
+    Exit status: 0 the margins stay within their limits (at worst case when it is
+    run); 1 they can be exceeded; 2 the spec or the options are invalid.
+    """
+    with errors_as_exit(debug):
+        from bearingcalc import batch, reports
+        from bearingcalc.evaluation import evaluate_document, load_one_spec
+        from bearingcalc.tolerance import StudyError, check_band_ends, run_study
+
+        methods = [m.strip() for m in method.split(",") if m.strip()]
+        check_plot_name(plot)
+        if plot is not None and "monte-carlo" not in methods:
+            raise SpecError("--plot draws the Monte Carlo histogram: add monte-carlo to "
+                            "--method", source=str(plot))
+        table_or_json = output_target(
+            output, "report", ".json" if output_format is StudyFormat.json else ".txt")
+        histogram = plot_target(plot)
+        refuse_unwritable("tolerance", [batch.spec_file(spec_path)], table_or_json, histogram)
+        kind, spec, document = load_one_spec(spec_path)
+        evaluate_document(document)  # a nominal design that solve refuses is refused here too
+        threads = _workers(jobs)
+        try:
+            check_band_ends(document, spec)
+            report = with_progress(lambda tick: run_study(
+                kind, spec, document.source, methods=methods, samples=samples, seed=seed,
+                sampler=sampler, sobol=sobol, results=result or (), threads=threads,
+                progress=tick), total=samples if "monte-carlo" in methods else None,
+                label="Monte Carlo")
+        except StudyError as error:
+            raise SpecError(str(error), source=document.source) from None
+
+        writers: dict[StudyFormat, Writer] = {
+            StudyFormat.table: lambda stream: reports.print_tolerance_table(report, stream),
+            StudyFormat.json: lambda stream: reports.write_tolerance_json(report, stream),
+        }
+        with StagedFiles() as files:
+            if histogram is not None and report.governing:
+                from bearingcalc.plots import tolerance_histogram
+
+                stage_plot(files, histogram, lambda f, fmt: tolerance_histogram(
+                    report, report.governing[0], f, fmt=fmt))
+            emit(writers[output_format], table_or_json, files)
+        raise typer.Exit(EXIT_LIMIT if report.within_limits is False else EXIT_OK)
+
+
+class SweepFormat(str, Enum):
+    table = "table"
+    csv = "csv"
+    json = "json"
+    parquet = "parquet"
+
+
+@app.command()
+def sweep(
+    spec_path: Annotated[Path, typer.Argument(
+        help="A YAML spec; the varied inputs replace its values.", show_default=False,
+        metavar="SPEC")],
+    vary: Annotated[list[str], typer.Option(
+        "--vary", "-v", help="NAME=START:STOP:N with units, e.g. contact_angle=5deg:40deg:36; "
+        "once for a line, twice for a grid.", show_default=False)],
+    result: Annotated[list[str] | None, typer.Option(
+        "--result", "-r", help="Results for the table and plot (repeatable) "
+        "(default: the kind's governing results).")] = None,
+    output_format: Annotated[SweepFormat | None, typer.Option(
+        "--format", "-f", help="table, csv, json (JSON Lines) or parquet (default: csv for "
+        "--output *.csv, json for *.json or *.jsonl, parquet for *.parquet, else table).",
+        show_default=False)
+    ] = None,
+    output: OutputOption = None,
+    plot: PlotOption = None,
+    catalogue: CatalogueOption = None,
+    debug: DebugOption = False,
+) -> None:
+    """Solve the spec over a line or grid of one or two inputs; impossible points are gaps."""
+    with errors_as_exit(debug):
+        from bearingcalc import batch, reports
+        from bearingcalc import sweep as sweeps
+        from bearingcalc.evaluation import load_one_spec
+
+        check_plot_name(plot)
+        chosen = output_format or _format_for(output)
+        if chosen is SweepFormat.parquet:
+            check_parquet_output(spec_path, output)
+        # Without --format, the suggested file is CSV, which holds every result.
+        suffix = _SWEEP_SUFFIXES.get(chosen, ".txt" if output_format else ".csv")
+        results_file = output_target(output, "results", suffix)
+        chart = plot_target(plot)
+        refuse_unwritable("sweep", [batch.spec_file(spec_path)], results_file, chart)
+        kind, spec, document = load_one_spec(spec_path)
+        solved = sweeps.sweep_spec(kind, spec, document, vary)
+        for note in solved.warnings:  # on stderr: the results may be a CSV or JSON stream
+            print(f"warning: {note}", file=sys.stderr)
+        keys = sweeps.shown_results(solved, result)
+
+        writers: dict[SweepFormat, Writer] = {
+            SweepFormat.table: lambda stream: reports.print_sweep_table(solved, keys, stream),
+            SweepFormat.csv: lambda stream: reports.write_sweep_csv(solved, stream),
+            SweepFormat.json: lambda stream: reports.write_sweep_json_lines(solved, stream),
+            SweepFormat.parquet: lambda stream: reports.write_sweep_parquet(solved, stream),
+        }
+        with StagedFiles() as files:
+            if chart is not None:
+                from bearingcalc.plots import sweep_plot
+
+                stage_plot(files, chart, lambda f, fmt: sweep_plot(solved, keys, f, fmt=fmt))
+            # Parquet is refused without --output (check_parquet_output): never stdout.
+            emit(writers[chosen], results_file, files, binary=chosen is SweepFormat.parquet)
+
+
+
+def _format_for(output: Path | None) -> SweepFormat:
+    suffix = output.suffix.lower() if output is not None else ""
+    return {".csv": SweepFormat.csv, ".json": SweepFormat.json, ".jsonl": SweepFormat.json,
+            ".parquet": SweepFormat.parquet}.get(suffix, SweepFormat.table)
+
+
+
+_SWEEP_SUFFIXES = {SweepFormat.csv: ".csv", SweepFormat.json: ".jsonl",
+                   SweepFormat.parquet: ".parquet"}
