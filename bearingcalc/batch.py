@@ -36,6 +36,8 @@ class CheckRecord:
     margins: dict[str, float] = field(default_factory=dict)
     #: every limit judged, the worst first (each margin a fraction of its limit)
     verdicts: list[Verdict] = field(default_factory=list)
+    #: the catalogue row of each bearing taken from one (see Evaluation.sources)
+    sources: dict[str, str] = field(default_factory=dict)
 
     @property
     def governing_margin(self) -> tuple[str, float] | None:
@@ -246,7 +248,7 @@ def to_record(outcome: Evaluation | SpecError) -> CheckRecord:
     status = PASS if outcome.within_limits else FAIL
     return CheckRecord(outcome.source, outcome.kind, outcome.name, status,
                        [*outcome.violations, *outcome.warnings], dict(outcome.margins),
-                       list(outcome.verdicts))
+                       list(outcome.verdicts), dict(outcome.sources))
 
 
 def exit_status(records: Iterable[CheckRecord]) -> int:

@@ -160,7 +160,12 @@ def select_spec(path: str | Path, envelope: Envelope, top: int = 5) -> Selection
                                  "(relative to the spec), --catalogue FILE, or the "
                                  f"environment variable {CATALOGUE_VARIABLE}")
         catalogue_path = default
-    return select(kind, document, load_catalogue(catalogue_path), envelope, top)
+    try:
+        catalogue = load_catalogue(catalogue_path)
+    except SpecError as problem:  # the catalogue's own file and line, after the spec's
+        raise document.error(str(problem), field="catalogue" if named is not None
+                             else None) from None
+    return select(kind, document, catalogue, envelope, top)
 
 
 def select(kind: Kind, document: Document, catalogue: Catalogue, envelope: Envelope,
@@ -269,8 +274,8 @@ def _fitting(document: Document, catalogue: Catalogue, envelope: Envelope, posit
         if words:
             said.append(words)
         if not rows:
-            raise SpecError(f"no bearing of the catalogue {catalogue.path} fits {prefix or ''}"
-                            f"{'' if not prefix else ': '}none {said[-1]}"
+            raise SpecError(f"no bearing of the catalogue {catalogue.path} fits "
+                            f"{position or 'the bearing'}: none {said[-1]}"
                             + (f" among those {', '.join(said[:-1])}" if len(said) > 1 else ""),
                             source=document.source)
     return rows

@@ -54,6 +54,8 @@ class Sweep:
     status: NDArray                   # 0 feasible, else a key of kind.status_reasons
     limits: dict[str, float]          # result key -> symmetric limit value
     warnings: list[str] = field(default_factory=list)
+    #: 'catalogue_source: ...' of each bearing taken from a catalogue
+    sources: list[str] = field(default_factory=list)
 
     @property
     def units(self) -> dict[str, str]:
@@ -188,9 +190,10 @@ def run_sweep(kind: Kind, spec: Spec, source: str, axes: list[Axis]) -> Sweep:
               for key, value in results.items()}
     limits = kind.limit_values(spec.solver_inputs())
     name = spec.name or source
+    cited = [f"{key}: {value}" for key, value in spec.catalogue_sources().items()]
     return Sweep(kind, source, name, axes, inputs, solved,
                  np.broadcast_to(status, shape).copy(), limits,
-                 spec.study_notes([axis.name for axis in axes]))
+                 spec.study_notes([axis.name for axis in axes]), cited)
 
 
 def sweep_spec(kind: Kind, spec: Spec, document: Document, vary: list[str]) -> Sweep:

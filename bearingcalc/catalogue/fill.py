@@ -13,12 +13,15 @@ from __future__ import annotations
 import copy
 import math
 import os
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from bearingcalc.catalogue.catalogue import Catalogue, CatalogueRow, load_catalogue
 from bearingcalc.catalogue.columns import COLUMNS
+from bearingcalc.errors import SpecError
+from bearingcalc.number_grammar import UNSIGNED_DECIMAL
 from bearingcalc.units import DIMENSIONLESS, UnitError, parse_quantity
 
 #: The environment variable that names a default catalogue.
@@ -35,6 +38,7 @@ ANGLED_ROLLER_TYPES = ("tapered-roller", "spherical-roller")
 #: Load-factor columns -> the field of a bearing's ``load_factors``: single row, double.
 FACTOR_FIELDS = {"e": ("e", "e"), "y1": (None, "y1"), "y2": ("y", "y2"), "y0": ("y0", "y0")}
 _WORD = "catalogue"
+_PERCENT_TOLERANCE = re.compile(rf"^\s*(?:±|\+/-)\s*(?P<percent>{UNSIGNED_DECIMAL})\s*%\s*$")
 #: Arrangements of two single-row bearings whose load factors are the pair's own.
 PAIRS = ("back-to-back", "face-to-face")
 
@@ -127,7 +131,10 @@ def _catalogue(data: dict[str, Any], spec_path: str, error: Any, at: str) -> Cat
                         "(relative to the spec), --catalogue FILE, or the environment "
                         f"variable {CATALOGUE_VARIABLE}", at)
         path = Path(default)
-    return load_catalogue(path)
+    try:
+        return load_catalogue(path)
+    except SpecError as problem:  # the catalogue's own file and line, after the spec's
+        raise error(str(problem), "catalogue" if named is not None else at) from None
 
 
 def row_fields(row: CatalogueRow, arrangement: str = "single", rows: int | None = None
@@ -194,12 +201,22 @@ def _put(bearing: dict[str, Any], target: str, value: str | float, row: Catalogu
         bearing[target] = value
         return
     if isinstance(given, str) and given.strip().casefold().startswith(_WORD):
-        # 'catalogue ± 5 %': the catalogue's value with the spec's tolerance
-        bearing[target] = f"{value}{given.strip()[len(_WORD):]}"
+        bearing[target] = _with_tolerance(value, given.strip()[len(_WORD):])
         return
     if column is not None and _differs(given, row.values[column], column):
         use.notes.append(f"{prefix}{target}: the spec's {given} overrides the catalogue's "
                          f"{value} ({row.label})")
+
+
+def _with_tolerance(value: str | float, tolerance: str) -> str:
+    """The catalogue's value with the spec's tolerance: 'catalogue ± 5 %' is the value
+    ± 5 % of it, in the catalogue's unit; 'catalogue ± 0.5 kN' as written."""
+    percent = _PERCENT_TOLERANCE.match(tolerance)
+    if percent is None:
+        return f"{value}{tolerance}"
+    number, _, unit = str(value).partition(" ")
+    spread = abs(float(number)) * float(percent["percent"]) / 100.0
+    return f"{number} {unit} ± {spread!r} {unit}".replace("  ", " ")
 
 
 def _differs(given: Any, catalogue_value: float, column: str) -> bool:

@@ -176,6 +176,8 @@ def sweep(
         solved = sweeps.sweep_spec(kind, spec, document, vary)
         for note in solved.warnings:  # on stderr: the results may be a CSV or JSON stream
             print(f"warning: {note}", file=sys.stderr)
+        for cited in solved.sources:
+            print(cited, file=sys.stderr)
         keys = sweeps.shown_results(solved, result)
 
         writers: dict[SweepFormat, Writer] = {

@@ -18,7 +18,8 @@ def check_record_json(record: CheckRecord) -> dict[str, Any]:
     from bearingcalc.reports.solve import verdict_record
 
     return {"spec": record.spec, "kind": record.kind, "name": record.name,
-            "status": record.status, "messages": record.messages, "margins": record.margins,
+            **record.sources, "status": record.status, "messages": record.messages,
+            "margins": record.margins,
             "verdicts": [verdict_record(verdict) for verdict in record.verdicts]}
 
 

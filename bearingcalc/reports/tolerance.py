@@ -30,6 +30,9 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
     units = record["units"]
     out.print(f"[bold]{safe_text(record['name'] or record['spec'])}[/] ({record['kind']}, "
               f"{safe_text(record['spec'])})")
+    for key, value in record.items():
+        if key.endswith("catalogue_source"):
+            out.print(f"{key}: {safe_text(value)}")
 
     inputs = Table(title="toleranced inputs", title_justify="left")
     for column in ("input", "nominal", "low", "high", "unit", "distribution", "σ"):

@@ -77,6 +77,7 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
     focus = list(results) or study.keys
     record: dict[str, Any] = {
         "spec": source, "kind": kind.name, "name": getattr(spec, "name", None),
+        **spec.catalogue_sources(),  # type: ignore[attr-defined]
         "inputs": study.input_summary(),
         "results": {key: {"nominal": value} for key, value in study.nominal.items()},
         "units": {**{key: kind.results[key][0] for key in study.keys},

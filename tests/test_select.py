@@ -1,0 +1,142 @@
+"""bearingcalc select: what the vectorised selection finds against every fitting row of
+the example catalogue solved one by one with ``solve``; the envelope, the exit status,
+the drive's positions and the formats."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+
+import pytest
+
+from bearingcalc.catalogue.catalogue import load_catalogue
+from tests.conftest import ROOT
+
+EXAMPLE = ROOT / "specs" / "catalogues" / "example.csv"
+SHAFT = ("kind: rolling-bearing\nname: idler\ncatalogue: {catalogue}\nbore_diameter: 25 mm\n"
+         "radial_load: 3 kN\naxial_load: 0.5 kN\nspeed: 1500 rpm\n"
+         "lubrication: {{viscosity: 68 mm^2/s}}\ncontamination_factor: 0.5\n"
+         "limits: {{min_rating_life: {life}, min_static_safety: 2}}\n")
+
+
+def _spec(tmp_path, text, name="shaft.yaml"):
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+def _one_by_one(cli, tmp_path, text, bore_mm):
+    """Every row of the example with the bore, solved alone: designation -> passes,
+    or None where the spec's rules refuse it."""
+    outcome = {}
+    for row in load_catalogue(EXAMPLE).rows:
+        if abs(row.values["bore_diameter"] - bore_mm / 1e3) > 1e-9:
+            continue
+        spec = text.replace("bore_diameter: 25 mm\n", f"designation: {row.designation}\n"
+                            f"maker: {row.maker}\n")
+        run = cli("solve", _spec(tmp_path, spec, "alone.yaml"), "--format", "json")
+        outcome[(row.designation, row.maker)] = (
+            None if run.code == 2 else json.loads(run.out)["within_limits"], row)
+    return outcome
+
+
+@pytest.mark.parametrize("duty", ["", "duty_cycle:\n  - {time: 70 %}\n"
+                                      "  - {time: 30 %, radial_load: 4 kN, speed: 900 rpm}\n"])
+def test_the_selection_is_every_row_solved_alone(cli, tmp_path, duty):
+    text = SHAFT.format(catalogue=EXAMPLE, life="20000 h") + duty
+    run = cli("select", _spec(tmp_path, text), "--format", "json", "--top", "100")
+    assert run.code == 0, run.err
+    (record,) = [json.loads(line) for line in run.out.splitlines()]
+    alone = _one_by_one(cli, tmp_path, text, 25)
+    passing = sorted((row for ok, row in alone.values() if ok),
+                     key=lambda r: (r.values["outside_diameter"], r.values["width"],
+                                    r.values.get("mass", float("inf")), r.designation))
+    assert [(c["designation"], c["maker"]) for c in record["qualifying"]] == [
+        (r.designation, r.maker) for r in passing]
+    assert record["considered"] == len(alone)
+    assert record["qualifying_count"] == len(passing) >= 2
+    listed_failing = {(c["designation"], c["maker"]) for c in record["failing"]}
+    assert listed_failing == {key for key, (ok, _) in alone.items() if not ok}
+
+
+def test_the_exit_status_says_whether_one_qualifies(cli, tmp_path):
+    none = SHAFT.format(catalogue=EXAMPLE, life="1e9 h")
+    run = cli("select", _spec(tmp_path, none))
+    assert run.code == 1 and "NONE of the catalogue's bearings" in run.out
+    assert cli("select", _spec(tmp_path, SHAFT.format(catalogue=EXAMPLE, life="2000 h"))
+               ).code == 0
+
+
+@pytest.mark.parametrize(("options", "words"), [
+    (["--max-outside-diameter", "40 mm"],
+     "none with an outside diameter of at most 40 mm among those with the bore 25 mm"),
+    (["--type", "thrust-ball", "--max-width", "5 mm"],
+     "fits the bearing: none with a width of at most 5 mm among those of the types "
+     "thrust-ball, with the bore 25 mm"),
+    (["--type", "thrust-ball", "--series", "513"],
+     "none of the series 513 among those of the types thrust-ball"),
+    (["--series", "99"], "none of the series 99"),
+])
+def test_an_envelope_no_row_fits_names_the_limit(cli, tmp_path, options, words):
+    run = cli("select", _spec(tmp_path, SHAFT.format(catalogue=EXAMPLE, life="2000 h")),
+              *options)
+    assert run.code == 2 and run.err.count("\n") == 1 and run.out == "", run.err
+    assert words in run.err, run.err
+
+
+def test_the_envelope_and_the_types_narrow_the_choice(cli, tmp_path):
+    path = _spec(tmp_path, SHAFT.format(catalogue=EXAMPLE, life="2000 h"))
+    run = cli("select", path, "--format", "json", "--top", "100",
+              "--max-outside-diameter", "55 mm", "--type", "tapered-roller",
+              "--type", "deep-groove")
+    (record,) = [json.loads(line) for line in run.out.splitlines()]
+    listed = record["qualifying"] + record["failing"]
+    assert listed and all(c["outside_diameter"] <= 0.055 for c in listed)
+    assert {c["type"] for c in listed} <= {"tapered-roller", "deep-groove"}
+
+
+@pytest.mark.parametrize(("options", "words"), [
+    (["--type", "tapered"], "--type 'tapered': not a bearing type (did you mean"),
+    (["--max-width", "17 kg"], "--max-width: 'kg' is not a unit of length"),
+])
+def test_bad_options_are_one_line(cli, tmp_path, options, words):
+    run = cli("select", _spec(tmp_path, SHAFT.format(catalogue=EXAMPLE, life="2000 h")),
+              *options)
+    assert run.code == 2 and run.err.count("\n") == 1 and words in run.err, run.err
+
+
+def test_a_spec_that_is_not_of_a_rolling_bearing_is_refused(cli):
+    run = cli("select", ROOT / "specs" / "bevel-gears.yaml", "--catalogue", EXAMPLE)
+    assert run.code == 2 and "select chooses rolling bearings" in run.err, run.err
+
+
+def test_a_drive_selects_its_open_position(cli, tmp_path):
+    """The example drive with its locating pinion bearing left open (only its shaft):
+    select lists that position, and each qualifying row, written into the drive, passes
+    solve."""
+    drive = (ROOT / "specs" / "bevel-drive.yaml").read_text()
+    old = drive[drive.index("  - {position: 90 mm"):drive.index("  - {position: 150 mm")]
+    opened = drive.replace(old, "  - {position: 90 mm, locating: true, bore_diameter: 25 mm}\n"
+                           ) + f"catalogue: {EXAMPLE}\n"
+    run = cli("select", _spec(tmp_path, opened, "drive.yaml"), "--format", "json")
+    assert run.code in (0, 1), run.err
+    (record,) = [json.loads(line) for line in run.out.splitlines()]
+    assert record["position"] == "pinion_bearings.1" and record["considered"] >= 5
+    for candidate in record["qualifying"]:
+        chosen = opened.replace("{position: 90 mm, locating: true, bore_diameter: 25 mm}",
+                                f"{{position: 90 mm, locating: true, designation: "
+                                f"'{candidate['designation']}', maker: {candidate['maker']}}}")
+        solved = cli("solve", _spec(tmp_path, chosen, "chosen.yaml"), "--format", "json")
+        assert json.loads(solved.out)["within_limits"], candidate["designation"]
+
+
+def test_the_csv_is_flat_and_never_a_spreadsheet_formula(cli, tmp_path):
+    text = EXAMPLE.read_text().replace("6205,NSK,", "6205,=HYPERLINK(1),")
+    (tmp_path / "cat.csv").write_text(text)
+    run = cli("select", _spec(tmp_path, SHAFT.format(catalogue="cat.csv", life="2000 h")),
+              "--format", "csv", "--top", "100")
+    rows = list(csv.DictReader(io.StringIO(run.out)))
+    assert rows and set(rows[0]) >= {"designation", "maker", "outside_diameter [m]",
+                                     "governing_margin", "catalogue_source"}
+    assert "'=HYPERLINK(1)" in {row["maker"] for row in rows}
