@@ -46,6 +46,10 @@ ROW_OWNED = ("designation", "maker", "type", "dynamic_load_rating", "static_load
              "bore_diameter", "outside_diameter", "width", "ball_count", "ball_diameter",
              "roller_count", "roller_diameter", "roller_length", "pitch_diameter")
 SHAFT_TOLERANCE = 1e-7  # [m]
+#: Rows of one type read as a whole spec before the type is taken as refused by the
+#: spec's rules (rows of a type differ in their numbers only; the listed rows are read
+#: again one by one).
+TEMPLATE_TRIES = 3
 
 
 @dataclass
@@ -59,11 +63,13 @@ class Candidate:
     problem: str | None = None
 
     @property
-    def size(self) -> tuple[float, float, float, str]:
-        """What ranks the qualifying rows: outside diameter, width, mass (unknown last)."""
+    def size(self) -> tuple[float, float, float, float, str, str]:
+        """What ranks the qualifying rows: outside diameter, width, mass (unknown last),
+        then the larger governing margin."""
         values = self.row.values
+        margin = self.verdicts[0].margin if self.verdicts else 0.0
         return (values["outside_diameter"], values["width"], values.get("mass", math.inf),
-                self.row.designation)
+                -margin, self.row.designation, self.row.maker)
 
     @property
     def closeness(self) -> float:
@@ -305,7 +311,7 @@ def _choose(kind: Kind, document: Document, catalogue: Catalogue, envelope: Enve
         bearing.pop("rows")
     base["catalogue"] = str(Path(catalogue.path).resolve())
     groups: dict[tuple[Any, ...], list[CatalogueRow]] = {}
-    fields_of: dict[int, dict[str, tuple[float, str | float]]] = {}
+    fields_of: dict[int, dict[str, tuple[str, float]]] = {}
     for row in rows:
         fields = row_fields(row, arrangement, rows_count)
         fields_of[id(row)] = fields
@@ -327,39 +333,45 @@ def _with_row(document: Document, base: dict[str, Any], position: str, row: Cata
 
 def _solve_group(kind: Kind, document: Document, base: dict[str, Any], position: str,
                  members: list[CatalogueRow], names: tuple[str, ...],
-                 fields_of: dict[int, dict[str, tuple[float, str | float]]]
+                 fields_of: dict[int, dict[str, tuple[str, float]]]
                  ) -> list[Candidate]:
     """The rows of one type and one set of fields, solved in one call on a spec read
     with the first of them that the spec's rules take."""
     template = None
     refused: list[Candidate] = []
-    for row in members:
+    for row in members[:TEMPLATE_TRIES]:
         try:
             _, template = parse_document(_with_row(document, base, position, row))
             break
         except SpecError as error:
             refused.append(Candidate(row, False, problem=_reason(error)))
-    if template is None:
-        return refused
+    if template is None:  # the spec's rules refuse the type itself, not a row's numbers
+        reason = refused[0].problem
+        return refused + [Candidate(row, False, problem=reason)
+                          for row in members[len(refused):]]
     rest = members[len(refused):]
     prefix = f"{position}." if position else ""
-    values = {f"{prefix}{name}": np.array([fields_of[id(row)][name][0] for row in rest])
+    values = {f"{prefix}{name}": np.array([fields_of[id(row)][name][1] for row in rest])
               for name in names}
     results, status = evaluate_with(kind, template, values)
     count = len(rest)
     results = {key: np.broadcast_to(value, (count,)) for key, value in results.items()}
     status = np.broadcast_to(status, (count,))
-    passed = kind.within_limits(results, status)
+    passed = kind.within_limits(results, status).tolist()
+    codes = status.tolist()
+    keys = list(results)
+    margin_keys = [key for key in kind.margins if key in results]
     candidates = refused
-    for i, row in enumerate(rest):
-        if status[i]:
-            field_name, why = kind.status_reasons[int(status[i])]
+    for row, code, ok, values in zip(rest, codes, passed, zip(
+            *(results[key].tolist() for key in keys), strict=True), strict=True):
+        if code:
+            field_name, why = kind.status_reasons[int(code)]
             candidates.append(Candidate(row, False, problem=f"{field_name}: {why}"
                                         if field_name else why))
             continue
-        scalar = {key: float(value[i]) for key, value in results.items()}
-        margins = {key: scalar[key] for key in kind.margins if key in scalar}
-        candidates.append(Candidate(row, bool(passed[i]), judge(kind, scalar, margins)))
+        scalar = dict(zip(keys, values, strict=True))
+        margins = {key: scalar[key] for key in margin_keys}
+        candidates.append(Candidate(row, ok, judge(kind, scalar, margins)))
     return candidates
 
 

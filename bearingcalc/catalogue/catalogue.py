@@ -4,7 +4,6 @@ dimensions, and the lookup of a designation."""
 from __future__ import annotations
 
 import difflib
-import functools
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -15,7 +14,7 @@ from numpy.typing import NDArray
 from bearingcalc.catalogue.columns import COLUMNS, NUMERIC
 from bearingcalc.catalogue.designation import Designation, parse_designation
 from bearingcalc.catalogue.iso import iso_series, iso_table
-from bearingcalc.catalogue.reader import RawCatalogue, RawRow, read_csv
+from bearingcalc.catalogue.reader import RawCatalogue, read_csv
 from bearingcalc.errors import SpecError
 from bearingcalc.units import DIMENSIONLESS, MAX_MAGNITUDE, to_display, unit_scale
 
@@ -24,20 +23,42 @@ DIMENSION_TOLERANCE = 1e-7
 ISO_CHECKED = ("bore_diameter", "outside_diameter", "width")
 
 
-@dataclass(frozen=True)
 class CatalogueRow:
-    """One bearing of a catalogue."""
+    """One bearing of a catalogue: its text cells, and its numbers in SI."""
 
-    designation: str
-    maker: str
-    type: str
-    source: str
-    line: int
-    #: number columns given, in SI
-    values: dict[str, float]
-    #: the same as the file writes them, with the column's unit ('14.8 kN'), for specs
-    written: dict[str, str | float]
-    parsed: Designation | None
+    __slots__ = (
+        "_cells",
+        "_units",
+        "designation",
+        "line",
+        "maker",
+        "parsed",
+        "source",
+        "type",
+        "values",
+    )
+
+    def __init__(self, cells: dict[str, str], line: int, values: dict[str, float],
+                 units: dict[str, str]) -> None:
+        self.designation, self.maker = cells["designation"], cells["maker"]
+        self.type, self.source = cells["type"], cells["source"]
+        self.line = line
+        #: number columns given, in SI
+        self.values = values
+        self.parsed: Designation | None = parse_designation(self.designation)
+        self._cells = cells
+        self._units = units
+
+    @property
+    def written(self) -> dict[str, str | float]:
+        """The numbers as the file writes them, with the column's unit ('14.8 kN'), so
+        that a spec filled from the row reads as if typed; plain numbers as numbers."""
+        out: dict[str, str | float] = {}
+        for name in self.values:
+            text, unit = self._cells[name], self._units[name]
+            out[name] = (f"{text} {unit}" if unit else
+                         int(float(text)) if COLUMNS[name].whole else float(text))
+        return out
 
     @property
     def label(self) -> str:
@@ -57,10 +78,21 @@ class Catalogue:
     rows: list[CatalogueRow]
     #: what the reader should know of the file (bearings ISO's table does not hold)
     warnings: list[str] = field(default_factory=list)
+    _by_basic: dict[str, list[CatalogueRow]] | None = field(default=None, repr=False)
 
     def column(self, name: str) -> NDArray:
         """A number column over every row, NaN where a row leaves it empty. [SI]"""
         return np.array([row.values.get(name, np.nan) for row in self.rows])
+
+    def _index(self) -> dict[str, list[CatalogueRow]]:
+        """Rows by basic designation (a special bearing's by its whole designation)."""
+        if self._by_basic is None:
+            index: dict[str, list[CatalogueRow]] = {}
+            for row in self.rows:
+                key = row.parsed.basic if row.parsed is not None else _normal(row.designation)
+                index.setdefault(key, []).append(row)
+            self._by_basic = index
+        return self._by_basic
 
     def find(self, designation: str | int, maker: str | None = None) -> CatalogueRow:
         """The row of ``designation`` (by its basic designation; its suffixes pick among
@@ -68,7 +100,8 @@ class Catalogue:
         nearest designations where none or several fit."""
         wanted = parse_designation(designation)
         text = str(designation).strip()
-        candidates = [row for row in self.rows
+        key = wanted.basic if wanted is not None else _normal(text)
+        candidates = [row for row in self._index().get(key, [])
                       if (maker is None or row.maker.casefold() == maker.casefold())
                       and _same_basic(row, wanted, text)]
         exact = [row for row in candidates if _normal(row.designation) == _normal(text)]
@@ -100,30 +133,44 @@ def _same_basic(row: CatalogueRow, wanted: Designation | None, text: str) -> boo
     return row.parsed.basic == wanted.basic
 
 
-@functools.lru_cache(maxsize=8)
-def _cached(path: str, modified: float, size: int) -> Catalogue:
-    return build(read_csv(path))
+_LOADED: dict[tuple[str, float, int], Catalogue] = {}
+_KEEP = 8
 
 
 def load_catalogue(path: str | Path) -> Catalogue:
-    """The catalogue at ``path``, read once per version of the file; raises SpecError."""
+    """The catalogue at ``path``, read once per version of the file (however the path is
+    written); raises SpecError."""
     target = Path(path)
     try:
         status = target.stat()
+        key = (str(target.resolve()), status.st_mtime, status.st_size)
     except OSError:
         raise SpecError("no such catalogue file", source=str(path)) from None
-    return _cached(str(target), status.st_mtime, status.st_size)
+    found = _LOADED.get(key)
+    if found is None:
+        found = build(read_csv(target))
+        if len(_LOADED) >= _KEEP:
+            _LOADED.pop(next(iter(_LOADED)))
+        _LOADED[key] = found
+    return found
 
 
 def build(raw: RawCatalogue) -> Catalogue:
     """Rows in SI, each checked against ISO's dimensions for its designation; raises
     SpecError at the row's line."""
+    numbers = _numbers(raw)
+    units = {name: unit if COLUMNS[name].dimension is not DIMENSIONLESS else ""
+             for name, (_, unit) in raw.columns.items() if name in numbers}
+    names = list(numbers)
+    table = zip(*(numbers[name].tolist() for name in names), strict=True)
     rows: list[CatalogueRow] = []
     seen: dict[tuple[str, str], int] = {}
     special: list[str] = []
-    scales = _scales(raw)
-    for raw_row in raw.rows:
-        row = _row(raw, raw_row, scales)
+    for raw_row, numbers_of_row in zip(raw.rows, table, strict=True):
+        # a NaN is an empty cell
+        values = {name: value for name, value in zip(names, numbers_of_row, strict=True)
+                  if not math.isnan(value)}
+        row = CatalogueRow(raw_row.cells, raw_row.line, values, units)
         key = (_normal(row.designation), row.maker.casefold())
         if key in seen:
             raise SpecError(f"{row.label} is given twice (first at line {seen[key]})",
@@ -143,40 +190,34 @@ def build(raw: RawCatalogue) -> Catalogue:
     return Catalogue(raw.path, rows, warnings)
 
 
-def _scales(raw: RawCatalogue) -> dict[str, tuple[float, bool] | None]:
-    """Each number column's conversion to SI (None: a plain number)."""
-    return {name: None if column.dimension is DIMENSIONLESS
-            else unit_scale(unit, column.dimension)  # type: ignore[arg-type]
-            for name, (column, unit) in raw.columns.items() if name in NUMERIC}
-
-
-def _row(raw: RawCatalogue, raw_row: RawRow, scales: dict[str, tuple[float, bool] | None]
-         ) -> CatalogueRow:
-    values: dict[str, float] = {}
-    written: dict[str, str | float] = {}
-    for name, text in raw_row.cells.items():
-        if name not in scales:
+def _numbers(raw: RawCatalogue) -> dict[str, NDArray]:
+    """Each number column over every row in SI (NaN where a cell is empty), converted as
+    :func:`bearingcalc.units.parse_quantity` converts one number; a SpecError at the
+    first cell out of range."""
+    out: dict[str, NDArray] = {}
+    for name, (column, unit) in raw.columns.items():
+        if name not in NUMERIC:
             continue
-        number = float(text)
-        scale = scales[name]
-        column, unit = raw.columns[name]
-        if scale is None:
-            if column.whole and not number.is_integer():
-                raise SpecError(f"{text!r} is not a whole number", source=raw.path,
-                                line=raw_row.line, field=name)
-            value = number
-            written[name] = int(number) if column.whole else number
+        written = np.array([float(row.cells.get(name, "nan")) for row in raw.rows])
+        if column.dimension is DIMENSIONLESS:
+            values = written
         else:
-            value = number / scale[0] if scale[1] else number * scale[0]
-            written[name] = f"{text} {unit}"
-        if not (math.isfinite(value) and abs(value) <= MAX_MAGNITUDE) or (
-                value <= 0 and name != "contact_angle"):
-            raise SpecError(f"must be a finite number greater than zero, got {text}",
-                            source=raw.path, line=raw_row.line, field=name)
-        values[name] = value
-    cells = raw_row.cells
-    return CatalogueRow(cells["designation"], cells["maker"], cells["type"], cells["source"],
-                        raw_row.line, values, written, parse_designation(cells["designation"]))
+            factor, divides = unit_scale(unit, column.dimension)  # type: ignore[arg-type]
+            values = written / factor if divides else written * factor
+        given = ~np.isnan(values)
+        allowed = (values > 0) | ((values == 0) if name == "contact_angle" else False)
+        bad = given & ~(allowed & (values <= MAX_MAGNITUDE))
+        if column.whole:
+            bad |= given & (written != np.floor(written))
+        if bad.any():
+            i = int(np.argmax(bad))
+            text = raw.rows[i].cells[name]
+            what = ("a whole number greater than zero" if column.whole
+                    else "a finite number greater than zero")
+            raise SpecError(f"must be {what}, got {text}", source=raw.path,
+                            line=raw.rows[i].line, field=name)
+        out[name] = values
+    return out
 
 
 def _check_iso(row: CatalogueRow, path: str) -> bool:

@@ -17,32 +17,24 @@ from dataclasses import dataclass
 
 #: The bores of the first four codes; from 04 on, the code times 5 mm. [mm]
 SMALL_BORES = {0: 10.0, 1: 12.0, 2: 15.0, 3: 17.0}
-#: Prefixes of cylindrical roller bearings, which share the NU form's dimensions.
-ROLLER_PREFIXES = ("NUP", "NU", "NJ", "NF", "N")
 
 #: Makers' own prefixes of a standard bearing (NSK's high-capacity HR, NTN's 4T-), which
 #: change no boundary dimension.
-_BASIC = re.compile(r"^(?:HR|4T-|ET-)?\s*(?P<prefix>NUP|NU|NJ|NF|N)?\s*(?P<digits>[0-9]{3,6})"
-                    r"(?![0-9])")
+_BASIC = re.compile(r"(?:HR|4T-|ET-)?\s*(?P<prefix>NUP|NU|NJ|NF|N)?\s*(?P<digits>[0-9]{3,6})"
+                    r"(?![0-9])", re.IGNORECASE)
 _SEPARATORS = re.compile(r"[\s\-]+")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Designation:
     """A designation as written, read into its parts."""
 
     text: str            # as written, stripped
     basic: str           # prefix and digits: 'NJ205', '6205', '30205'
     suffixes: tuple[str, ...]
-
-    @property
-    def iso_key(self) -> str:
-        """The basic designation the boundary dimensions are filed under: a cylindrical
-        roller bearing's N, NJ, NUP and NF forms under NU."""
-        for prefix in ROLLER_PREFIXES:
-            if self.basic.startswith(prefix):
-                return "NU" + self.basic[len(prefix):]
-        return self.basic
+    #: the basic designation the boundary dimensions are filed under: a cylindrical
+    #: roller bearing's N, NJ, NUP and NF forms under NU
+    iso_key: str
 
     @property
     def bore_diameter(self) -> float | None:
@@ -66,10 +58,10 @@ def parse_designation(text: str | int) -> Designation | None:
     """The parts of a designation (``'6205-2RS C3'``, ``6205``, ``'NU 206 ECP'``); None
     where it does not start with a basic designation (a special bearing's own name)."""
     written = str(text).strip()
-    match = _BASIC.match(written.upper())
+    match = _BASIC.match(written)
     if match is None:
         return None
-    basic = (match["prefix"] or "") + match["digits"]
+    prefix, digits = (match["prefix"] or "").upper(), match["digits"]
     rest = written[match.end():]
-    suffixes = tuple(part for part in _SEPARATORS.split(rest) if part)
-    return Designation(written, basic, suffixes)
+    suffixes = tuple(part for part in _SEPARATORS.split(rest) if part) if rest else ()
+    return Designation(written, prefix + digits, suffixes, "NU" + digits if prefix else digits)

@@ -39,6 +39,9 @@ ANGLED_ROLLER_TYPES = ("tapered-roller", "spherical-roller")
 FACTOR_FIELDS = {"e": ("e", "e"), "y1": (None, "y1"), "y2": ("y", "y2"), "y0": ("y0", "y0")}
 _WORD = "catalogue"
 _PERCENT_TOLERANCE = re.compile(rf"^\s*(?:±|\+/-)\s*(?P<percent>{UNSIGNED_DECIMAL})\s*%\s*$")
+#: Columns that fill a bearing field of the same level: column -> field.
+_DIRECT = {name: column.field for name, column in COLUMNS.items()
+           if column.field is not None and "." not in column.field}
 #: Arrangements of two single-row bearings whose load factors are the pair's own.
 PAIRS = ("back-to-back", "face-to-face")
 
@@ -138,33 +141,40 @@ def _catalogue(data: dict[str, Any], spec_path: str, error: Any, at: str) -> Cat
 
 
 def row_fields(row: CatalogueRow, arrangement: str = "single", rows: int | None = None
-               ) -> dict[str, tuple[float, str | float]]:
-    """The bearing fields a catalogue row gives (dotted within the bearing), each as
-    (SI value, as a spec writes it), for a bearing of ``arrangement`` and ``rows``.
+               ) -> dict[str, tuple[str, float]]:
+    """The bearing fields a catalogue row gives (dotted within the bearing), each with
+    the column it comes from and its SI value, for a bearing of ``arrangement`` and
+    ``rows`` (see :func:`written_fields` for the text a spec takes).
 
     A roller bearing's e, Y and Y0 become its ``load_factors`` in its form (a single
     row's Y is the row's y2, the Y above e); a pair's are ISO 281's for its contact
     angle, not one bearing's. Where the row gives e but no contact angle, a tapered or
-    spherical roller bearing's follows from ISO 281's e = 1.5·tanα.
+    spherical roller bearing's follows from ISO 281's e = 1.5·tanα (column ``e``).
     """
-    fields: dict[str, tuple[float, str | float]] = {}
-    for name, written in row.written.items():
-        target = COLUMNS[name].field
-        if target is not None and "." not in target:
-            fields[target] = (row.values[name], written)
-    if row.type not in ROLLER_TYPES or "e" not in row.values:
+    values = row.values
+    fields = {_DIRECT[name]: (name, value) for name, value in values.items()
+              if name in _DIRECT}
+    if row.type not in ROLLER_TYPES or "e" not in values:
         return fields
     if "contact_angle" not in fields and row.type in ANGLED_ROLLER_TYPES:
-        alpha = math.atan(row.values["e"] / 1.5)
-        fields["contact_angle"] = (alpha, f"{alpha!r} rad")
+        fields["contact_angle"] = ("e", math.atan(values["e"] / 1.5))
     if arrangement in PAIRS:
         return fields
     double = (rows if rows is not None else 2 if row.type in DOUBLE_ROW_TYPES else 1) == 2
     for column, targets in FACTOR_FIELDS.items():
-        if column in row.written and targets[double] is not None:
-            fields[f"load_factors.{targets[double]}"] = (row.values[column],
-                                                         row.written[column])
+        if column in values and targets[double] is not None:
+            fields[f"load_factors.{targets[double]}"] = (column, values[column])
     return fields
+
+
+def written_fields(row: CatalogueRow, arrangement: str = "single", rows: int | None = None
+                   ) -> dict[str, tuple[str, str | float]]:
+    """:func:`row_fields` as a spec writes them: the catalogue's text with its column's
+    unit (``'14.8 kN'``), a derived contact angle in radians."""
+    written = row.written
+    return {target: (column, f"{value!r} rad" if target == "contact_angle" and column == "e"
+                     else written[column])
+            for target, (column, value) in row_fields(row, arrangement, rows).items()}
 
 
 def _fill_bearing(bearing: dict[str, Any], row: CatalogueRow, prefix: str, use: CatalogueUse,
@@ -177,16 +187,16 @@ def _fill_bearing(bearing: dict[str, Any], row: CatalogueRow, prefix: str, use: 
     if row.type in DOUBLE_ROW_TYPES and "rows" not in bearing:
         bearing["rows"] = 2
     arrangement = bearing.get("arrangement", "single")
-    fields = row_fields(row, arrangement if isinstance(arrangement, str) else "single",
-                        bearing.get("rows") if isinstance(bearing.get("rows"), int) else None)
+    fields = written_fields(
+        row, arrangement if isinstance(arrangement, str) else "single",
+        bearing.get("rows") if isinstance(bearing.get("rows"), int) else None)
     factors_given = "load_factors" in bearing
-    for target, (_, written) in fields.items():
+    for target, (column, written) in fields.items():
         if target.startswith("load_factors."):
             if not factors_given:
                 bearing.setdefault("load_factors", {})[target.split(".")[1]] = written
             continue
-        column = next((name for name, col in COLUMNS.items() if col.field == target), None)
-        _put(bearing, target, written, row, column, prefix, use)
+        _put(bearing, target, written, row, None if column == "e" else column, prefix, use)
     if arrangement in PAIRS and "e" in row.values and row.type in ROLLER_TYPES and (
             not factors_given):
         use.notes.append(f"{prefix or 'the bearing'}: a pair's load factors are ISO 281's "

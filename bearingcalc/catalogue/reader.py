@@ -34,7 +34,9 @@ ROW_TYPES = ("deep-groove", "angular-contact", "self-aligning-ball", "thrust-bal
              "thrust-cylindrical-roller", "thrust-spherical-roller", "thrust-tapered-roller")
 
 _HEADER_CELL = re.compile(r"^\s*(?P<name>[A-Za-z_][A-Za-z0-9_]*)\s*(?:\[(?P<unit>[^\[\]]*)\])?\s*$")
-_PLAIN_NUMBER = re.compile(rf"^{NUMBER}$")
+_PLAIN_NUMBER = re.compile(NUMBER)
+#: A column's numbers joined by newlines, read in one match.
+_NUMBER_LINES = re.compile(rf"(?:{NUMBER}\n)*(?:{NUMBER})?")
 
 
 @dataclass(frozen=True)
@@ -61,35 +63,78 @@ def read_csv(path: str | Path) -> RawCatalogue:
     source = str(path)
     text = _text(Path(path), source)
     reader = csv.reader(io.StringIO(text, newline=""))
-    header: list[str] | None = None
     header_line = 0
-    rows: list[RawRow] = []
-    columns: dict[str, tuple[Column, str]] = {}
     names: list[str] = []
+    columns: dict[str, tuple[Column, str]] = {}
+    body: list[list[str]] = []
+    lines: list[int] = []
     try:
         for cells in reader:
-            line = reader.line_num
-            if header is None:
+            if not names:
                 if not cells or not "".join(cells).strip() or cells[0].lstrip().startswith("#"):
                     continue
-                header, header_line = cells, line
-                columns, names = _header(cells, source, line)
+                header_line = reader.line_num
+                columns, names = _header(cells, source, header_line)
                 continue
-            if not any(cell.strip() for cell in cells):
+            stripped = [cell.strip() for cell in cells]
+            if not any(stripped):
                 continue
-            if len(rows) >= MAX_ROWS:
+            if len(stripped) != len(names):
+                raise SpecError(f"{len(stripped)} cells where the header has {len(names)} "
+                                "columns", source=source, line=reader.line_num)
+            if len(body) >= MAX_ROWS:
                 raise SpecError(f"more than {MAX_ROWS} rows: split the catalogue",
-                                source=source, line=line)
-            rows.append(_row(cells, names, columns, source, line))
+                                source=source, line=reader.line_num)
+            body.append(stripped)
+            lines.append(reader.line_num)
     except csv.Error as error:
         raise SpecError(f"not a readable CSV file: {error}", source=source,
                         line=reader.line_num) from None
-    if header is None:
+    if not names:
         raise SpecError("no header: the first line that is not a comment names the "
                         f"columns, like '{', '.join(_example_header())}'", source=source)
-    if not rows:
+    if not body:
         raise SpecError("no rows below the header", source=source, line=header_line)
+    problems = [problem for j, name in enumerate(names)
+                if (problem := _column_problem(name, columns[name], [row[j] for row in body],
+                                               lines, source)) is not None]
+    if problems:
+        raise min(problems, key=lambda problem: problem.line or 0)
+    rows = [RawRow(line, {name: cell for name, cell in zip(names, row, strict=True) if cell})
+            for line, row in zip(lines, body, strict=True)]
     return RawCatalogue(source, columns, rows)
+
+
+def _column_problem(name: str, described: tuple[Column, str], cells: list[str],
+                    lines: list[int], source: str) -> SpecError | None:
+    """The first problem of one column's cells, checked all at once (a row at a time only
+    to find the cell at fault)."""
+    column, unit = described
+    first: list[tuple[int, str]] = []
+    if max(map(len, cells)) > MAX_CELL_CHARS:
+        i = next(i for i, cell in enumerate(cells) if len(cell) > MAX_CELL_CHARS)
+        first.append((i, f"a cell of over {MAX_CELL_CHARS} characters"))
+    if column.required and "" in cells:
+        first.append((cells.index(""), f"empty: every row gives its {name}" + (
+            " (the document, edition and page, or the URL and the date read)"
+            if name == "source" else "")))
+    if column.dimension is not None and _NUMBER_LINES.fullmatch(
+            "\n".join(cell for cell in cells if cell)) is None:
+        i = next(i for i, cell in enumerate(cells)
+                 if cell and _PLAIN_NUMBER.fullmatch(cell) is None)
+        want = "a whole number" if column.whole else "a number"
+        units = f" (the unit, {unit}, is the column's)" if unit else ""
+        first.append((i, f"{cells[i][:40]!r} is not {want}: write {want} alone{units}"))
+    if name == "type":
+        unknown = set(cells) - set(ROW_TYPES) - {""}
+        if unknown:
+            i = next(i for i, cell in enumerate(cells) if cell in unknown)
+            first.append((i, f"unknown type {cells[i][:40]!r}"
+                          f"{did_you_mean(cells[i], ROW_TYPES)}; one of {', '.join(ROW_TYPES)}"))
+    if not first:
+        return None
+    i, message = min(first)
+    return SpecError(message, source=source, line=lines[i], field=name)
 
 
 def _text(path: Path, source: str) -> str:
@@ -168,36 +213,3 @@ def _check_unit(column: Column, unit: str, source: str, line: int) -> None:
     except UnitError as error:
         raise SpecError(f"[{unit}]: {error}", source=source, line=line,
                         field=column.name) from None
-
-
-def _row(cells: list[str], names: list[str], columns: dict[str, tuple[Column, str]],
-         source: str, line: int) -> RawRow:
-    if len(cells) != len(names):
-        raise SpecError(f"{len(cells)} cells where the header has {len(names)} columns",
-                        source=source, line=line)
-    found: dict[str, str] = {}
-    for name, cell in zip(names, cells, strict=True):
-        text = cell.strip()
-        if len(text) > MAX_CELL_CHARS:
-            raise SpecError(f"a cell of over {MAX_CELL_CHARS} characters", source=source,
-                            line=line, field=name)
-        if not text:
-            continue
-        column, unit = columns[name]
-        if column.dimension is not None and not _PLAIN_NUMBER.match(text):
-            want = "a whole number" if column.whole else "a number"
-            units = f" (the unit, {unit}, is the column's)" if unit else ""
-            raise SpecError(f"{text[:40]!r} is not {want}: write {want} alone{units}",
-                            source=source, line=line, field=name)
-        found[name] = text
-    for name in REQUIRED:
-        if name not in found:
-            raise SpecError(f"empty: every row gives its {name}"
-                            + (" (the document, edition and page, or the URL and the date "
-                               "read)" if name == "source" else ""),
-                            source=source, line=line, field=name)
-    if found["type"] not in ROW_TYPES:
-        raise SpecError(f"unknown type {found['type'][:40]!r}"
-                        f"{did_you_mean(found['type'], ROW_TYPES)}; one of "
-                        f"{', '.join(ROW_TYPES)}", source=source, line=line, field="type")
-    return RawRow(line, found)
