@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import re
+import tempfile
 from pathlib import Path
 
 SPECS = Path(__file__).resolve().parent.parent / "specs"
@@ -155,7 +156,7 @@ def _physics_cases() -> dict[str, str]:
     geometry = (SPECS / "ball-bearing-geometry.yaml").read_text()
     loaded = (SPECS / "thrust-bearing-loaded.yaml").read_text()
     oil = "lubrication: {viscosity_40: 68 mm^2/s, viscosity_100: 8.7 mm^2/s, temperature: %s}"
-    return {**_roller_cases(), **_duty_cases(), **_pair_cases(), **{
+    return {**_roller_cases(), **_duty_cases(), **_pair_cases(), **_catalogue_cases(), **{
         # Contradictory geometry: every size valid, together impossible.
         "ball-pitch-outside-rings.yaml": _mutate(ball, "pitch_diameter", "150 mm")
         + "bore_diameter: 45 mm\noutside_diameter: 100 mm\n",
@@ -318,6 +319,96 @@ def _pair_cases() -> dict[str, str]:
                                                       "  hardness: 180 HB\n"
                                                       "  temperature: 1e6 K"),
     }
+
+
+#: Catalogue files that must each be refused, by the spec that names them.
+CATALOGUE_HEADER = ("designation,maker,type,bore_diameter [mm],outside_diameter [mm],"
+                    "width [mm],dynamic_load_rating [kN],static_load_rating [kN],source\n")
+CATALOGUE_ROW = '6205,SKF,deep-groove,25,52,15,14.8,7.8,"SKF, catalogue, p. 306"\n'
+BAD_CATALOGUES: dict[str, bytes] = {
+    "empty": b"",
+    "header-only": CATALOGUE_HEADER.encode(),
+    "no-header": b"# a comment\n\n",
+    "latin1": (CATALOGUE_HEADER + CATALOGUE_ROW.replace("catalogue", "catalogu\xe9")
+               ).encode("latin-1"),
+    "utf16": (CATALOGUE_HEADER + CATALOGUE_ROW).encode("utf-16"),
+    "nul": (CATALOGUE_HEADER + CATALOGUE_ROW).encode().replace(b"SKF,", b"SK\x00F,", 1),
+    "open-quote": (CATALOGUE_HEADER + CATALOGUE_ROW.replace('p. 306"', "p. 306")).encode(),
+    "too-many-cells": (CATALOGUE_HEADER + CATALOGUE_ROW.replace("\n", ",x\n")).encode(),
+    "formula-number": (CATALOGUE_HEADER + CATALOGUE_ROW.replace(",14.8,", ",=cmd|' /c'!A1,")
+                       ).encode(),
+    "nan-number": (CATALOGUE_HEADER + CATALOGUE_ROW.replace(",14.8,", ",nan,")).encode(),
+    "huge-number": (CATALOGUE_HEADER + CATALOGUE_ROW.replace(",14.8,", ",1e400,")).encode(),
+    "zero-rating": (CATALOGUE_HEADER + CATALOGUE_ROW.replace(",7.8,", ",0,")).encode(),
+    "no-source": (CATALOGUE_HEADER + CATALOGUE_ROW.replace('"SKF, catalogue, p. 306"', "")
+                  ).encode(),
+    "bad-unit": CATALOGUE_HEADER.replace("[kN],source", "[kN/m],source").encode()
+                + CATALOGUE_ROW.encode(),
+    "no-unit": CATALOGUE_HEADER.replace("width [mm]", "width").encode()
+               + CATALOGUE_ROW.encode(),
+    "unit-on-text": CATALOGUE_HEADER.replace("maker", "maker [kN]").encode()
+                    + CATALOGUE_ROW.encode(),
+    "missing-column": CATALOGUE_HEADER.replace(",source", "").encode()
+                      + CATALOGUE_ROW.rsplit(",", 2)[0].encode() + b"\n",
+    "twice-column": CATALOGUE_HEADER.replace("maker,", "maker,maker,").encode()
+                    + CATALOGUE_ROW.replace("SKF,", "SKF,SKF,", 1).encode(),
+    "duplicate": (CATALOGUE_HEADER + CATALOGUE_ROW + CATALOGUE_ROW.lower()).encode(),
+    "not-iso": (CATALOGUE_HEADER + CATALOGUE_ROW.replace(",52,", ",53,")).encode(),
+    "wrong-type": (CATALOGUE_HEADER + CATALOGUE_ROW.replace("deep-groove", "spherical-roller")
+                   ).encode(),
+    "long-cell": (CATALOGUE_HEADER + CATALOGUE_ROW.replace("p. 306", "p" * 5000)).encode(),
+    "control-text": (CATALOGUE_HEADER + CATALOGUE_ROW).encode().replace(
+        b"SKF,", b"S\x1b[31mKF,", 1),
+    "newline-in-cell": (CATALOGUE_HEADER + CATALOGUE_ROW.replace("p. 306", "p.\n306")).encode(),
+}
+
+
+def catalogue_folder() -> Path:
+    """A folder (made once per run) holding the bad catalogues, which the catalogue
+    cases name by their absolute paths."""
+    folder = _CATALOGUE_FOLDER.get("path")
+    if folder is None:
+        folder = Path(tempfile.mkdtemp(prefix="bearingcalc-hostile-catalogues-"))
+        for name, data in BAD_CATALOGUES.items():
+            (folder / f"{name}.csv").write_bytes(data)
+        (folder / "good.csv").write_text(CATALOGUE_HEADER + CATALOGUE_ROW)
+        (folder / "a-folder.csv").mkdir()
+        _CATALOGUE_FOLDER["path"] = folder
+    return folder
+
+
+_CATALOGUE_FOLDER: dict[str, Path] = {}
+
+
+def _catalogue_cases() -> dict[str, str]:
+    """Specs naming a bad catalogue, a missing one, or a designation it does not hold:
+    each refused in one line that starts with the spec and names the catalogue's line.
+    They name their catalogues by absolute paths, so the golden sample leaves them out."""
+    folder = catalogue_folder()
+    spec = ("kind: rolling-bearing\ncatalogue: {path}\ndesignation: {designation}\n"
+            "static_factor: 14\nradial_load: 3 kN\naxial_load: 1 kN\nspeed: 1500 rpm\n"
+            "lubrication: {{viscosity: 68 mm^2/s}}\ncontamination_factor: 0.5\n")
+    cases = {f"catalogue-{name}.yaml": spec.format(path=folder / f"{name}.csv",
+                                                   designation="6205")
+             for name in BAD_CATALOGUES}
+    good = folder / "good.csv"
+    cases.update({
+        "catalogue-missing.yaml": spec.format(path=folder / "nowhere.csv", designation="6205"),
+        "catalogue-folder.yaml": spec.format(path=folder / "a-folder.csv", designation="6205"),
+        "catalogue-not-held.yaml": spec.format(path=good, designation="6250"),
+        "catalogue-designation-list.yaml": spec.format(path=good, designation="[6205]"),
+        "catalogue-designation-true.yaml": spec.format(path=good, designation="true"),
+        "catalogue-type-clash.yaml": spec.format(path=good, designation="6205")
+        + "type: tapered-roller\n",
+        "catalogue-maker-alone.yaml": spec.format(path=good, designation="6205").replace(
+            "designation: 6205\n", "maker: SKF\n"),
+        "catalogue-no-designation.yaml": spec.format(path=good, designation="6205").replace(
+            "designation: 6205\n", "dynamic_load_rating: 14.8 kN\nstatic_load_rating: 7.8 kN\n"),
+        "catalogue-nu-thrust.yaml": spec.format(path=SPECS / "catalogues" / "example.csv",
+                                                designation="NU205 ECP"),
+        "catalogue-catalogue-number.yaml": spec.format(path=12, designation="6205"),
+    })
+    return cases
 
 
 def _duty_cases() -> dict[str, str]:

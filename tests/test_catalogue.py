@@ -241,3 +241,19 @@ def test_an_nu_bearing_refuses_an_axial_load(cli, tmp_path):
                                            "designation: NU205 ECP\n"), "a.yaml")
     run = cli("solve", path)
     assert run.code == 2 and "axial_load: NU205 ECP is an NU bearing" in run.err, run.err
+
+
+@pytest.mark.parametrize(("limit", "value", "words"), [
+    ("MAX_FILE_BYTES", 100, "file too large"),
+    ("MAX_ROWS", 1, "more than 1 rows: split the catalogue"),
+    ("MAX_CELL_CHARS", 10, "a cell of over 10 characters"),
+])
+def test_the_reader_holds_its_limits(cli, tmp_path, monkeypatch, limit, value, words):
+    from bearingcalc.catalogue import reader
+
+    monkeypatch.setattr(reader, limit, value)
+    (tmp_path / "cat.csv").write_text(HEADER + GOOD_ROW + GOOD_ROW.replace("SKF", "NSK"))
+    path = _write(tmp_path, BEARING.format(head="catalogue: cat.csv\ndesignation: 6205\n"
+                                           "maker: SKF\nstatic_factor: 14\n"), "a.yaml")
+    run = cli("solve", path)
+    assert run.code == 2 and run.err.count("\n") == 1 and words in run.err, run.err

@@ -197,6 +197,7 @@ def test_check_reports_every_good_file_in_a_folder_full_of_hostile_ones(cli, cor
     shutil.copytree(corpus_dir, folder)
     for good in GOOD:
         shutil.copy(good, folder / f"good-{good.name}")
+    shutil.copytree(ROOT / "specs" / "catalogues", folder / "catalogues")  # the good ones'
     run = cli("check", folder, "--format", "json")
     assert run.code == 2, run.err
 

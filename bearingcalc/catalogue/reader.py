@@ -35,6 +35,8 @@ ROW_TYPES = ("deep-groove", "angular-contact", "self-aligning-ball", "thrust-bal
 
 _HEADER_CELL = re.compile(r"^\s*(?P<name>[A-Za-z_][A-Za-z0-9_]*)\s*(?:\[(?P<unit>[^\[\]]*)\])?\s*$")
 _PLAIN_NUMBER = re.compile(NUMBER)
+#: Control characters (a line break inside a quoted cell among them): never in a cell.
+_CONTROL = re.compile(r"[\x00-\x1f\x7f]")
 #: A column's numbers joined by newlines, read in one match.
 _NUMBER_LINES = re.compile(rf"(?:{NUMBER}\n)*(?:{NUMBER})?")
 
@@ -62,7 +64,7 @@ def read_csv(path: str | Path) -> RawCatalogue:
     (a number with the column's unit, a known type, a source on every row)."""
     source = str(path)
     text = _text(Path(path), source)
-    reader = csv.reader(io.StringIO(text, newline=""))
+    reader = csv.reader(io.StringIO(text, newline=""), strict=True)
     header_line = 0
     names: list[str] = []
     columns: dict[str, tuple[Column, str]] = {}
@@ -114,6 +116,11 @@ def _column_problem(name: str, described: tuple[Column, str], cells: list[str],
     if max(map(len, cells)) > MAX_CELL_CHARS:
         i = next(i for i, cell in enumerate(cells) if len(cell) > MAX_CELL_CHARS)
         first.append((i, f"a cell of over {MAX_CELL_CHARS} characters"))
+    control = _CONTROL.search(",".join(cells))
+    if control is not None:
+        i = next(i for i, cell in enumerate(cells) if _CONTROL.search(cell))
+        first.append((i, f"a control character ({control.group()!r}) in a cell: catalogue "
+                      "cells are printable text on one line"))
     if column.required and "" in cells:
         first.append((cells.index(""), f"empty: every row gives its {name}" + (
             " (the document, edition and page, or the URL and the date read)"

@@ -49,8 +49,11 @@ def cases() -> dict[str, list[str]]:
 
 
 def _hostile_sample() -> dict[str, bytes]:
+    # The catalogue cases name their catalogues by absolute paths, which a record of
+    # their lines would pin to one machine.
     return {name: data for name, data in sorted(hostile_corpus().items())
-            if zlib.crc32(name.encode()) % HOSTILE_SAMPLE_STEP == 0}
+            if zlib.crc32(name.encode()) % HOSTILE_SAMPLE_STEP == 0
+            and not name.startswith("physics-catalogue-")}
 
 
 def _sweep(path: str, stem: str) -> list[str]:
