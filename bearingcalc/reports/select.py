@@ -102,7 +102,8 @@ def _print_choice(out: Any, selection: Selection, choice: PositionChoice) -> Non
         table = Table(title="meet every limit, smallest first", title_justify="left")
         for name in ("#", "designation", "maker", "type", "d [mm]", "D [mm]", "B [mm]",
                      "mass [kg]", "governing limit"):
-            table.add_column(name, justify="right" if "[" in name or name == "#" else "left")
+            table.add_column(safe_text(name),
+                             justify="right" if "[" in name or name == "#" else "left")
         for rank, candidate in enumerate(choice.qualifying, 1):
             row = candidate.row
             mass = row.values.get("mass")
@@ -116,7 +117,7 @@ def _print_choice(out: Any, selection: Selection, choice: PositionChoice) -> Non
     if choice.failing:
         table = Table(title="the nearest that fail", title_justify="left")
         for name in ("designation", "maker", "type", "D [mm]", "B [mm]", "misses"):
-            table.add_column(name, justify="right" if "[" in name else "left")
+            table.add_column(safe_text(name), justify="right" if "[" in name else "left")
         for candidate in choice.failing:
             row = candidate.row
             table.add_row(safe_text(row.designation), safe_text(row.maker), row.type,
