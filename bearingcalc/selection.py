@@ -249,6 +249,13 @@ def _fitting(document: Document, catalogue: Catalogue, envelope: Envelope, posit
     bearing = _bearing(document.data, position)
     prefix = f"{position}." if position else ""
     bore = _length(document, bearing, position, "bore_diameter")
+    if bore is None and bearing.get("designation") is not None:  # the given bearing's shaft
+        maker = bearing.get("maker")
+        try:
+            bore = catalogue.find(bearing["designation"], maker if isinstance(maker, str)
+                                  else None).values["bore_diameter"]
+        except LookupError as problem:
+            raise document.error(str(problem), field=f"{prefix}designation") from None
     if bore is None:
         raise document.error("select needs the shaft: give the bearing's bore_diameter, "
                              "like 25 mm", field=f"{prefix}bore_diameter",
