@@ -260,37 +260,47 @@ def _fitting(document: Document, catalogue: Catalogue, envelope: Envelope, posit
         raise document.error("select needs the shaft: give the bearing's bore_diameter, "
                              "like 25 mm", field=f"{prefix}bore_diameter",
                              key_path=FieldPath.parse(position).parts if position else ())
-    outside = _smaller(_length(document, bearing, position, "outside_diameter"),
-                       envelope.max_outside_diameter)
-    width = _smaller(_length(document, bearing, position, "width"), envelope.max_width)
+    given_outside = _length(document, bearing, position, "outside_diameter")
+    given_width = _length(document, bearing, position, "width")
+    outside = _smaller(given_outside, envelope.max_outside_diameter)
+    width = _smaller(given_width, envelope.max_width)
     given_type = bearing.get("type")
     types = envelope.types or ((given_type,) if isinstance(given_type, str) else ())
-    steps: list[tuple[str, Any]] = [
+    # (words, the spec's field or the option that set the bound, which rows it keeps)
+    steps: list[tuple[str, str, Any]] = [
         (f"of the types {', '.join(types)}" if types else "",
+         "--type" if envelope.types else f"{prefix}type",
          lambda row: not types or row.type in types),
-        ("that a drive's shaft can take (no thrust bearings)" if position else "",
+        ("that a drive's shaft can take (no thrust bearings)" if position else "", "",
          lambda row: not position or row.type not in THRUST_TYPES),
         (f"of the series {', '.join(envelope.series)}" if envelope.series else "",
-         lambda row: not envelope.series or _series(row) in envelope.series),
-        (f"with the bore {_shown(bore)} ({prefix}bore_diameter)",
+         "--series", lambda row: not envelope.series or _series(row) in envelope.series),
+        (f"with the bore {_shown(bore)}",
+         f"{prefix}bore_diameter" if "bore_diameter" in bearing else f"{prefix}designation",
          lambda row: abs(row.values["bore_diameter"] - bore) <= SHAFT_TOLERANCE),
         (f"with an outside diameter of at most {_shown(outside)}" if outside else "",
+         f"{prefix}outside_diameter" if outside == given_outside else
+         "--max-outside-diameter",
          lambda row: outside is None or row.values["outside_diameter"] <= outside
          + SHAFT_TOLERANCE),
         (f"with a width of at most {_shown(width)}" if width else "",
+         f"{prefix}width" if width == given_width else "--max-width",
          lambda row: width is None or row.values["width"] <= width + SHAFT_TOLERANCE),
     ]
     rows = catalogue.rows
     said = []
-    for words, keep in steps:
+    for words, source, keep in steps:
         rows = [row for row in rows if keep(row)]
         if words:
             said.append(words)
         if not rows:
-            raise SpecError(f"no bearing of the catalogue {catalogue.path} fits "
-                            f"{position or 'the bearing'}: none {said[-1]}"
-                            + (f" among those {', '.join(said[:-1])}" if len(said) > 1 else ""),
-                            source=document.source)
+            message = (f"no bearing of the catalogue {catalogue.path} fits "
+                       f"{position or 'the bearing'}: none {said[-1]}"
+                       + (f" among those {', '.join(said[:-1])}" if len(said) > 1 else ""))
+            if source.startswith("--") or not source:
+                raise SpecError(f"{source}: {message}" if source else message,
+                                source=document.source)
+            raise document.error(message, field=source)
     return rows
 
 
