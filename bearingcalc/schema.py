@@ -24,7 +24,17 @@ def spec_schema(kind: str | None = None) -> dict[str, Any]:
     else:
         models = tuple(k.model for k in KINDS.values())
         union = Annotated[Union[models], Field(discriminator="kind")]  # type: ignore[valid-type]  # noqa: UP007
-        schema = TypeAdapter(union).json_schema()
+        generated = TypeAdapter(union).json_schema()
+        # Plain JSON Schema picks the branch: a validator that ignores OpenAPI's
+        # discriminator would otherwise report a spec's errors against every branch.
+        chosen = generated["discriminator"]["mapping"]
+        schema = {"type": "object", "required": ["kind"],
+                  "properties": {"kind": {"enum": list(chosen)}},
+                  "allOf": [{"if": {"properties": {"kind": {"const": name}},
+                                    "required": ["kind"]},
+                             "then": {"$ref": reference}}
+                            for name, reference in chosen.items()],
+                  "$defs": generated["$defs"]}
         title = "bearingcalc spec"
     return {"$schema": DRAFT, "title": title,
             "description": "A bearingcalc design spec; see 'bearingcalc new --list'.", **schema}

@@ -274,7 +274,8 @@ def test_schema_command_prints_draft_2020_12(cli):
     kind_schema = json.loads(cli("schema", "--kind", "bevel-gears").out)
     assert kind_schema["properties"]["kind"]["const"] == "bevel-gears"
     length = kind_schema["properties"]["module"]["anyOf"][0]
-    assert length["x-dimension"] == "length" and length["examples"] == ["12.7 mm"]
+    assert length["$comment"] == "dimension: length; SI unit: m"
+    assert length["examples"] == ["12.7 mm"]
     assert cli("schema", "--kind", "nope").code == 2
 
 
@@ -333,3 +334,20 @@ def test_a_zero_limit_ranks_as_a_whole_limit_broken(cli, tmp_path):
     (verdict,) = record["verdicts"]
     assert verdict["limit"] == 0.0 and verdict["value"] > 0
     assert verdict["margin"] == -1.0 and record["status"] == "fail"
+
+
+def test_a_validator_reports_the_error_of_the_branch_the_spec_chose(schema_file, tmp_path):
+    """The choice of kind is plain JSON Schema (if kind then its branch), so a broken
+    rolling-bearing spec gets its own error, not every branch's ('additional properties
+    are not allowed' against the thrust bearing)."""
+    path = tmp_path / "bad.yaml"
+    path.write_text((ROOT / "specs" / "rolling-bearing.yaml").read_text()
+                    + "dynamic_load_ratin: 3 kN\n")
+    run = check_jsonschema(schema_file, path)
+    assert run.returncode == 1
+    assert "dynamic_load_ratin" in run.stdout + run.stderr
+    assert "ThrustBearing" not in run.stdout + run.stderr
+    assert "ball_radius" not in run.stdout + run.stderr
+    schema = json.loads(schema_file.read_text())
+    text = json.dumps(schema)
+    assert "discriminator" not in text and '"x-' not in text  # keywords strict validators refuse

@@ -279,8 +279,10 @@ def quantity(dimension: Dimension, sign: str | None = None,
         "required": ["nominal"],
         "additionalProperties": False,
     }
-    schema = {"anyOf": [text_form, mapping_form], "x-dimension": dimension.name,
-              "x-si-unit": dimension.si_unit, "examples": [dimension.example]}
+    # Annotations in standard keywords only: strict validators refuse unknown ones.
+    schema = {"anyOf": [text_form, mapping_form],
+              "$comment": f"dimension: {dimension.name}; SI unit: {dimension.si_unit}",
+              "examples": [dimension.example]}
     if dimension is DIMENSIONLESS:
         number = {"type": "number"}
         if bounds is not None:
