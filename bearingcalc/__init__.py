@@ -20,11 +20,26 @@ from bearingcalc.core.thrust_bearing import (
 
 __version__ = "0.1.0"
 
+#: The Python API (:mod:`bearingcalc.api`), loaded on first use so that the command
+#: line's start pays nothing for it.
+_API = ("solve", "Result", "SpecError")
+
+
+def __getattr__(name: str) -> object:
+    if name in _API:
+        from bearingcalc import api
+
+        return getattr(api, name)
+    raise AttributeError(f"module 'bearingcalc' has no attribute {name!r}")
+
 __all__ = [
+    "Result",
+    "SpecError",
     "pitch_radius_window",
     "pure_rolling_ball_radius",
     "pure_rolling_contact_angle",
     "pure_rolling_pitch_radius",
+    "solve",
     "solve_thrust_bearing",
     "spin_to_roll_ratio",
 ]

@@ -323,8 +323,12 @@ def _pint_unit(unit: str) -> tuple[str, float]:
 
 
 @functools.lru_cache(maxsize=1)
-def _registry() -> Any:
+def unit_registry() -> Any:
+    """The one pint registry of the process (:func:`make_registry`), made on first use."""
     return make_registry()
+
+
+_registry = unit_registry
 
 
 def make_registry() -> Any:

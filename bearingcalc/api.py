@@ -1,0 +1,266 @@
+"""bearingcalc from Python: the commands' own code path, returning objects.
+
+``solve`` takes a spec file's path, a spec's YAML text or a mapping, and returns one
+:class:`Result` per document; ``tolerance`` and ``sweep`` return what their commands
+print, as objects. Bad input raises :class:`~bearingcalc.errors.SpecError`, whose text
+is the one line the command line prints. Units are SI throughout, as in JSON.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from html import escape
+from pathlib import Path
+from typing import Any
+
+from bearingcalc.errors import SpecError
+from bearingcalc.evaluation import Evaluation, evaluate_document, evaluate_documents, parse_document
+from bearingcalc.models.yaml_loader import Document, load_documents
+
+SpecInput = str | os.PathLike[str] | Mapping[str, Any]
+
+
+def _documents(spec: SpecInput) -> list[Document]:
+    """The documents of a path, a YAML text (anything with a line break or a colon that
+    names no file) or a mapping."""
+    if isinstance(spec, Mapping):
+        import yaml
+
+        return load_documents("<mapping>", yaml.safe_dump(dict(spec), sort_keys=False,
+                                                          allow_unicode=True))
+    if isinstance(spec, os.PathLike) or ("\n" not in spec and Path(spec).exists()):
+        from bearingcalc.evaluation import load_selected
+
+        return load_selected(spec)
+    if "\n" in spec or ":" in spec:
+        return load_documents("<string>", spec)
+    raise SpecError("no such file, and not a spec's YAML text", source=str(spec))
+
+
+@dataclass(frozen=True)
+class Result:
+    """One solved spec: SI results, their units, the verdicts and the warnings, as
+    ``bearingcalc solve --format json`` gives them."""
+
+    evaluation: Evaluation
+
+    @property
+    def kind(self) -> str:
+        return self.evaluation.kind
+
+    @property
+    def name(self) -> str:
+        return self.evaluation.name
+
+    @property
+    def results(self) -> dict[str, float | None]:
+        return self.evaluation.results
+
+    @property
+    def units(self) -> dict[str, str]:
+        return self.evaluation.units
+
+    @property
+    def within_limits(self) -> bool:
+        return self.evaluation.within_limits
+
+    @property
+    def verdicts(self) -> list[Any]:
+        return self.evaluation.verdicts
+
+    @property
+    def warnings(self) -> list[str]:
+        return self.evaluation.warnings
+
+    @property
+    def catalogue_sources(self) -> dict[str, str]:
+        return self.evaluation.sources
+
+    def quantity(self, key: str) -> Any:
+        """The result ``key`` as a pint quantity in its SI unit (an unbounded result is
+        infinite)."""
+        value = self.results[key]
+        unit = self.units[key]
+        return _registry().Quantity(float("inf") if value is None else value,
+                                    _PINT_NAMES.get(unit, unit))
+
+    def to_frame(self) -> Any:
+        """The results as a pandas DataFrame (key, value in SI, unit, meaning); pandas is
+        an optional extra (``pip install pandas``)."""
+        try:
+            import pandas as pd
+        except ImportError:
+            raise ImportError("to_frame needs pandas: pip install pandas") from None
+        from bearingcalc.kinds import KINDS
+
+        meanings = KINDS[self.kind].results
+        return pd.DataFrame(
+            [(key, value, self.units[key], meanings[key][1])
+             for key, value in self.results.items()],
+            columns=["result", "value", "unit", "meaning"]).set_index("result")
+
+    def _repr_html_(self) -> str:
+        from bearingcalc.kinds import KINDS
+        from bearingcalc.units import to_display
+
+        kind = KINDS[self.kind]
+        rows = []
+        for key, value in self.results.items():
+            shown, unit = ("unbounded", "") if value is None else to_display(
+                value, self.units[key])
+            number = shown if isinstance(shown, str) else f"{shown:.7g}"
+            rows.append(f"<tr><td>{escape(key)}</td><td style='text-align:right'>{number}"
+                        f"</td><td>{escape(unit)}</td><td>{escape(kind.results[key][1])}"
+                        "</td></tr>")
+        verdict = "PASS" if self.within_limits else "FAIL"
+        return (f"<p><b>{escape(self.name)}</b> ({escape(self.kind)}): {verdict}</p>"
+                "<table><tr><th>result</th><th>value</th><th>unit</th><th>meaning</th>"
+                f"</tr>{''.join(rows)}</table>")
+
+    def __repr__(self) -> str:
+        verdict = "within limits" if self.within_limits else "outside limits"
+        return f"<Result {self.name!r} ({self.kind}): {len(self.results)} results, {verdict}>"
+
+
+#: The SI units results name that pint spells otherwise.
+_PINT_NAMES = {"1": "dimensionless", "N·m": "N*m", "m²/s": "m**2/s", "kg/m³": "kg/m**3",
+               "rad/s²": "rad/s**2", "m/s²": "m/s**2"}
+
+
+def _registry() -> Any:
+    from bearingcalc.units import unit_registry
+
+    return unit_registry()
+
+
+def solve(spec: SpecInput) -> list[Result]:
+    """Every document of ``spec`` solved: a path, a YAML text or a mapping.
+
+    >>> (result,) = solve("kind: thrust-bearing\\nball_diameter: 12.7 mm\\n"
+    ...                   "contact_angle: 30 deg\\nshaft_speed: 1500 rpm\\n")
+    >>> round(result.results["pitch_radius"] * 1e3, 3)  # mm
+    26.023
+    >>> result.units["pitch_radius"]
+    'm'
+    """
+    outcomes = evaluate_documents(_documents(spec))
+    for outcome in outcomes:
+        if isinstance(outcome, SpecError):
+            raise outcome
+    return [Result(outcome) for outcome in outcomes]  # type: ignore[arg-type]
+
+
+@dataclass(frozen=True)
+class Study:
+    """A tolerance study: the record ``bearingcalc tolerance --format json`` prints."""
+
+    report: Any
+
+    @property
+    def record(self) -> dict[str, Any]:
+        return self.report.record
+
+    @property
+    def within_limits(self) -> bool | None:
+        return self.report.within_limits
+
+    def plot(self, path: str | Path | None = None, key: str | None = None) -> Any:
+        """The Monte Carlo histogram of ``key`` (default: the governing result), written
+        to ``path`` (.png or .svg), or returned as SVG for a notebook."""
+        from bearingcalc.plots import tolerance_histogram
+
+        chosen = key or self.report.governing[0]
+        return _drawn(lambda target, fmt: tolerance_histogram(self.report, chosen, target,
+                                                              fmt=fmt), path)
+
+
+def tolerance(spec: SpecInput, *, methods: Sequence[str] = ("worst-case", "rss",
+                                                              "monte-carlo"),
+              samples: int = 100_000, seed: int = 0, sampler: str = "sobol",
+              results: Sequence[str] = ()) -> Study:
+    """``bearingcalc tolerance`` of the one spec in ``spec``."""
+    from bearingcalc.tolerance import StudyError, check_band_ends, run_study
+
+    document = _one(spec)
+    kind, parsed = parse_document(document)
+    evaluate_document(document)
+    check_band_ends(document, parsed)
+    try:
+        return Study(run_study(kind, parsed, document.source, methods=list(methods),
+                               samples=samples, seed=seed, sampler=sampler,
+                               results=results, threads=os.cpu_count() or 1))
+    except StudyError as error:
+        raise SpecError(str(error), source=document.source) from None
+
+
+@dataclass(frozen=True)
+class Sweep:
+    """A sweep: the points ``bearingcalc sweep`` prints (``.inputs``, ``.results`` in
+    SI, NaN where a design is impossible, ``.status``)."""
+
+    solved: Any
+
+    @property
+    def inputs(self) -> dict[str, Any]:
+        return self.solved.inputs
+
+    @property
+    def results(self) -> dict[str, Any]:
+        return self.solved.results
+
+    @property
+    def status(self) -> Any:
+        return self.solved.status
+
+    def plot(self, path: str | Path | None = None, results: Sequence[str] = ()) -> Any:
+        """The results against the swept input (contours over a grid), written to
+        ``path`` (.png or .svg), or returned as SVG for a notebook."""
+        from bearingcalc.plots import sweep_plot
+        from bearingcalc.sweep import shown_results
+
+        keys = shown_results(self.solved, list(results) or None)
+        return _drawn(lambda target, fmt: sweep_plot(self.solved, keys, target, fmt=fmt),
+                      path)
+
+
+def sweep(spec: SpecInput, vary: Mapping[str, str]) -> Sweep:
+    """``bearingcalc sweep`` of the one spec in ``spec``: ``vary`` maps a field to its
+    ``START:STOP:N`` (``{"contact_angle": "5deg:40deg:36"}``); one for a line, two for a
+    grid."""
+    from bearingcalc.sweep import sweep_spec
+
+    document = _one(spec)
+    kind, parsed = parse_document(document)
+    return Sweep(sweep_spec(kind, parsed, document,
+                            [f"{name}={span}" for name, span in vary.items()]))
+
+
+def _one(spec: SpecInput) -> Document:
+    documents = _documents(spec)
+    if len(documents) > 1:
+        raise SpecError(f"{len(documents)} specs: a study takes one", source=documents[0].source)
+    return documents[0]
+
+
+class _Svg:
+    """A drawing a notebook shows."""
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+
+    def _repr_svg_(self) -> str:
+        return self.text
+
+
+def _drawn(draw: Any, path: str | Path | None) -> Any:
+    if path is not None:
+        target = Path(path)
+        with target.open("wb") as stream:
+            draw(stream, target.suffix[1:].lower() or "png")
+        return target
+    buffer = io.BytesIO()
+    draw(buffer, "svg")
+    return _Svg(buffer.getvalue().decode("utf-8"))
