@@ -66,8 +66,9 @@ class Evaluation:
             if value < 0 and key not in named]
 
 
-def parse_document(document: Document) -> tuple[Kind, Spec]:
-    """Validate one document against the model of its ``kind``."""
+def parse_document(document: Document, *, rules: bool = True) -> tuple[Kind, Spec]:
+    """Validate one document against the model of its ``kind`` (its fields only, without
+    the cross-field rules, where ``rules`` is False)."""
     data = document.data
     if not isinstance(data, dict):
         got = "nothing" if data is None else f"a {type(data).__name__}"
@@ -82,7 +83,7 @@ def parse_document(document: Document) -> tuple[Kind, Spec]:
                                           lambda message, field: document.error(message,
                                                                                 field=field))
     try:
-        spec = kind.model.model_validate(data)
+        spec = kind.model.model_validate(data, context=None if rules else {"rules": False})
     except ValidationError as exc:
         errors = [_one_problem(document, kind.model, problem)
                   for problem in exc.errors(include_url=False)]

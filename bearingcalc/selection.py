@@ -6,7 +6,7 @@ limits; its ``bore_diameter`` is the shaft and its ``outside_diameter`` and ``wi
 where given, the envelope. A ``bevel-drive`` selects one bearing position at a time with
 the others as the spec gives them: the one position without ratings or a designation,
 or, where every position is given, each in turn. The rows of one type are solved in one
-vectorised call (:func:`bearingcalc.variation.evaluate_with`), as a sweep solves its
+vectorised call per form (:func:`bearingcalc.variation.evaluate_with`), as a sweep solves its
 points; the rows a report lists are then read one by one as ``solve`` would read them,
 so that a rule of the spec (not checked on arrays) refuses any it must.
 """
@@ -25,27 +25,23 @@ import numpy as np
 
 from bearingcalc.catalogue.catalogue import Catalogue, CatalogueRow, load_catalogue
 from bearingcalc.catalogue.fill import CATALOGUE_VARIABLE, default_catalogue, row_fields
-from bearingcalc.catalogue.reader import ROW_TYPES
+from bearingcalc.envelope import Envelope, bearing_at, fitting_rows
 from bearingcalc.errors import SpecError
 from bearingcalc.evaluation import load_selected, parse_document
 from bearingcalc.kinds import KINDS, Kind, unknown_kind
-from bearingcalc.models.field_path import FieldPath
 from bearingcalc.models.yaml_loader import Document
-from bearingcalc.units import LENGTH, UnitError, parse_quantity, to_display
+from bearingcalc.reports.formatting import verdict_line
 from bearingcalc.variation import evaluate_with
-from bearingcalc.verdicts import Verdict, judge
-from bearingcalc.wording import did_you_mean
+from bearingcalc.verdicts import PAIR, Verdict, judge
 
-#: Bearing types a drive's positions may not take (the gear forces load them radially).
-THRUST_TYPES = ("thrust-ball", "thrust-cylindrical-roller", "thrust-spherical-roller",
-                "thrust-tapered-roller")
 #: A bearing's fields a catalogue row stands for, dropped from the spec before a row
 #: fills them (the spec's shaft and envelope are read first).
+#: Of those, the ones that bound the choice (the shaft, the envelope, the type).
+ENVELOPE = ("designation", "maker", "type", "bore_diameter", "outside_diameter", "width")
 ROW_OWNED = ("designation", "maker", "type", "dynamic_load_rating", "static_load_rating",
              "fatigue_load_limit", "static_factor", "contact_angle", "load_factors",
              "bore_diameter", "outside_diameter", "width", "ball_count", "ball_diameter",
              "roller_count", "roller_diameter", "roller_length", "pitch_diameter")
-SHAFT_TOLERANCE = 1e-7  # [m]
 #: Rows of one type read as a whole spec before the type is taken as refused by the
 #: spec's rules (rows of a type differ in their numbers only; the listed rows are read
 #: again one by one).
@@ -61,6 +57,8 @@ class Candidate:
     verdicts: list[Verdict] = field(default_factory=list)
     #: why the design is impossible or the spec refuses it, where it is or does
     problem: str | None = None
+    #: the spec's refusal of this row, as read whole
+    error: SpecError | None = None
 
     @property
     def size(self) -> tuple[float, float, float, float, str, str]:
@@ -87,6 +85,9 @@ class PositionChoice:
     qualifying: list[Candidate]    # smallest first, at most ``top``
     failing: list[Candidate]       # the nearest to passing first, at most ``top``
     qualifying_count: int
+    #: what the reader should know: spec values select leaves out, a gear pair that
+    #: misses its own limits whatever the bearing
+    notes: list[str] = field(default_factory=list)
 
     @property
     def label(self) -> str:
@@ -105,38 +106,6 @@ class Selection:
     def found(self) -> bool:
         """A bearing qualifies in every position."""
         return all(choice.qualifying for choice in self.choices)
-
-
-@dataclass(frozen=True)
-class Envelope:
-    """What the caller allows: types, series, and the largest outside diameter and
-    width [m] (None: the spec's, or no bound)."""
-
-    types: tuple[str, ...] = ()
-    series: tuple[str, ...] = ()
-    max_outside_diameter: float | None = None
-    max_width: float | None = None
-
-
-def envelope_from_options(types: Sequence[str], series: Sequence[str],
-                          max_outside_diameter: str | None, max_width: str | None
-                          ) -> Envelope:
-    """The envelope of ``select``'s options; ValueError naming the option at fault."""
-    for name in types:
-        if name not in ROW_TYPES:
-            raise ValueError(f"--type {name!r}: not a bearing type{did_you_mean(name, ROW_TYPES)};"
-                             f" one of {', '.join(ROW_TYPES)}")
-    bounds = []
-    for option, text in (("--max-outside-diameter", max_outside_diameter),
-                         ("--max-width", max_width)):
-        try:
-            value = None if text is None else parse_quantity(text, LENGTH)
-        except UnitError as error:
-            raise ValueError(f"{option}: {error}") from None
-        if value is not None and not value > 0:
-            raise ValueError(f"{option}: must be greater than zero, like '62 mm'")
-        bounds.append(value)
-    return Envelope(tuple(types), tuple(s.strip() for s in series), bounds[0], bounds[1])
 
 
 def select_spec(path: str | Path, envelope: Envelope, top: int = 5) -> Selection:
@@ -202,11 +171,6 @@ def _positions(document: Document, places: Sequence[str]) -> list[str]:
     return found
 
 
-def _bearing(data: dict[str, Any], position: str) -> dict[str, Any]:
-    found = FieldPath.parse(position).get(data) if position else data
-    return found if isinstance(found, dict) else {}
-
-
 def _open_positions(document: Document, positions: list[str]) -> list[str]:
     """The positions to select: the one without ratings or a designation, or every one
     where all are given."""
@@ -214,7 +178,7 @@ def _open_positions(document: Document, positions: list[str]) -> list[str]:
         return positions
     open_ = [p for p in positions if not {"designation", "dynamic_load_rating",
                                           "ball_count", "roller_count"}
-             & set(_bearing(document.data, p))]
+             & set(bearing_at(document.data, p))]
     if len(open_) > 1:
         raise document.error(f"select chooses one position at a time, the others as given: "
                              f"{', '.join(open_)} give neither ratings nor a designation; "
@@ -222,127 +186,56 @@ def _open_positions(document: Document, positions: list[str]) -> list[str]:
     return open_ or positions
 
 
-def _length(document: Document, bearing: dict[str, Any], position: str, name: str
-            ) -> float | None:
-    text = bearing.get(name)
-    if text is None:
-        return None
-    where = f"{position}.{name}" if position else name
-    try:
-        value = parse_quantity(text, LENGTH)
-    except UnitError as error:
-        raise document.error(str(error), field=where) from None
-    if not value > 0:
-        raise document.error("must be greater than zero", field=where)
-    return value
-
-
-def _shown(value: float) -> str:
-    number, unit = to_display(value, "m")
-    return f"{number:g} {unit}"
-
-
-def _fitting(document: Document, catalogue: Catalogue, envelope: Envelope, position: str,
-             kind: Kind) -> list[CatalogueRow]:
-    """The rows that fit the position's shaft and envelope; a SpecError naming the
-    limit that excluded the last of them."""
-    bearing = _bearing(document.data, position)
-    prefix = f"{position}." if position else ""
-    bore = _length(document, bearing, position, "bore_diameter")
-    if bore is None and bearing.get("designation") is not None:  # the given bearing's shaft
-        maker = bearing.get("maker")
-        try:
-            bore = catalogue.find(bearing["designation"], maker if isinstance(maker, str)
-                                  else None).values["bore_diameter"]
-        except LookupError as problem:
-            raise document.error(str(problem), field=f"{prefix}designation") from None
-    if bore is None:
-        raise document.error("select needs the shaft: give the bearing's bore_diameter, "
-                             "like 25 mm", field=f"{prefix}bore_diameter",
-                             key_path=FieldPath.parse(position).parts if position else ())
-    given_outside = _length(document, bearing, position, "outside_diameter")
-    given_width = _length(document, bearing, position, "width")
-    outside = _smaller(given_outside, envelope.max_outside_diameter)
-    width = _smaller(given_width, envelope.max_width)
-    given_type = bearing.get("type")
-    types = envelope.types or ((given_type,) if isinstance(given_type, str) else ())
-    # (words, the spec's field or the option that set the bound, which rows it keeps)
-    steps: list[tuple[str, str, Any]] = [
-        (f"of the types {', '.join(types)}" if types else "",
-         "--type" if envelope.types else f"{prefix}type",
-         lambda row: not types or row.type in types),
-        ("that a drive's shaft can take (no thrust bearings)" if position else "", "",
-         lambda row: not position or row.type not in THRUST_TYPES),
-        (f"of the series {', '.join(envelope.series)}" if envelope.series else "",
-         "--series", lambda row: not envelope.series or _series(row) in envelope.series),
-        (f"with the bore {_shown(bore)}",
-         f"{prefix}bore_diameter" if "bore_diameter" in bearing else f"{prefix}designation",
-         lambda row: abs(row.values["bore_diameter"] - bore) <= SHAFT_TOLERANCE),
-        (f"with an outside diameter of at most {_shown(outside)}" if outside else "",
-         f"{prefix}outside_diameter" if outside == given_outside else
-         "--max-outside-diameter",
-         lambda row: outside is None or row.values["outside_diameter"] <= outside
-         + SHAFT_TOLERANCE),
-        (f"with a width of at most {_shown(width)}" if width else "",
-         f"{prefix}width" if width == given_width else "--max-width",
-         lambda row: width is None or row.values["width"] <= width + SHAFT_TOLERANCE),
-    ]
-    rows = catalogue.rows
-    said = []
-    for words, source, keep in steps:
-        rows = [row for row in rows if keep(row)]
-        if words:
-            said.append(words)
-        if not rows:
-            message = (f"no bearing of the catalogue {catalogue.path} fits "
-                       f"{position or 'the bearing'}: none {said[-1]}"
-                       + (f" among those {', '.join(said[:-1])}" if len(said) > 1 else ""))
-            if source.startswith("--") or not source:
-                raise SpecError(f"{source}: {message}" if source else message,
-                                source=document.source)
-            raise document.error(message, field=source)
-    return rows
-
-
-def _smaller(first: float | None, second: float | None) -> float | None:
-    given = [value for value in (first, second) if value is not None]
-    return min(given) if given else None
-
-
-def _series(row: CatalogueRow) -> str | None:
-    """The series of a row as its basic designation begins (``62``, ``NU22``, ``302``)."""
-    return None if row.parsed is None else row.parsed.iso_key[:-2]
-
-
 def _choose(kind: Kind, document: Document, catalogue: Catalogue, envelope: Envelope,
             position: str, top: int) -> PositionChoice:
-    rows = _fitting(document, catalogue, envelope, position, kind)
+    rows = fitting_rows(document, catalogue, envelope, position)
     base = copy.deepcopy(document.data)
-    bearing = _bearing(base, position)
+    bearing = bearing_at(base, position)
     arrangement = bearing.get("arrangement", "single")
     arrangement = arrangement if isinstance(arrangement, str) else "single"
     rows_count = bearing.get("rows") if isinstance(bearing.get("rows"), int) else None
+    notes = []
+    dropped = [name for name in ROW_OWNED if name in bearing and name not in ENVELOPE]
+    if dropped:
+        notes.append(f"{position or 'the spec'}'s {', '.join(dropped)} "
+                     "left out: each bearing's are its catalogue row's")
     for name in ROW_OWNED:
         bearing.pop(name, None)
     if "rows" in bearing and rows_count is None:
         bearing.pop("rows")
     base["catalogue"] = str(Path(catalogue.path).resolve())
+    # The spec's own fields, read before any row is judged: a bad spec is refused, not
+    # reported as every bearing failing.
+    parse_document(_with_row(document, base, position, rows[0]), rules=False)
     groups: dict[tuple[Any, ...], list[CatalogueRow]] = {}
     fields_of: dict[int, dict[str, tuple[str, float]]] = {}
     for row in rows:
         fields = row_fields(row, arrangement, rows_count)
         fields_of[id(row)] = fields
-        groups.setdefault((row.type, tuple(sorted(fields))), []).append(row)
+        # The form (NU, NJ, ...) groups apart: a rule of the spec may judge it.
+        form = row.parsed.basic.rstrip("0123456789") if row.parsed else row.designation
+        groups.setdefault((row.type, form, tuple(sorted(fields))), []).append(row)
     candidates: list[Candidate] = []
-    for (_, names), members in groups.items():
-        candidates += _solve_group(kind, document, base, position, members, names, fields_of)
-    return _ranked(kind, document, base, position, candidates, top, len(rows))
+    judged = _judged_margins(kind, position)
+    for (_, _, names), members in groups.items():
+        candidates += _solve_group(kind, document, base, position, members, names,
+                                   fields_of, judged, notes)
+    errors = {candidate.problem for candidate in candidates}
+    if candidates[0].error is not None and len(errors) == 1:
+        raise candidates[0].error  # the spec itself is at fault, whichever the bearing
+    return _ranked(document, base, position, candidates, top, len(rows), notes)
+
+
+def _judged_margins(kind: Kind, position: str) -> tuple[str, ...]:
+    """The margins a position's bearing is chosen by: in a drive, not the gear pair's,
+    which no bearing changes."""
+    return tuple(key for key in kind.margins if not (position and key in PAIR))
 
 
 def _with_row(document: Document, base: dict[str, Any], position: str, row: CatalogueRow
               ) -> Document:
     data = copy.deepcopy(base)
-    bearing = _bearing(data, position)
+    bearing = bearing_at(data, position)
     bearing["designation"] = row.designation
     bearing["maker"] = row.maker
     return dataclasses.replace(document, data=data)
@@ -350,9 +243,9 @@ def _with_row(document: Document, base: dict[str, Any], position: str, row: Cata
 
 def _solve_group(kind: Kind, document: Document, base: dict[str, Any], position: str,
                  members: list[CatalogueRow], names: tuple[str, ...],
-                 fields_of: dict[int, dict[str, tuple[str, float]]]
-                 ) -> list[Candidate]:
-    """The rows of one type and one set of fields, solved in one call on a spec read
+                 fields_of: dict[int, dict[str, tuple[str, float]]],
+                 judged: tuple[str, ...], notes: list[str]) -> list[Candidate]:
+    """The rows of one type, form and set of fields, solved in one call on a spec read
     with the first of them that the spec's rules take."""
     template = None
     refused: list[Candidate] = []
@@ -361,10 +254,10 @@ def _solve_group(kind: Kind, document: Document, base: dict[str, Any], position:
             _, template = parse_document(_with_row(document, base, position, row))
             break
         except SpecError as error:
-            refused.append(Candidate(row, False, problem=_reason(error)))
-    if template is None:  # the spec's rules refuse the type itself, not a row's numbers
-        reason = refused[0].problem
-        return refused + [Candidate(row, False, problem=reason)
+            refused.append(Candidate(row, False, problem=_reason(error), error=error))
+    if template is None:  # the spec's rules refuse the form itself, not a row's numbers
+        first = refused[0]
+        return refused + [Candidate(row, False, problem=first.problem, error=first.error)
                           for row in members[len(refused):]]
     rest = members[len(refused):]
     prefix = f"{position}." if position else ""
@@ -374,11 +267,15 @@ def _solve_group(kind: Kind, document: Document, base: dict[str, Any], position:
     count = len(rest)
     results = {key: np.broadcast_to(value, (count,)) for key, value in results.items()}
     status = np.broadcast_to(status, (count,))
-    passed = kind.within_limits(results, status).tolist()
+    margin_keys = [key for key in judged if key in results]
+    ok = status == 0
+    for key in margin_keys:
+        ok = ok & (results[key] >= 0)
+    passed = ok.tolist()
     codes = status.tolist()
     keys = list(results)
-    margin_keys = [key for key in kind.margins if key in results]
     candidates = refused
+    _note_the_pair(kind, results, status, judged, notes)
     for row, code, ok, values in zip(rest, codes, passed, zip(
             *(results[key].tolist() for key in keys), strict=True), strict=True):
         if code:
@@ -392,12 +289,30 @@ def _solve_group(kind: Kind, document: Document, base: dict[str, Any], position:
     return candidates
 
 
+def _note_the_pair(kind: Kind, results: dict[str, Any], status: Any,
+                   judged: tuple[str, ...], notes: list[str]) -> None:
+    """A drive's gear pair that misses its own limits misses them whatever the bearing:
+    said once."""
+    feasible = np.flatnonzero(status == 0)
+    if feasible.size == 0 or any(note.startswith("the gear pair") for note in notes):
+        return
+    i = int(feasible[0])
+    scalar = {key: float(value[i]) for key, value in results.items()}
+    margins = {key: scalar[key] for key in kind.margins
+               if key in scalar and key not in judged}
+    missed = [verdict_line(v) for v in judge(kind, scalar, margins) if not v.passed]
+    if missed:
+        notes.append(f"the gear pair misses its own limits, whatever the bearing: "
+                     f"{'; '.join(missed)}")
+
+
 def _reason(error: SpecError) -> str:
     return f"{error.field}: {error.message}" if error.field else error.message
 
 
-def _ranked(kind: Kind, document: Document, base: dict[str, Any], position: str,
-            candidates: list[Candidate], top: int, considered: int) -> PositionChoice:
+def _ranked(document: Document, base: dict[str, Any], position: str,
+            candidates: list[Candidate], top: int, considered: int,
+            notes: list[str]) -> PositionChoice:
     """The ``top`` smallest qualifying rows and the ``top`` failing rows nearest to
     passing, each listed row read again whole so that the spec's rules judge it."""
     qualifying = sorted((c for c in candidates if c.qualifies), key=lambda c: c.size)
@@ -410,8 +325,10 @@ def _ranked(kind: Kind, document: Document, base: dict[str, Any], position: str,
         try:
             parse_document(_with_row(document, base, position, candidate.row))
         except SpecError as error:
-            failing.insert(0, Candidate(candidate.row, False, problem=_reason(error)))
+            failing.insert(0, Candidate(candidate.row, False, problem=_reason(error),
+                                        error=error))
             refused += 1
             continue
         listed.append(candidate)
-    return PositionChoice(position, considered, listed, failing[:top], len(qualifying) - refused)
+    return PositionChoice(position, considered, listed, failing[:top],
+                          len(qualifying) - refused, notes)

@@ -257,3 +257,72 @@ def test_the_reader_holds_its_limits(cli, tmp_path, monkeypatch, limit, value, w
                                            "maker: SKF\nstatic_factor: 14\n"), "a.yaml")
     run = cli("solve", path)
     assert run.code == 2 and run.err.count("\n") == 1 and words in run.err, run.err
+
+
+FACTOR_HEADER = ("designation,maker,type,bore_diameter [mm],outside_diameter [mm],width [mm],"
+                 "dynamic_load_rating [kN],static_load_rating [kN],e,y1,y2,y0,source\n")
+
+
+def _solve_row(cli, tmp_path, row: str) -> dict:
+    """BEARING (Fr 3 kN, Fa 1 kN) with its bearing the one made-up catalogue row."""
+    (tmp_path / "cat.csv").write_text(FACTOR_HEADER + row + "\n")
+    path = _write(tmp_path, BEARING.format(
+        head=f"catalogue: cat.csv\ndesignation: {row.partition(',')[0]}\n"), "a.yaml")
+    run = cli("solve", path, "--format", "json")
+    assert run.code in (0, 1), run.err
+    return json.loads(run.out)
+
+
+def test_a_self_aligning_ball_row_gives_its_factors(cli, tmp_path):
+    """1205 ETN9 (a made-up row): e 0.27, Y1 2.3, Y2 3.6, Y0 2.5 fill the double-row
+    factors a self-aligning ball bearing under axial load needs: Fa/Fr = 1/3 > e gives
+    P = 0.65·Fr + Y2·Fa."""
+    record = _solve_row(cli, tmp_path, "1205 ETN9,X,self-aligning-ball,25,52,15,14.3,4,"
+                                       "0.27,2.3,3.6,2.5,made up")
+    assert (record["results"]["axial_factor"], record["results"]["radial_factor"]) == (
+        3.6, 0.65)
+    assert any("not in the table of ISO boundary dimensions" in w for w in record["warnings"])
+
+
+def test_a_row_with_y1_is_a_double_row_bearing(cli, tmp_path):
+    """A tapered row that gives y1 (made-up double-row bearing): rated as two rows, with
+    P = Fr + Y1·Fa at Fa/Fr = 1/3 below e (a single row would take P = Fr)."""
+    record = _solve_row(cli, tmp_path, "X352205,X,tapered-roller,25,52,36,55,70,"
+                                       "0.37,1.8,2.7,1.8,made up")
+    assert (record["results"]["axial_factor"], record["results"]["radial_factor"]) == (
+        1.8, 1.0)
+
+
+def test_another_variant_of_the_designation_is_taken_with_a_note(cli, tmp_path):
+    path = _write(tmp_path, BEARING.format(head=f"catalogue: {EXAMPLE}\n"
+                                           "designation: 7205 AC\nmaker: SKF\n"), "a.yaml")
+    warnings = json.loads(cli("solve", path, "--format", "json").out)["warnings"]
+    assert any("7205 AC is taken as the catalogue's 7205 BEP" in w for w in warnings), warnings
+
+
+def test_a_catalogue_in_inches_agrees_with_iso(cli, tmp_path):
+    (tmp_path / "cat.csv").write_text(
+        "designation,maker,type,bore_diameter [in],outside_diameter [in],width [in],"
+        "dynamic_load_rating [kN],static_load_rating [kN],static_factor,source\n"
+        "6205,X,deep-groove,0.9843,2.0472,0.5906,14.8,7.8,14,made up\n")
+    path = _write(tmp_path, BEARING.format(head="catalogue: cat.csv\ndesignation: 6205\n"),
+                  "a.yaml")
+    assert cli("solve", path).code in (0, 1)
+
+
+@pytest.mark.parametrize(("head", "words"), [
+    ("designation: 51105\ntype: thrust\naxial_load: 2 kN\n", None),
+    ("designation: 6205\nmaker: SKF\ndynamic_load_rating: catalogues\n", "dynamic_load_rating"),
+    ("designation: 6205\nmaker: NSK\nfatigue_load_limit: catalogue ± 5 %\n",
+     "gives no fatigue_load_limit"),
+])
+def test_alias_word_and_missing_value(cli, tmp_path, head, words):
+    text = BEARING.format(head=f"catalogue: {EXAMPLE}\n" + head)
+    if "51105" in head:
+        text = text.replace("radial_load: 3 kN\naxial_load: 1 kN\n", "")
+    path = _write(tmp_path, text, "a.yaml")
+    run = cli("solve", path)
+    if words is None:
+        assert run.code in (0, 1), run.err
+    else:
+        assert run.code == 2 and words in run.err, run.err

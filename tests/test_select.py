@@ -197,3 +197,54 @@ def test_a_drive_with_every_bearing_given_selects_each_position_in_turn(cli, tmp
         chosen = "".join(lines)
         solved = cli("solve", _spec(tmp_path, chosen, "chosen.yaml"), "--format", "json")
         assert json.loads(solved.out)["within_limits"], (record["position"], best)
+
+
+CYLINDRICAL = ("designation,maker,type,bore_diameter [mm],outside_diameter [mm],width [mm],"
+               "dynamic_load_rating [kN],static_load_rating [kN],source\n"
+               "NU205 ECP,X,cylindrical-roller,25,52,15,28.6,27,made up\n"
+               "NU2205 ECP,X,cylindrical-roller,25,52,18,34.1,34,made up\n"
+               "NU305 ECP,X,cylindrical-roller,25,62,17,46.5,36.5,made up\n"
+               "NJ205 ECP,X,cylindrical-roller,25,52,15,28.6,27,made up\n"
+               "NUP2205 ECP,X,cylindrical-roller,25,52,18,34.1,34,made up\n")
+
+
+def test_an_nj_bearing_is_not_refused_for_the_nu_bearings_before_it(cli, tmp_path):
+    """The NU rule judges a row's form, so the NU rows are refused and the NJ and NUP
+    rows (ribs on both rings) are solved, and counted, as any others."""
+    (tmp_path / "cyl.csv").write_text(CYLINDRICAL)
+    text = SHAFT.format(catalogue="cyl.csv", life="2000 h")
+    run = cli("select", _spec(tmp_path, text), "--format", "json", "--top", "10")
+    assert run.code == 0, run.err
+    (record,) = [json.loads(line) for line in run.out.splitlines()]
+    assert [c["designation"] for c in record["qualifying"]] == ["NJ205 ECP", "NUP2205 ECP"]
+    assert record["qualifying_count"] == 2
+    assert all("an NU bearing" in c["problem"] for c in record["failing"])
+    series = cli("select", _spec(tmp_path, text), "--series", "NJ2", "--format", "json")
+    (record,) = [json.loads(line) for line in series.out.splitlines()]
+    assert [c["designation"] for c in record["qualifying"]] == ["NJ205 ECP"]
+
+
+@pytest.mark.parametrize(("change", "field"), [
+    (("contamination_factor: 0.5", "contamination_factor: 2"), "contamination_factor"),
+    (("limits: {", "limits: {min_static_safty: 3, "), "limits.min_static_safty"),
+])
+def test_a_bad_spec_is_refused_not_reported_as_every_bearing_failing(cli, tmp_path, change,
+                                                                      field):
+    text = SHAFT.format(catalogue=EXAMPLE, life="2000 h").replace(*change)
+    run = cli("select", _spec(tmp_path, text))
+    assert run.code == 2 and run.err.count("\n") == 1 and run.out == "", run.err
+    assert f": {field}: " in run.err, run.err
+
+
+def test_a_drive_whose_gear_misses_its_limits_still_chooses_bearings(cli, tmp_path):
+    drive = (ROOT / "specs" / "bevel-drive.yaml").read_text().replace(
+        "limits:\n", "limits:\n  min_bending_safety: 1.2\n")
+    old = drive[drive.index("  - {position: 90 mm"):drive.index("  - {position: 150 mm")]
+    opened = drive.replace(old, "  - {position: 90 mm, locating: true, bore_diameter: 25 mm}\n"
+                           ) + f"catalogue: {EXAMPLE}\n"
+    assert "min_bending_safety: 1.2" in opened
+    run = cli("select", _spec(tmp_path, opened, "drive.yaml"), "--format", "json")
+    (record,) = [json.loads(line) for line in run.out.splitlines()]
+    assert record["qualifying"], record
+    assert any(note.startswith("the gear pair misses its own limits") and "bending safety"
+               in note for note in record["notes"]), record["notes"]

@@ -18,8 +18,9 @@ from bearingcalc.catalogue.reader import RawCatalogue, read_csv
 from bearingcalc.errors import SpecError
 from bearingcalc.units import DIMENSIONLESS, MAX_MAGNITUDE, to_display, unit_scale
 
-#: How far a row's dimension may be from ISO's before it contradicts it. [m]
-DIMENSION_TOLERANCE = 1e-7
+#: How far a row's dimension may be from ISO's before it contradicts it: a hundredth of a
+#: millimetre, so that a catalogue in inches to four decimals (2.5 µm) agrees. [m]
+DIMENSION_TOLERANCE = 1e-5
 ISO_CHECKED = ("bore_diameter", "outside_diameter", "width")
 
 
@@ -203,7 +204,8 @@ def _numbers(raw: RawCatalogue) -> dict[str, NDArray]:
             values = written
         else:
             factor, divides = unit_scale(unit, column.dimension)  # type: ignore[arg-type]
-            values = written / factor if divides else written * factor
+            with np.errstate(over="ignore"):  # an overflow is refused below, in words
+                values = written / factor if divides else written * factor
         given = ~np.isnan(values)
         allowed = (values > 0) | ((values == 0) if name == "contact_angle" else False)
         bad = given & ~(allowed & (values <= MAX_MAGNITUDE))

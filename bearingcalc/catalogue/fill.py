@@ -20,24 +20,29 @@ from typing import Any
 
 from bearingcalc.catalogue.catalogue import Catalogue, CatalogueRow, load_catalogue
 from bearingcalc.catalogue.columns import COLUMNS
+from bearingcalc.core.roller_ratings import RADIAL_ROLLER_TYPES, THRUST_ROLLER_TYPES
 from bearingcalc.errors import SpecError
 from bearingcalc.number_grammar import UNSIGNED_DECIMAL
 from bearingcalc.units import DIMENSIONLESS, UnitError, parse_quantity
 
 #: The environment variable that names a default catalogue.
 CATALOGUE_VARIABLE = "BEARINGCALC_CATALOGUE"
-#: Roller types, whose catalogue e, Y and Y0 are their load factors (a ball bearing's
-#: come from ISO 281's and ISO 76's tables).
-ROLLER_TYPES = ("cylindrical-roller", "needle-roller", "tapered-roller", "spherical-roller",
-                "thrust-cylindrical-roller", "thrust-spherical-roller",
-                "thrust-tapered-roller")
-#: Roller types of two rows by their form (ISO 281 rates them as double row).
+#: Roller bearings.
+ROLLER_TYPES = RADIAL_ROLLER_TYPES + THRUST_ROLLER_TYPES
+#: Types whose catalogue e, Y and Y0 are their load factors: the roller bearings and the
+#: self-aligning ball bearing (the other ball bearings' come from ISO 281's and ISO 76's
+#: tables).
+FACTOR_TYPES = (*ROLLER_TYPES, "self-aligning-ball")
+#: Roller types of two rows by their form (ISO 281 rates them as double row); a row of
+#: another roller type that gives y1 (Y for Fa/Fr <= e) is of a double-row bearing too.
 DOUBLE_ROW_TYPES = ("spherical-roller",)
+#: Earlier names of types, as specs may still write them.
+TYPE_ALIASES = {"thrust": "thrust-ball"}
 #: Radial roller types whose contact angle follows from e = 1.5·tanα (ISO 281 Table 8).
 ANGLED_ROLLER_TYPES = ("tapered-roller", "spherical-roller")
 #: Load-factor columns -> the field of a bearing's ``load_factors``: single row, double.
 FACTOR_FIELDS = {"e": ("e", "e"), "y1": (None, "y1"), "y2": ("y", "y2"), "y0": ("y0", "y0")}
-_WORD = "catalogue"
+_WORD = re.compile(r"\s*catalogue\b", re.IGNORECASE)
 _PERCENT_TOLERANCE = re.compile(rf"^\s*(?:±|\+/-)\s*(?P<percent>{UNSIGNED_DECIMAL})\s*%\s*$")
 #: Columns that fill a bearing field of the same level: column -> field.
 _DIRECT = {name: column.field for name, column in COLUMNS.items()
@@ -97,13 +102,22 @@ def fill(data: dict[str, Any], places: tuple[str, ...], spec_path: str,
             catalogue = _catalogue(data, spec_path, error, f"{prefix}designation")
             use.notes += catalogue.warnings
         designation = bearing["designation"]
-        if isinstance(designation, bool) or not isinstance(designation, (str, int)):
+        if isinstance(designation, bool) or not isinstance(designation, (str, int)) or (
+                not str(designation).strip()):
             raise error("a designation is text, like '6205-2RS'", f"{prefix}designation")
         maker = bearing.get("maker")
+        if maker is not None and (not isinstance(maker, str) or not maker.strip()):
+            raise error("the maker is text, like maker: SKF", f"{prefix}maker")
         try:
-            row = catalogue.find(designation, maker if isinstance(maker, str) else None)
+            row = catalogue.find(designation, maker)
         except LookupError as problem:
             raise error(str(problem), f"{prefix}designation") from None
+        if "".join(row.designation.split()).casefold() != "".join(
+                str(designation).split()).casefold():
+            use.notes.append(f"{prefix}designation: {str(designation).strip()} is taken as the "
+                             f"catalogue's {row.designation} ({row.maker}), the same basic "
+                             "designation: suffixes do not look a bearing up, so check that "
+                             "it is the variant meant")
         _fill_bearing(bearing, row, prefix, use, error)
         use.rows[place] = row
     return data, use
@@ -154,17 +168,25 @@ def row_fields(row: CatalogueRow, arrangement: str = "single", rows: int | None 
     values = row.values
     fields = {_DIRECT[name]: (name, value) for name, value in values.items()
               if name in _DIRECT}
-    if row.type not in ROLLER_TYPES or "e" not in values:
+    if row.type not in FACTOR_TYPES or "e" not in values:
         return fields
     if "contact_angle" not in fields and row.type in ANGLED_ROLLER_TYPES:
         fields["contact_angle"] = ("e", math.atan(values["e"] / 1.5))
     if arrangement in PAIRS:
         return fields
-    double = (rows if rows is not None else 2 if row.type in DOUBLE_ROW_TYPES else 1) == 2
+    double = row.type == "self-aligning-ball" or (
+        rows if rows is not None else row_count(row)) == 2
     for column, targets in FACTOR_FIELDS.items():
         if column in values and targets[double] is not None:
             fields[f"load_factors.{targets[double]}"] = (column, values[column])
     return fields
+
+
+def row_count(row: CatalogueRow) -> int:
+    """The rows of rollers of a row's bearing: 2 for a spherical roller bearing, or where
+    the row gives y1 (a double row's Y for Fa/Fr <= e), else 1."""
+    double = row.type in DOUBLE_ROW_TYPES or (row.type in ROLLER_TYPES and "y1" in row.values)
+    return 2 if double else 1
 
 
 def written_fields(row: CatalogueRow, arrangement: str = "single", rows: int | None = None
@@ -180,11 +202,11 @@ def written_fields(row: CatalogueRow, arrangement: str = "single", rows: int | N
 def _fill_bearing(bearing: dict[str, Any], row: CatalogueRow, prefix: str, use: CatalogueUse,
                   error: Any) -> None:
     given_type = bearing.get("type")
-    if given_type is not None and given_type != row.type:
+    if given_type is not None and TYPE_ALIASES.get(given_type, given_type) != row.type:
         raise error(f"the catalogue's {row.label} is {row.type}, not {given_type}: leave type "
                     "out, or choose another designation", f"{prefix}type")
     bearing["type"] = row.type
-    if row.type in DOUBLE_ROW_TYPES and "rows" not in bearing:
+    if row_count(row) == 2 and "rows" not in bearing:
         bearing["rows"] = 2
     arrangement = bearing.get("arrangement", "single")
     fields = written_fields(
@@ -202,6 +224,10 @@ def _fill_bearing(bearing: dict[str, Any], row: CatalogueRow, prefix: str, use: 
         use.notes.append(f"{prefix or 'the bearing'}: a pair's load factors are ISO 281's "
                          f"for its contact angle, not {row.label}'s own e and Y (a single "
                          "bearing's)")
+    for name, value in bearing.items():
+        if isinstance(value, str) and _WORD.match(value):
+            raise error(f"the catalogue's {row.label} gives no {name}: write its value",
+                        f"{prefix}{name}")
 
 
 def _put(bearing: dict[str, Any], target: str, value: str | float, row: CatalogueRow,
@@ -210,8 +236,9 @@ def _put(bearing: dict[str, Any], target: str, value: str | float, row: Catalogu
     if given is None:
         bearing[target] = value
         return
-    if isinstance(given, str) and given.strip().casefold().startswith(_WORD):
-        bearing[target] = _with_tolerance(value, given.strip()[len(_WORD):])
+    word = _WORD.match(given) if isinstance(given, str) else None
+    if word is not None:
+        bearing[target] = _with_tolerance(value, given[word.end():].strip())
         return
     if column is not None and _differs(given, row.values[column], column):
         use.notes.append(f"{prefix}{target}: the spec's {given} overrides the catalogue's "

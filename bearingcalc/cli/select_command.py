@@ -64,12 +64,13 @@ def select_command(
     """
     with errors_as_exit(debug):
         from bearingcalc import batch
+        from bearingcalc.envelope import envelope_from_options
         from bearingcalc.reports.select import (
             print_select_table,
             write_select_csv,
             write_select_json_lines,
         )
-        from bearingcalc.selection import envelope_from_options, select_spec
+        from bearingcalc.selection import select_spec
 
         target = output_target(output, "selection", {
             SelectFormat.table: ".txt", SelectFormat.json: ".jsonl",

@@ -60,6 +60,8 @@ class _ReadsRollerBearing:
 
 
 class RollerRules(_ReadsRollerBearing):
+    """Balls or rollers, the roller bearings' own rules, pairs and catalogue factors."""
+
     @rule
     def _ribless_ring_takes_no_thrust(self) -> SpecFieldError | None:
         """An NU bearing has no ribs on its inner ring, an N bearing none on its outer:
@@ -75,8 +77,6 @@ class RollerRules(_ReadsRollerBearing):
                               f"no ribs on its {ring} ring: it carries no axial load; choose "
                               "an NJ or NUP bearing, or let another bearing take the thrust",
                               at="designation")
-
-    """Balls or rollers, the roller bearings' own rules, pairs and catalogue factors."""
 
     @rule
     def _family_fields(self) -> list[SpecFieldError]:

@@ -9,6 +9,7 @@ import io
 import json
 from typing import IO, TYPE_CHECKING, Any
 
+from bearingcalc.core.common import MM
 from bearingcalc.reports.formatting import console, format_number, safe_text, verdict_line
 from bearingcalc.reports.solve import verdict_record
 from bearingcalc.wording import plural, printable, spreadsheet_text
@@ -16,7 +17,6 @@ from bearingcalc.wording import plural, printable, spreadsheet_text
 if TYPE_CHECKING:
     from bearingcalc.selection import Candidate, PositionChoice, Selection
 
-MM = 1e3
 
 
 def _verdict(candidate: Candidate) -> str:
@@ -47,6 +47,7 @@ def _records(selection: Selection) -> list[dict[str, Any]]:
     return [{"spec": selection.source, "kind": selection.kind, "name": selection.name,
              "catalogue": selection.catalogue, "position": choice.position,
              "considered": choice.considered, "qualifying_count": choice.qualifying_count,
+             "notes": choice.notes,
              "qualifying": [candidate_record(c) for c in choice.qualifying],
              "failing": [candidate_record(c) for c in choice.failing]}
             for choice in selection.choices]
@@ -98,6 +99,8 @@ def _print_choice(out: Any, selection: Selection, choice: PositionChoice) -> Non
     out.print(safe_text(f"catalogue {selection.catalogue}: {plural(choice.considered, 'bearing')}"
                         f" fit the shaft and the envelope, {choice.qualifying_count} meet "
                         "every limit"))
+    for note in choice.notes:
+        out.print(f"[yellow]note[/]: {safe_text(note)}")
     if choice.qualifying:
         table = Table(title="meet every limit, smallest first", title_justify="left")
         for name in ("#", "designation", "maker", "type", "d [mm]", "D [mm]", "B [mm]",
