@@ -23,8 +23,8 @@ from typing import Any
 
 import numpy as np
 
-from bearingcalc.catalogue.catalogue import Catalogue, CatalogueRow, load_catalogue
-from bearingcalc.catalogue.fill import CATALOGUE_VARIABLE, default_catalogue, row_fields
+from bearingcalc.catalogue.catalogue import Catalogue, CatalogueRow
+from bearingcalc.catalogue.fill import row_fields, spec_catalogue
 from bearingcalc.envelope import Envelope, bearing_at, fitting_rows
 from bearingcalc.errors import SpecError
 from bearingcalc.evaluation import load_selected, parse_document
@@ -122,24 +122,13 @@ def select_spec(path: str | Path, envelope: Envelope, top: int = 5) -> Selection
     kind = KINDS.get(data.get("kind")) if isinstance(data.get("kind"), str) else None
     if kind is None:
         raise document.error(unknown_kind(data.get("kind")), field="kind")
-    named = data.get("catalogue")
-    if isinstance(named, str) and named.strip():
-        catalogue_path: str | Path = Path(document.path).parent / named.strip()
-    elif named is not None:
-        raise document.error("write the catalogue's path, like catalogue: bearings.csv "
-                             "(relative to the spec)", field="catalogue")
-    else:
-        default = default_catalogue()
-        if default is None:
-            raise document.error("select needs a catalogue: give catalogue: bearings.csv "
-                                 "(relative to the spec), --catalogue FILE, or the "
-                                 f"environment variable {CATALOGUE_VARIABLE}")
-        catalogue_path = default
-    try:
-        catalogue = load_catalogue(catalogue_path)
-    except SpecError as problem:  # the catalogue's own file and line, after the spec's
-        raise document.error(str(problem), field="catalogue" if named is not None
-                             else None) from None
+
+    def error(message: str, field: str | None) -> SpecError:
+        if field is None:  # --catalogue or the environment's: no line of the spec
+            return SpecError(message, source=document.source)
+        return document.error(message, field=field)
+
+    catalogue = spec_catalogue(data, document.path, error, None, needed_for="select")
     return select(kind, document, catalogue, envelope, top)
 
 

@@ -99,7 +99,7 @@ def fill(data: dict[str, Any], places: tuple[str, ...], spec_path: str,
             continue
         prefix = f"{place}." if place else ""
         if catalogue is None:
-            catalogue = _catalogue(data, spec_path, error, f"{prefix}designation")
+            catalogue = spec_catalogue(data, spec_path, error, f"{prefix}designation")
             use.notes += catalogue.warnings
         designation = bearing["designation"]
         if isinstance(designation, bool) or not isinstance(designation, (str, int)) or (
@@ -134,7 +134,12 @@ def _bearings(data: dict[str, Any], places: tuple[str, ...]) -> Any:
                 yield f"{place}.{i}", item
 
 
-def _catalogue(data: dict[str, Any], spec_path: str, error: Any, at: str) -> Catalogue:
+def spec_catalogue(data: dict[str, Any], spec_path: str, error: Any, at: str | None,
+                   needed_for: str = "a designation") -> Catalogue:
+    """The catalogue of a spec: its ``catalogue`` (relative to the spec), else the
+    command's ``--catalogue`` or ``BEARINGCALC_CATALOGUE``. ``error(message, field)``
+    makes the spec's SpecError: at ``catalogue`` where the spec names one, else at
+    ``at``; a problem of the catalogue's file keeps its own file and line after it."""
     named = data.get("catalogue")
     if named is not None:
         if not isinstance(named, str) or not named.strip():
@@ -144,13 +149,13 @@ def _catalogue(data: dict[str, Any], spec_path: str, error: Any, at: str) -> Cat
     else:
         default = default_catalogue()
         if default is None:
-            raise error("a designation needs a catalogue: give catalogue: bearings.csv "
+            raise error(f"{needed_for} needs a catalogue: give catalogue: bearings.csv "
                         "(relative to the spec), --catalogue FILE, or the environment "
                         f"variable {CATALOGUE_VARIABLE}", at)
         path = Path(default)
     try:
         return load_catalogue(path)
-    except SpecError as problem:  # the catalogue's own file and line, after the spec's
+    except SpecError as problem:
         raise error(str(problem), "catalogue" if named is not None else at) from None
 
 
