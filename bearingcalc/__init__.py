@@ -22,7 +22,7 @@ __version__ = "0.1.0"
 
 #: The Python API (:mod:`bearingcalc.api`), loaded on first use so that the command
 #: line's start pays nothing for it.
-_API = ("solve", "Result", "SpecError")
+_API = ("solve", "tolerance", "sweep", "Result", "Study", "Sweep", "SpecError")
 
 
 def __getattr__(name: str) -> object:
@@ -35,6 +35,8 @@ def __getattr__(name: str) -> object:
 __all__ = [
     "Result",
     "SpecError",
+    "Study",
+    "Sweep",
     "pitch_radius_window",
     "pure_rolling_ball_radius",
     "pure_rolling_contact_angle",
@@ -42,4 +44,6 @@ __all__ = [
     "solve",
     "solve_thrust_bearing",
     "spin_to_roll_ratio",
+    "sweep",
+    "tolerance",
 ]

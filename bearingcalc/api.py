@@ -182,7 +182,7 @@ def tolerance(spec: SpecInput, *, methods: Sequence[str] = ("worst-case", "rss",
               samples: int = 100_000, seed: int = 0, sampler: str = "sobol",
               results: Sequence[str] = ()) -> Study:
     """``bearingcalc tolerance`` of the one spec in ``spec``."""
-    from bearingcalc.tolerance import StudyError, check_band_ends, run_study
+    from bearingcalc.studies import StudyError, check_band_ends, run_study
 
     document = _one(spec)
     kind, parsed = parse_document(document)
@@ -219,7 +219,7 @@ class Sweep:
         """The results against the swept input (contours over a grid), written to
         ``path`` (.png or .svg), or returned as SVG for a notebook."""
         from bearingcalc.plots import sweep_plot
-        from bearingcalc.sweep import shown_results
+        from bearingcalc.sweeps import shown_results
 
         keys = shown_results(self.solved, list(results) or None)
         return _drawn(lambda target, fmt: sweep_plot(self.solved, keys, target, fmt=fmt),
@@ -230,7 +230,7 @@ def sweep(spec: SpecInput, vary: Mapping[str, str]) -> Sweep:
     """``bearingcalc sweep`` of the one spec in ``spec``: ``vary`` maps a field to its
     ``START:STOP:N`` (``{"contact_angle": "5deg:40deg:36"}``); one for a line, two for a
     grid."""
-    from bearingcalc.sweep import sweep_spec
+    from bearingcalc.sweeps import sweep_spec
 
     document = _one(spec)
     kind, parsed = parse_document(document)

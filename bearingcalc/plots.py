@@ -13,8 +13,8 @@ from bearingcalc.units import to_display
 from bearingcalc.wording import printable
 
 if TYPE_CHECKING:
-    from bearingcalc.sweep import Sweep
-    from bearingcalc.tolerance import StudyReport
+    from bearingcalc.studies import StudyReport
+    from bearingcalc.sweeps import Sweep
 
 
 def _pyplot():  # type: ignore[no-untyped-def]
@@ -33,7 +33,7 @@ def tolerance_histogram(report: StudyReport, key: str, path: str | Path | IO[byt
     plt = _pyplot()
     record = report.record
     si_unit = record["units"][key]
-    from bearingcalc.tolerance import coarse_histogram
+    from bearingcalc.studies import coarse_histogram
 
     lows, highs, totals = coarse_histogram(*report.histograms[key], bins)
     scale, unit = to_display(1.0, si_unit)

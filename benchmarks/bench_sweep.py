@@ -47,7 +47,7 @@ def main() -> None:
 
     from bearingcalc import reports
     from bearingcalc.evaluation import load_one_spec
-    from bearingcalc.sweep import parse_axis, run_sweep
+    from bearingcalc.sweeps import parse_axis, run_sweep
 
     kind, spec, document = load_one_spec(SPEC)
     start = time.perf_counter()

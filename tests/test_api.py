@@ -11,7 +11,6 @@ import math
 import pytest
 
 import bearingcalc
-from bearingcalc.api import sweep, tolerance
 from tests.conftest import ROOT
 
 EXAMPLES = sorted((ROOT / "specs").glob("*.yaml"))
@@ -64,7 +63,7 @@ def test_quantity_frame_and_notebook_table():
 
 def test_sweep_gives_the_points_of_the_command_line(cli, tmp_path):
     spec = ROOT / "specs" / "thrust-bearing.yaml"
-    line = sweep(spec, {"contact_angle": "10deg:40deg:7"})
+    line = bearingcalc.sweep(spec, {"contact_angle": "10deg:40deg:7"})
     rows = list(csv.DictReader(io.StringIO(cli("sweep", spec, "--vary",
                                                 "contact_angle=10deg:40deg:7", "--format",
                                                 "csv").out)))
@@ -76,7 +75,7 @@ def test_sweep_gives_the_points_of_the_command_line(cli, tmp_path):
 
 def test_tolerance_gives_the_record_of_the_command_line(cli):
     spec = ROOT / "specs" / "tolerances" / "thrust-bearing.yaml"
-    study = tolerance(spec, samples=3000, seed=3)
+    study = bearingcalc.tolerance(spec, samples=3000, seed=3)
     record = json.loads(cli("tolerance", spec, "-n", "3000", "--seed", "3", "--format",
                             "json").out)
     assert study.record["results"] == record["results"]

@@ -301,10 +301,10 @@ def _interrupt_once_started(work: tuple[str, str], args: list[str]) -> tuple[int
 
 
 @pytest.mark.parametrize(("work", "args"), [
-    (("bearingcalc.tolerance", "run_study"),
+    (("bearingcalc.studies", "run_study"),
      ["tolerance", str(ROOT / "specs" / "tolerances" / "thrust-bearing.yaml"), "-n", "1e10",
       "-m", "monte-carlo", "--sampler", "random"]),
-    (("bearingcalc.sweep", "run_sweep"),
+    (("bearingcalc.sweeps", "run_sweep"),
      ["sweep", str(GOOD), "--vary", "pitch_radius=20mm:30mm:2000",
       "--vary", "contact_angle=10deg:40deg:2000", "-f", "json", "-o", "/dev/null"]),
 ])

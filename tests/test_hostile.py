@@ -16,7 +16,7 @@ import zlib
 
 import pytest
 
-from bearingcalc import sweep as sweeps
+from bearingcalc import sweeps
 from bearingcalc.errors import SpecError
 from bearingcalc.evaluation import evaluate_document, evaluate_file, load_one_spec
 from bearingcalc.kinds import KINDS, OUT_OF_RANGE_REASON

@@ -1,4 +1,4 @@
-"""bearingcalc.tolerance.normal.ndtri gives scipy.special.ndtri's numbers bit for bit."""
+"""bearingcalc.studies.normal.ndtri gives scipy.special.ndtri's numbers bit for bit."""
 
 from __future__ import annotations
 
@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 from scipy.special import ndtri as scipy_ndtri
 
-from bearingcalc.tolerance import SCIPY_NDTRI_ABOVE, normal_quantile_function
-from bearingcalc.tolerance.normal import EXP_MINUS_2, ndtri
+from bearingcalc.studies import SCIPY_NDTRI_ABOVE, normal_quantile_function
+from bearingcalc.studies.normal import EXP_MINUS_2, ndtri
 
 
 def assert_same_bits(y: np.ndarray) -> None:

@@ -11,8 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from bearingcalc import batch, plots, reports, tolerance
-from bearingcalc import sweep as sweeps
+from bearingcalc import batch, plots, reports, studies, sweeps
 from tests.conftest import ROOT
 
 #: Thrust bearing with tolerances: every command takes it.
@@ -38,7 +37,7 @@ def no_work(monkeypatch):
         raise AssertionError("the work started before the outputs were checked")
 
     monkeypatch.setattr(sweeps, "run_sweep", forbidden)
-    monkeypatch.setattr(tolerance, "run_study", forbidden)
+    monkeypatch.setattr(studies, "run_study", forbidden)
     monkeypatch.setattr(batch, "check_files", forbidden)
 
 

@@ -1,4 +1,4 @@
-"""bearingcalc.tolerance.sobol draws scipy.stats.qmc.Sobol's scrambled points bit for bit."""
+"""bearingcalc.studies.sobol draws scipy.stats.qmc.Sobol's scrambled points bit for bit."""
 
 from __future__ import annotations
 
@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 from scipy.stats import qmc
 
-from bearingcalc.tolerance import sobol
-from bearingcalc.tolerance.sobol import (
+from bearingcalc.studies import sobol
+from bearingcalc.studies.sobol import (
     ScipySobolStream,
     SobolStream,
     _lowest_zero_bits,

@@ -230,7 +230,7 @@ def test_block_csv_writer_is_byte_identical_to_the_line_writer(vary):
 
     from bearingcalc.evaluation import load_one_spec
     from bearingcalc.reports import write_sweep_csv
-    from bearingcalc.sweep import parse_axis, run_sweep
+    from bearingcalc.sweeps import parse_axis, run_sweep
 
     kind, spec, document = load_one_spec(SPECS / "thrust-bearing.yaml")
     solved = run_sweep(kind, spec, document.source, [parse_axis(v, spec) for v in vary])
@@ -247,7 +247,7 @@ def test_block_csv_writer_with_unbounded_results(spec_file, angles):
 
     from bearingcalc.evaluation import load_one_spec
     from bearingcalc.reports import write_sweep_csv
-    from bearingcalc.sweep import parse_axis, run_sweep
+    from bearingcalc.sweeps import parse_axis, run_sweep
 
     # ρ_max above tan(45° − θ): no upper pitch-radius edge, pitch_radius_max is +inf,
     # which orjson writes as null; with every design possible, and with the last

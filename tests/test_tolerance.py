@@ -14,12 +14,12 @@ from scipy.stats import norm
 from bearingcalc.core.thrust_bearing import solve_thrust_bearing
 from bearingcalc.evaluation import parse_document
 from bearingcalc.models.yaml_loader import load_documents
-from bearingcalc.tolerance import BLOCK, HISTOGRAM_BINS, Study
-from bearingcalc.tolerance.monte_carlo import monte_carlo
-from bearingcalc.tolerance.rss import rss
-from bearingcalc.tolerance.sampling import draw
-from bearingcalc.tolerance.sensitivity import sobol_indices
-from bearingcalc.tolerance.worst_case import refine_with_lbfgsb, worst_case
+from bearingcalc.studies import BLOCK, HISTOGRAM_BINS, Study
+from bearingcalc.studies.monte_carlo import monte_carlo
+from bearingcalc.studies.rss import rss
+from bearingcalc.studies.sampling import draw
+from bearingcalc.studies.sensitivity import sobol_indices
+from bearingcalc.studies.worst_case import refine_with_lbfgsb, worst_case
 from tests.conftest import ROOT, study_status
 
 TB = """kind: thrust-bearing
@@ -124,7 +124,7 @@ def test_a_monotonic_result_has_its_extremes_at_corners_exactly(spec_file):
 
 
 def test_extremes_with_many_free_inputs_go_to_lbfgsb(spec_file, monkeypatch):
-    search = importlib.import_module("bearingcalc.tolerance.worst_case")
+    search = importlib.import_module("bearingcalc.studies.worst_case")
     study = study_of(spec_file, TB)
     zoomed = worst_case(study)
     refined_keys = []
@@ -158,7 +158,7 @@ def test_the_default_study_imports_no_scipy_stats_special_or_optimize():
 
 
 def test_histogram_bins_are_the_clipped_floors_on_both_counting_paths():
-    from bearingcalc.tolerance import _Accumulator, _Scratch
+    from bearingcalc.studies import _Accumulator, _Scratch
 
     rng = np.random.default_rng(11)
     pilot = rng.normal(5.0, 1.0, BLOCK)

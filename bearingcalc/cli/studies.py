@@ -91,7 +91,7 @@ def tolerance(
     with errors_as_exit(debug):
         from bearingcalc import batch, reports
         from bearingcalc.evaluation import evaluate_document, load_one_spec
-        from bearingcalc.tolerance import StudyError, check_band_ends, run_study
+        from bearingcalc.studies import StudyError, check_band_ends, run_study
 
         methods = [m.strip() for m in method.split(",") if m.strip()]
         check_plot_name(plot)
@@ -159,8 +159,7 @@ def sweep(
 ) -> None:
     """Solve the spec over a line or grid of one or two inputs; impossible points are gaps."""
     with errors_as_exit(debug):
-        from bearingcalc import batch, reports
-        from bearingcalc import sweep as sweeps
+        from bearingcalc import batch, reports, sweeps
         from bearingcalc.evaluation import load_one_spec
 
         check_plot_name(plot)

@@ -14,7 +14,7 @@ from bearingcalc.units import to_display
 from bearingcalc.wording import printable
 
 if TYPE_CHECKING:  # the report type only; its module loads with the command
-    from bearingcalc.sweep import Sweep
+    from bearingcalc.sweeps import Sweep
 
 
 def write_sweep_json_lines(sweep: Sweep, stream: IO[str]) -> None:

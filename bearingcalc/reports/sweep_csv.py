@@ -48,7 +48,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 if TYPE_CHECKING:  # the report type only; its module loads with the command
-    from bearingcalc.sweep import Sweep
+    from bearingcalc.sweeps import Sweep
 
 #: Rows formatted at a time: large enough that the passes per block cost nothing per
 #: row, small enough that a block's text stays a few megabytes.

@@ -10,7 +10,7 @@ from bearingcalc.reports.formatting import console, format_number, safe_text
 from bearingcalc.units import to_display
 
 if TYPE_CHECKING:  # the report type only; its module loads with the command
-    from bearingcalc.tolerance import StudyReport
+    from bearingcalc.studies import StudyReport
 
 
 def write_tolerance_json(report: StudyReport, stream: IO[str]) -> None:
@@ -125,7 +125,7 @@ def _ran(results: dict[str, Any], method: str) -> bool:
 def _terminal_histogram(out: Any, key: str, report: StudyReport, si_unit: str,
                         rows: int = 12, width: int = 40) -> None:
     """A small sideways histogram of ``key``'s Monte Carlo samples."""
-    from bearingcalc.tolerance import coarse_histogram
+    from bearingcalc.studies import coarse_histogram
 
     lows, highs, totals = coarse_histogram(*report.histograms[key], rows)
     if totals.size == 0:

@@ -17,7 +17,7 @@ from bearingcalc.models.base import SpecModel, field_parser
 from bearingcalc.models.field_path import resolve_field
 from bearingcalc.models.quantities import Tolerance
 from bearingcalc.models.yaml_loader import Document
-from bearingcalc.tolerance.sobol import sobol_stream
+from bearingcalc.studies.sobol import sobol_stream
 from bearingcalc.units import to_display
 from bearingcalc.variation import evaluate_with, field_value, invalid_at, toleranced_fields
 

@@ -12,7 +12,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from bearingcalc.models.quantities import Tolerance
-from bearingcalc.tolerance.study import Study, StudyError
+from bearingcalc.studies.study import Study, StudyError
 
 
 def sobol_indices(study: Study, samples: int, seed: int = 0,

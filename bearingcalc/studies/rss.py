@@ -7,7 +7,7 @@ from typing import Any
 
 import numpy as np
 
-from bearingcalc.tolerance.study import Study
+from bearingcalc.studies.study import Study
 
 
 def rss(study: Study) -> dict[str, dict[str, Any]]:

@@ -20,9 +20,9 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from bearingcalc.tolerance.accumulator import BLOCK, _Accumulator, _Scratch
-from bearingcalc.tolerance.sampling import SampleStream, designs_at, normal_quantile_function
-from bearingcalc.tolerance.study import Study, StudyError
+from bearingcalc.studies.accumulator import BLOCK, _Accumulator, _Scratch
+from bearingcalc.studies.sampling import SampleStream, designs_at, normal_quantile_function
+from bearingcalc.studies.study import Study, StudyError
 
 
 @dataclass

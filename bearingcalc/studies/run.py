@@ -12,12 +12,12 @@ from numpy.typing import NDArray
 
 from bearingcalc.kinds import Kind
 from bearingcalc.models.base import SpecModel
-from bearingcalc.tolerance.monte_carlo import monte_carlo, smallest_cpk
-from bearingcalc.tolerance.rss import rss
-from bearingcalc.tolerance.sampling import SAMPLERS, SOBOL_MAX_SAMPLES
-from bearingcalc.tolerance.sensitivity import sobol_indices
-from bearingcalc.tolerance.study import Study, StudyError
-from bearingcalc.tolerance.worst_case import worst_case
+from bearingcalc.studies.monte_carlo import monte_carlo, smallest_cpk
+from bearingcalc.studies.rss import rss
+from bearingcalc.studies.sampling import SAMPLERS, SOBOL_MAX_SAMPLES
+from bearingcalc.studies.sensitivity import sobol_indices
+from bearingcalc.studies.study import Study, StudyError
+from bearingcalc.studies.worst_case import worst_case
 from bearingcalc.units import to_display
 
 METHODS = ("worst-case", "rss", "monte-carlo")

@@ -10,7 +10,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from bearingcalc.tolerance.study import Study
+from bearingcalc.studies.study import Study
 
 #: Step of the central differences that tell whether a result is monotonic along an
 #: input, as a fraction of the input's tolerance band.

@@ -10,14 +10,14 @@ import numpy as np
 from numpy.typing import NDArray
 
 from bearingcalc.models.quantities import Tolerance
-from bearingcalc.tolerance.sobol import sobol_stream
-from bearingcalc.tolerance.study import StudyError, StudyInput
+from bearingcalc.studies.sobol import sobol_stream
+from bearingcalc.studies.study import StudyError, StudyInput
 
 SAMPLERS = ("sobol", "random")
 #: Distinct points of a 30-bit Sobol' sequence (scipy's default, and ours).
 SOBOL_MAX_SAMPLES = 1 << 30
 #: Normal draws in a study above which scipy.special.ndtri is worth its import (about
-#: 0.3 s); below it, bearingcalc.tolerance.normal.ndtri, whose tails run per element in
+#: 0.3 s); below it, bearingcalc.studies.normal.ndtri, whose tails run per element in
 #: Python. Both give the same bits, so the choice never shows in a result.
 SCIPY_NDTRI_ABOVE = 1 << 21
 
@@ -26,7 +26,7 @@ class SampleStream:
     """A uniform sample stream on (0, 1)^d from ``start`` on, drawn in pieces.
 
     ``sobol``: scrambled Sobol points, those of scipy.stats.qmc.Sobol bit for bit
-    (:func:`bearingcalc.tolerance.sobol.sobol_stream`), from ``start`` on; ``random``:
+    (:func:`bearingcalc.studies.sobol.sobol_stream`), from ``start`` on; ``random``:
     numpy's PCG64 advanced to ``start``. Either way the points are those of one
     sequence, however it is cut.
     """
@@ -62,7 +62,7 @@ def normal_quantile_function(draws: int) -> Callable[..., NDArray]:
         from scipy.special import ndtri
 
         return ndtri  # type: ignore[no-any-return]
-    from bearingcalc.tolerance.normal import ndtri as light_ndtri
+    from bearingcalc.studies.normal import ndtri as light_ndtri
 
     return light_ndtri
 
