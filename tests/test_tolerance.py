@@ -462,3 +462,21 @@ def test_a_band_that_leaves_what_the_spec_takes_is_refused(cli, spec_file, old, 
     assert f": {field}: the {end} end of its tolerance band" in run.err, run.err
     line = next(i for i, row in enumerate(text.splitlines(), 1) if row.startswith(new))
     assert f".yaml:{line}: " in run.err, run.err
+
+
+def test_a_one_sided_limit_gets_its_cpl(cli):
+    """A life held above its requirement: Cpl = (μ − L)/3σ of the life itself, the same
+    as the margin's μ/3σ (the margin is the life over L, less 1)."""
+    run = cli("tolerance", ROOT / "specs" / "tolerances" / "ball-bearing.yaml", "-n", "20000",
+              "--format", "json")
+    record = json.loads(run.out)
+    life = record["results"]["modified_rating_life"]["monte_carlo"]
+    required = 2000 * 3600.0  # the spec's min_rating_life
+    expected = (life["mean"] - required) / (3 * life["std"])
+    entry = record["capability"]["life_margin"]
+    assert entry["index"] == "Cpl" and entry["of"] == "modified rating life"
+    assert entry["value"] == pytest.approx(expected, rel=1e-9)
+    table = cli("tolerance", ROOT / "specs" / "tolerances" / "ball-bearing.yaml", "-n", "20000")
+    assert f"Cpl {expected:.3g} (modified rating life)" in table.out
+    out = 1 - record["yield"]
+    assert f"{100 * out:.3g} % out of spec" in table.out  # above 0.1 %: in %

@@ -87,8 +87,9 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
     rss_lead = (results.get(lead) or {}).get("rss") if lead else None
     if rss_lead and rss_lead.get("contributions"):
         shares = Table(title=f"which tolerance dominates {lead} (RSS)", title_justify="left")
-        for column in ("input", "share", "∂f/∂x · σ"):
-            shares.add_column(column, justify="left" if column == "input" else "right")
+        unit = to_display(0.0, units[lead])[1]
+        for column in ("input", "share", f"∂f/∂x · σ [{unit}]" if unit else "∂f/∂x · σ"):
+            shares.add_column(escape(column), justify="left" if column == "input" else "right")
         ranked = sorted(rss_lead["contributions"].items(), key=lambda kv: -kv[1])
         for name, share in ranked:
             effect = rss_lead["sensitivities"][name] * record["inputs"][name]["std"]
@@ -97,11 +98,10 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
         out.print(shares)
 
     if "yield" in record:
-        cpk = "n/a" if record["cpk"] is None else f"{record['cpk']:.3f}"
         out.print(f"Monte Carlo: {record['samples']} samples ({record['sampler']}, seed "
                   f"{record['seed']}): yield {100 * record['yield']:.4f} %, "
-                  f"{record['ppm_out']:.1f} ppm out of spec, Cpk {cpk}, "
-                  f"{record['infeasible_samples']} impossible designs")
+                  f"{_out_of_spec(1.0 - record['yield'])} out of spec, "
+                  f"{_capability(record)}, {record['infeasible_samples']} impossible designs")
     verdict = report.within_limits
     if verdict is True:
         out.print("[bold green]PASS[/]: every margin stays within its limit"
@@ -139,4 +139,18 @@ def _terminal_histogram(out: Any, key: str, report: StudyReport, si_unit: str,
         out.print(f"{format_number(to_display(low, si_unit)[0]):>12} … "
                   f"{format_number(to_display(high, si_unit)[0]):<12} {bar} {total}")
 
+
+def _out_of_spec(fraction: float) -> str:
+    """A fraction out of spec in % from 0.1 % up, in ppm below."""
+    return f"{100 * fraction:.3g} %" if fraction >= 1e-3 else f"{1e6 * fraction:.3g} ppm"
+
+
+def _capability(record: dict[str, Any]) -> str:
+    """The smallest capability index: Cpl or Cpu of a one-sided limit (a margin), Cpk of
+    a two-sided one; n/a without a spread or a limit."""
+    found = [(entry["value"], f"{entry['index']} {entry['value']:.3g} ({entry['of']})")
+             for entry in record.get("capability", {}).values()]
+    if record.get("cpk") is not None:
+        found.append((record["cpk"], f"Cpk {record['cpk']:.3g}"))
+    return min(found)[1] if found else "Cpk n/a"
 

@@ -166,6 +166,28 @@ def smallest_cpk(study: Study, mc: MonteCarloResult) -> float | None:
     return min(finite) if finite else None
 
 
+def one_sided_capability(study: Study, mc: MonteCarloResult) -> dict[str, dict[str, Any]]:
+    """Each margin's process capability against its one limit: Cpl of a quantity held
+    above a lower limit (a life, a safety), Cpu of one held below an upper limit (a
+    pressure), both the margin's mean over three of its standard deviations.
+
+    A margin is its quantity's distance to the limit on a scale of its own (m = Q/L − 1,
+    Q − L, or 1 − Q/L), an affine map with a positive or negative slope, so the
+    margin's μ/3σ is the quantity's (μ − LSL)/3σ or (USL − μ)/3σ exactly.
+    """
+    out: dict[str, dict[str, Any]] = {}
+    for key in study.margins:
+        stats = mc.stats.get(key, {})
+        mean, std = stats.get("mean"), stats.get("std")
+        if mean is None or std is None or not std > 0:
+            continue
+        judged = study.kind.judged.get(key)
+        at_least = True if judged is None else judged.at_least
+        out[key] = {"index": "Cpl" if at_least else "Cpu", "value": mean / (3.0 * std),
+                    "of": key if judged is None else judged.named(study.nominal)}
+    return out
+
+
 def _cpk(stats: dict[str, float | None], limit: float) -> float | None:
     """Cpk = min(L − μ, μ + L) / 3σ of a result held to |x| <= L; None without a spread."""
     mean, std = stats.get("mean"), stats.get("std")

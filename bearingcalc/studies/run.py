@@ -12,7 +12,7 @@ from numpy.typing import NDArray
 
 from bearingcalc.kinds import Kind
 from bearingcalc.models.base import SpecModel
-from bearingcalc.studies.monte_carlo import monte_carlo, smallest_cpk
+from bearingcalc.studies.monte_carlo import monte_carlo, one_sided_capability, smallest_cpk
 from bearingcalc.studies.rss import rss
 from bearingcalc.studies.sampling import SAMPLERS, SOBOL_MAX_SAMPLES
 from bearingcalc.studies.sensitivity import sobol_indices
@@ -114,7 +114,8 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
             record["results"][key]["monte_carlo"] = stats
         record.update({"samples": samples, "seed": seed, "sampler": sampler,
                        "yield": mc.yield_fraction, "ppm_out": mc.ppm_out,
-                       "cpk": smallest_cpk(study, mc), "infeasible_samples": mc.infeasible})
+                       "cpk": smallest_cpk(study, mc), "infeasible_samples": mc.infeasible,
+                       "capability": one_sided_capability(study, mc)})
         if mc.infeasible:
             record["warnings"].append(f"{mc.infeasible} of {samples} samples are impossible "
                                       "designs; they count as out of spec")
