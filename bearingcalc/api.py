@@ -168,11 +168,11 @@ class Study:
         return self.report.within_limits
 
     def plot(self, path: str | Path | None = None, key: str | None = None) -> Any:
-        """The Monte Carlo histogram of ``key`` (default: the governing result), written
+        """The Monte Carlo histogram of ``key`` (default: the margin nearest its limit), written
         to ``path`` (.png or .svg), or returned as SVG for a notebook."""
         from bearingcalc.plots import tolerance_histogram
 
-        chosen = key or self.report.governing[0]
+        chosen = key or self.report.plotted
         return _drawn(lambda target, fmt: tolerance_histogram(self.report, chosen, target,
                                                               fmt=fmt), path)
 
@@ -222,8 +222,8 @@ class Sweep:
         from bearingcalc.sweeps import shown_results
 
         keys = shown_results(self.solved, list(results) or None)
-        return _drawn(lambda target, fmt: sweep_plot(self.solved, keys, target, fmt=fmt),
-                      path)
+        return _drawn(lambda target, fmt: sweep_plot(self.solved, keys, target, fmt=fmt,
+                                                     chosen=bool(results)), path)
 
 
 def sweep(spec: SpecInput, vary: Mapping[str, str]) -> Sweep:

@@ -64,9 +64,22 @@ def tolerance_histogram(report: StudyReport, key: str, path: str | Path | IO[byt
     for i, limit in enumerate(limits):
         axes.axvline(limit * scale, color="#c44e52", linewidth=2,
                      label="limit" if i == 0 else None)
-    axes.set_xlabel(f"{key} [{unit}]" if unit else key)
+    # The axis spans the 0.135 %–99.865 % quantiles, the worst case and the limits: a
+    # few tail samples would otherwise stretch it and squeeze the histogram.
+    spots = [value for value in (mc.get("p00135"), mc.get("p99865"), worst.get("min"),
+                                 worst.get("max"), *limits) if value is not None]
+    if len(spots) >= 2 and max(spots) > min(spots):
+        pad = 0.05 * (max(spots) - min(spots))
+        left, right = (min(spots) - pad) * scale, (max(spots) + pad) * scale
+        axes.set_xlim(left, right)
+        outside = int(totals[(highs * scale < left) | (lows * scale > right)].sum()) if (
+            totals.size) else 0
+        if outside:
+            axes.text(0.99, 0.97, f"{outside} samples beyond the axis", ha="right",
+                      va="top", transform=axes.transAxes, fontsize="small", color="#555555")
+    axes.set_xlabel(f"{words(key)} [{unit}]" if unit else words(key))
     axes.set_ylabel("samples")
-    axes.set_title(printable(f"{record['name'] or record['spec']}: {key}"))
+    axes.set_title(printable(f"{record['name'] or record['spec']}: {words(key)}"))
     _legend_below(axes)
     figure.tight_layout()
     figure.savefig(path, format=fmt)
@@ -74,16 +87,22 @@ def tolerance_histogram(report: StudyReport, key: str, path: str | Path | IO[byt
 
 
 def sweep_plot(sweep: Sweep, keys: Sequence[str], path: str | Path | IO[bytes], *,
-               fmt: str | None = None) -> None:
+               fmt: str | None = None, chosen: bool = False) -> None:
     """A line sweep: the chosen results against the input, one y axis per unit, limits
     drawn and the range within limits shaded. A grid sweep: filled contours of the first
-    chosen result, the limit contour bold, impossible designs left blank."""
+    chosen result, the limit contour bold, impossible designs left blank. Unless the
+    results were ``chosen`` by the user, a margin gives way to the quantity it judges
+    (a life rather than its margin), which says the same with the limit drawn."""
     plt = _pyplot()
     figure, axes = plt.subplots(figsize=(8, 5), dpi=120)
     if len(sweep.axes) == 1:
         _line(sweep, keys, figure, axes)
     else:
-        _contour(sweep, keys[0], figure, axes)
+        key = keys[0]
+        quantity = _judged_quantity(sweep, key)
+        if not chosen and quantity in sweep.results:
+            key = quantity  # type: ignore[assignment]
+        _contour(sweep, key, figure, axes)
     axes.set_title(printable(f"{sweep.name} ({sweep.kind.name})"))
     figure.tight_layout()
     figure.savefig(path, format=fmt)
@@ -97,17 +116,70 @@ def _legend_below(axes: Any, handles: list[Any] | None = None) -> None:
                 frameon=False, **kwargs)
 
 
+def words(name: str) -> str:
+    """A result key or a dotted field name in words: ``modified_rating_life`` is
+    "modified rating life", ``pinion_bearings.2.position`` "position of pinion bearing 2",
+    ``lubrication.viscosity`` "viscosity of the lubrication"."""
+    parts = name.split(".")
+    field = parts[-1].replace("_", " ")
+    owners = []
+    rest = parts[:-1]
+    while rest:
+        if len(rest) >= 2 and rest[1].isdigit():
+            owners.append(f"{rest[0].replace('_', ' ').removesuffix('s')} {rest[1]}")
+            rest = rest[2:]
+        else:
+            owners.append(f"the {rest[0].replace('_', ' ')}")
+            rest = rest[1:]
+    return " of ".join([field, *reversed(owners)])
+
+
 def _axis_label(name: str, si_unit: str) -> tuple[float, str]:
     scale, unit = to_display(1.0, si_unit)
-    return scale, f"{name} [{unit}]" if unit else name
+    return scale, f"{words(name)} [{unit}]" if unit else words(name)
 
 
-def _limit_levels(sweep: Sweep, key: str) -> list[float]:
+def _limit_levels(sweep: Sweep, key: str) -> list[tuple[float, str]]:
+    """The limits of a result, each with its words: its own symmetric limit, 0 of a
+    margin, or the limit of the quantity a margin judges (a life's required life)."""
     if key in sweep.limits:
-        return [-sweep.limits[key], sweep.limits[key]]
+        return [(-sweep.limits[key], "limit"), (sweep.limits[key], "limit")]
     if key in sweep.kind.margins:
-        return [0.0]
+        return [(0.0, "limit")]
+    for margin, judged in sweep.kind.judged.items():
+        if judged.quantity != key or margin not in sweep.results:
+            continue
+        values, margins = sweep.results[key], sweep.results[margin]
+        good = np.flatnonzero(np.isfinite(values) & np.isfinite(margins))
+        if good.size:
+            i = int(good[0])
+            limit = judged.limit(abs(float(values[i])) if not judged.at_least
+                                 else float(values[i]), float(margins[i]))
+            if np.isfinite(limit):
+                return [(limit, f"{judged.limit_word} {judged.named({})}")]
     return []
+
+
+def _judged_quantity(sweep: Sweep, margin: str) -> str | None:
+    judged = sweep.kind.judged.get(margin)
+    return judged.quantity if judged is not None and isinstance(judged.quantity, str) else None
+
+
+def _spans_decades(values: NDArray) -> bool:
+    """Positive values over more than two decades: a log axis shows them."""
+    finite = values[np.isfinite(values)]
+    return finite.size > 1 and bool(np.all(finite > 0)) and finite.max() > 100 * finite.min()
+
+
+def _power_law(x: NDArray, y: NDArray) -> bool:
+    """y a power of x (a life against a load): a straight line on log-log axes."""
+    good = np.isfinite(x) & np.isfinite(y) & (x > 0) & (y > 0)
+    if good.sum() < 4 or not x[good].max() > 1.5 * x[good].min():
+        return False
+    lx, ly = np.log(x[good]), np.log(y[good])
+    slope, intercept = np.polyfit(lx, ly, 1)
+    residual = ly - (slope * lx + intercept)
+    return abs(slope) > 0.5 and float(np.std(residual)) < 1e-3 * max(float(np.std(ly)), 1e-300)
 
 
 def _line(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> None:
@@ -115,9 +187,13 @@ def _line(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> None:
     x_scale, x_label = _axis_label(axis.name, axis.unit)
     x = sweep.inputs[axis.name] * x_scale
     units = sweep.units
+    # A margin is an affine image of the quantity it judges: drawn beside it, it would
+    # lie exactly over it; the quantity with its limit line says the same.
+    keys = [key for key in keys if _judged_quantity(sweep, key) not in keys] or list(keys)
     by_unit: dict[str, list[str]] = {}
     for key in keys:
         by_unit.setdefault(units[key], []).append(key)
+    log_x = any(_power_law(x, sweep.results[key]) for key in keys) and bool(np.all(x > 0))
     colours = iter(["#4c72b0", "#dd8452", "#55a868", "#c44e52", "#8172b3", "#937860"])
     handles = []
     for n, (si_unit, members) in enumerate(by_unit.items()):
@@ -128,15 +204,20 @@ def _line(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> None:
         for key in members:
             colour = next(colours, "#333333")
             # A whole-number input has no values between its points: mark the points.
-            (line,) = target.plot(x, sweep.results[key] * scale, color=colour, label=key,
-                                  marker="o" if axis.integer else None, markersize=4)
+            (line,) = target.plot(x, sweep.results[key] * scale, color=colour,
+                                  label=words(key), marker="o" if axis.integer else None,
+                                  markersize=4)
             handles.append(line)
-            for i, level in enumerate(_limit_levels(sweep, key)):
+            for i, (level, named) in enumerate(_limit_levels(sweep, key)):
+                label = f"{named} of {words(key)}" if named == "limit" else named
                 limit = target.axhline(level * scale, color=colour, linestyle=":",
-                                       linewidth=1.2, label=f"limit of {key}")
+                                       linewidth=1.4, label=label)
                 if i == 0:
                     handles.append(limit)
-        target.set_ylabel(", ".join(members) + (f" [{unit}]" if unit else ""))
+        if all(_spans_decades(sweep.results[key]) for key in members):
+            target.set_yscale("log")
+        target.set_ylabel(", ".join(words(key) for key in members)
+                          + (f" [{unit}]" if unit else ""))
     ok = sweep.within_limits
     if sweep.kind.margins and ok.any():
         # Shade each run of points within limits out to the midpoints beside it.
@@ -152,10 +233,12 @@ def _line(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> None:
                   "impossible designs (gaps)", transform=axes.transAxes, fontsize="small",
                   color="#555555")
     axes.set_xlabel(x_label)
-    if axis.integer:
+    if log_x:
+        axes.set_xscale("log")
+    elif axis.integer:
         axes.xaxis.get_major_locator().set_params(integer=True)
     _legend_below(axes, handles)
-    axes.grid(alpha=0.3)
+    axes.grid(alpha=0.3, which="both" if log_x else "major")
 
 
 def _contour(sweep: Sweep, key: str, figure: Any, axes: Any) -> None:
@@ -180,14 +263,28 @@ def _contour(sweep: Sweep, key: str, figure: Any, axes: Any) -> None:
         low, high = np.percentile(z.compressed(), [2.0, 98.0])
         if not high > low:
             low, high = float(z.min()), float(z.max()) + 1e-300
+        logarithmic = low > 0 and high > 100 * low  # decades: a log scale, round ticks
+        if logarithmic:
+            from matplotlib.colors import LogNorm
+            from matplotlib.ticker import LogLocator
+
+            norm = LogNorm(vmin=low, vmax=high)
+            levels = np.geomspace(low, high, 25)
+        else:  # round levels, so the colour bar's ticks read as numbers one would write
+            from matplotlib.ticker import MaxNLocator
+
+            norm, levels = None, MaxNLocator(nbins=20).tick_values(low, high)
         if stepped:
             filled = axes.pcolormesh(x, y, z, shading="nearest", cmap="viridis",
-                                     vmin=low, vmax=high)
+                                     norm=norm, vmin=None if norm else low,
+                                     vmax=None if norm else high)
         else:
-            filled = axes.contourf(x, y, np.ma.clip(z, low, high),
-                                   levels=np.linspace(low, high, 25), cmap="viridis",
-                                   extend="both")
-        figure.colorbar(filled, ax=axes, label=z_label, extend="both")
+            filled = axes.contourf(x, y, np.ma.clip(z, low, high), levels=levels,
+                                   cmap="viridis", extend="both", norm=norm)
+        bar = figure.colorbar(filled, ax=axes, label=z_label, extend="both")
+        if logarithmic:
+            bar.locator = LogLocator()
+            bar.update_ticks()
         ok = sweep.within_limits.reshape(shape)
         if sweep.kind.margins and ok.any():
             handles.append(_within_limits_overlay(axes, x, y, ok, stepped))

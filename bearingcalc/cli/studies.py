@@ -120,11 +120,11 @@ def tolerance(
             StudyFormat.json: lambda stream: reports.write_tolerance_json(report, stream),
         }
         with StagedFiles() as files:
-            if histogram is not None and report.governing:
+            if histogram is not None and report.plotted is not None:
                 from bearingcalc.plots import tolerance_histogram
 
                 stage_plot(files, histogram, lambda f, fmt: tolerance_histogram(
-                    report, report.governing[0], f, fmt=fmt))
+                    report, report.plotted, f, fmt=fmt))
             emit(writers[output_format], table_or_json, files)
         raise typer.Exit(EXIT_LIMIT if report.within_limits is False else EXIT_OK)
 
@@ -189,7 +189,8 @@ def sweep(
             if chart is not None:
                 from bearingcalc.plots import sweep_plot
 
-                stage_plot(files, chart, lambda f, fmt: sweep_plot(solved, keys, f, fmt=fmt))
+                stage_plot(files, chart, lambda f, fmt: sweep_plot(solved, keys, f, fmt=fmt,
+                                                                   chosen=bool(result)))
             # Parquet is refused without --output (check_parquet_output): never stdout.
             emit(writers[chosen], results_file, files, binary=chosen is SweepFormat.parquet)
 

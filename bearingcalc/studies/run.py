@@ -34,6 +34,25 @@ class StudyReport:
     margins: tuple[str, ...]
 
     @property
+    def plotted(self) -> str | None:
+        """The result a plot shows by default: the margin that comes nearest its limit
+        (the one that fails, if any) by worst case or Monte Carlo, else the first
+        governing result."""
+        results = self.record["results"]
+
+        def lowest(key: str) -> float:
+            entry = results.get(key, {})
+            found = [(entry.get("worst_case") or {}).get("min"),
+                     (entry.get("monte_carlo") or {}).get("min")]
+            values = [value for value in found if value is not None]
+            return min(values) if values else float("inf")
+
+        judged = [key for key in self.margins if key in self.histograms]
+        if judged:
+            return min(judged, key=lowest)
+        return self.governing[0] if self.governing else None
+
+    @property
     def within_limits(self) -> bool | None:
         """Whether every margin stays >= 0: at worst case if run, else in every sample."""
         results = self.record["results"]
