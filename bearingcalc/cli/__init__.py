@@ -242,4 +242,4 @@ _CHECK_SUFFIXES = {CheckFormat.table: ".txt", CheckFormat.json: ".jsonl",
 
 
 # The commands of their own modules, registered on ``app`` as they load.
-from bearingcalc.cli import select_command, studies  # noqa: E402,F401
+from bearingcalc.cli import report_command, select_command, studies  # noqa: E402,F401

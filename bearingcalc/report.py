@@ -1,0 +1,183 @@
+"""The calculation report of a spec file: each document solved as ``solve`` solves it,
+its inputs read back as written and in SI, the plots that fit its kind made from the
+same solver, all written by :func:`bearingcalc.reports.html.report_html`."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from bearingcalc import __version__
+from bearingcalc.errors import SpecError
+from bearingcalc.evaluation import evaluate_document, load_selected, parse_document
+from bearingcalc.kinds import KINDS
+from bearingcalc.models.base import field_parser
+from bearingcalc.models.field_path import FieldPathError, resolve_field
+from bearingcalc.models.quantities import Measured
+from bearingcalc.models.yaml_loader import read_spec_text
+from bearingcalc.reports.html import report_html, svg_of
+
+#: The life-against-load curve runs from this fraction of the operating load to this
+#: multiple of it.
+LOAD_SPAN = (0.25, 4.0)
+
+
+def report_of(path: str | Path) -> str:
+    """The HTML report of every document of the spec file at ``path``; SpecError where
+    a document cannot be read or solved (as ``solve`` would refuse it)."""
+    documents = load_selected(path)
+    text = read_spec_text(str(path).rpartition("#")[0] if not Path(path).exists()
+                          else path)
+    evaluations, inputs, plots = [], [], []
+    for document in documents:
+        evaluation = evaluate_document(document)
+        kind, spec = parse_document(document)
+        evaluations.append(evaluation)
+        inputs.append(list(_inputs(document.data, spec)))
+        plots.append(_plots(kind, spec, evaluation))
+    return report_html(evaluations, KINDS, text, str(path), __version__, inputs, plots)
+
+
+def _leaves(data: Any, prefix: str = "") -> Iterator[tuple[str, Any]]:
+    if isinstance(data, dict):
+        if {"nominal"} <= set(data):  # a toleranced value, as one input
+            yield prefix, data
+            return
+        for key, value in data.items():
+            yield from _leaves(value, f"{prefix}.{key}" if prefix else str(key))
+    elif isinstance(data, list):
+        for i, value in enumerate(data, 1):
+            yield from _leaves(value, f"{prefix}.{i}")
+    else:
+        yield prefix, data
+
+
+def _inputs(data: Any, spec: Any) -> Iterator[tuple[str, str, str]]:
+    """(field, as written, in SI) of every input the spec gives."""
+    for name, written in _leaves(data):
+        if name in ("kind", "name"):
+            continue
+        shown = written if isinstance(written, str) else (
+            "{" + ", ".join(f"{k}: {v}" for k, v in written.items()) + "}"
+            if isinstance(written, dict) else str(written))
+        try:
+            found = resolve_field(spec, name)
+        except FieldPathError:
+            yield name, shown, ""
+            continue
+        value = found.value
+        if isinstance(value, Measured):
+            value = value.nominal
+        parsed = field_parser(found.info) if found.info is not None else None
+        unit = "" if parsed is None or parsed[2] == "1" else f" {parsed[2]}"
+        si = f"{value!r}{unit}" if isinstance(value, float) else str(value)
+        yield name, shown, si
+
+
+def _plots(kind: Any, spec: Any, evaluation: Any) -> list[tuple[str, str]]:
+    """The plots that fit the kind: a bearing's life against its load, a drive's
+    bearings' lives against the required life, a duty cycle's damage per bin."""
+    plots = []
+    results = evaluation.results
+    shares = sorted((key for key in results if re.fullmatch(r"duty_\d+_damage_share", key)),
+                    key=lambda key: int(key.split("_")[1]))
+    if shares:
+        plots.append(_damage_plot(evaluation, shares))
+    elif kind.name in ("rolling-bearing", "ball-bearing"):
+        curve = _life_against_load(kind, spec, evaluation)
+        if curve is not None:
+            plots.append(curve)
+    if kind.name == "bevel-drive":
+        plots.append(_drive_lives(evaluation))
+    return plots
+
+
+def _required_life(evaluation: Any) -> float | None:
+    """The required life [s], read from the life's verdict."""
+    for verdict in evaluation.verdicts:
+        if verdict.key == "life_margin":
+            return float(verdict.limit)
+    return None
+
+
+def _life_against_load(kind: Any, spec: Any, evaluation: Any) -> tuple[str, str] | None:
+    from bearingcalc.sweeps import parse_axis, run_sweep
+
+    load = float(spec.radial_load) if not isinstance(spec.radial_load, Measured) else float(
+        spec.radial_load.nominal)
+    life = evaluation.results.get("modified_rating_life")
+    if not load > 0 or life is None:
+        return None
+    low, high = (factor * load for factor in LOAD_SPAN)
+    try:
+        solved = run_sweep(kind, spec, evaluation.source,
+                           [parse_axis(f"radial_load={low!r}N:{high!r}N:60", spec)])
+    except (SpecError, ValueError):
+        return None
+    loads = solved.inputs["radial_load"] / 1e3
+    lives = solved.results["modified_rating_life"] / 3600.0
+    required = _required_life(evaluation)
+
+    def draw(axes: Any) -> None:
+        axes.plot(loads, lives, color="#4c72b0", label="modified rating life")
+        axes.plot([load / 1e3], [life / 3600.0], "o", color="#c44e52",
+                  label="the operating point")
+        if required is not None:
+            axes.axhline(required / 3600.0, color="#c44e52", linestyle=":",
+                         label="required life")
+        axes.set_xscale("log")
+        axes.set_yscale("log")
+        axes.set_xlabel("radial load [kN]")
+        axes.set_ylabel("modified rating life [h]")
+        axes.grid(alpha=0.3, which="both")
+        axes.legend(fontsize="small")
+
+    return ("The modified rating life against the radial load, the other inputs as given "
+            "(ISO 281, the same solver as the results above).", svg_of(draw))
+
+
+def _drive_lives(evaluation: Any) -> tuple[str, str]:
+    results = evaluation.results
+    keys = [key for key in results if key.endswith("_modified_rating_life")]
+    names = [key.removesuffix("_modified_rating_life").replace("_", " ") for key in keys]
+    lives = np.array([np.inf if results[key] is None else results[key] / 3600.0
+                      for key in keys])
+    required = _required_life(evaluation)
+
+    def draw(axes: Any) -> None:
+        axes.barh(names, np.where(np.isfinite(lives), lives, 0.0), color="#4c72b0")
+        if required is not None:
+            axes.axvline(required / 3600.0, color="#c44e52", linestyle=":",
+                         label="required life (of the system)")
+            axes.legend(fontsize="small")
+        axes.set_xscale("log")
+        axes.set_xlabel("modified rating life [h]")
+        axes.grid(alpha=0.3, axis="x", which="both")
+
+    return ("Each bearing's modified rating life and the system's, against the required "
+            "life.", svg_of(draw))
+
+
+def _damage_plot(evaluation: Any, shares: list[str]) -> tuple[str, str]:
+    results = evaluation.results
+    bins = [evaluation.row_names.get(key.rsplit("_", 2)[0], key.split("_")[1])
+            for key in shares]
+    damage = [100.0 * (results[key] or 0.0) for key in shares]
+    times = [100.0 * (results.get(key.replace("damage", "time")) or 0.0) for key in shares]
+
+    def draw(axes: Any) -> None:
+        positions = np.arange(len(shares))
+        axes.bar(positions - 0.2, times, width=0.4, color="#8da0cb", label="time share")
+        axes.bar(positions + 0.2, damage, width=0.4, color="#c44e52", label="damage share")
+        axes.set_xticks(positions, [str(name) for name in bins])
+        axes.set_ylabel("share [%]")
+        axes.set_xlabel("bin of the duty cycle")
+        axes.legend(fontsize="small")
+        axes.grid(alpha=0.3, axis="y")
+
+    return ("Each bin's share of the time and of the fatigue damage (Palmgren–Miner).",
+            svg_of(draw))

@@ -1,0 +1,178 @@
+"""The calculation report: one self-contained HTML file per spec file (CSS and every plot
+inlined as SVG, no external resource), to print and file with the drawing.
+
+It holds a header (name, kind, verdict in words, date, bearingcalc's version, the
+spec's path and SHA-256), the inputs as written and in SI, every result by its group
+with its unit and meaning (and its SI value, as the JSON gives it), the verdict lines,
+the warnings, the standards the kind applies, the plots that fit the kind, and the spec
+verbatim.
+"""
+
+from __future__ import annotations
+
+import datetime
+import hashlib
+import io
+import re
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from html import escape
+from typing import TYPE_CHECKING, Any
+
+from bearingcalc.reports.formatting import format_number, verdict_line
+from bearingcalc.units import to_display
+
+if TYPE_CHECKING:
+    from bearingcalc.evaluation import Evaluation
+    from bearingcalc.kinds import Kind
+
+#: The standards and methods each kind applies, with their sections.
+STANDARDS: dict[str, tuple[str, ...]] = {
+    "thrust-bearing": ("Pure rolling of a ball between a turning shaft and a fixed race, "
+                       "b = r(1 + sinθ)/(cosθ − sinθ), and the spin-to-roll ratio at the "
+                       "shaft contact: docs/physics.md §1",
+                       "Hertz point contact, with the complete elliptic integrals by the "
+                       "arithmetic-geometric mean: docs/physics.md §6"),
+    "disk-on-circle": ("A disk rolling without slipping on a fixed or turning circle: "
+                       "docs/physics.md §2",),
+    "cone-on-plane": ("A cone rolling on a plane about its fixed apex: docs/physics.md §3",),
+    "bevel-gears": ("The epicyclic bevel pair, ω_AS = (b/a)(ω_Z − Ω): docs/physics.md §4",
+                    "Blank geometry (ISO 23509 cone geometry, Gleason proportions), tooth "
+                    "forces and the ANSI/AGMA 2003 rating in the SI form of Budynas & "
+                    "Nisbett ch. 15, with AGMA 2003-D19's K_x of spiral teeth: "
+                    "docs/physics.md §8"),
+    "rolling-bearing": ("ISO 281:2007 basic dynamic load rating, dynamic equivalent load, "
+                        "basic and modified rating life (a_ISO from e_C and κ), and ISO "
+                        "76:2006 basic static load rating, static equivalent load and static "
+                        "safety: docs/physics.md §5",
+                        "Hertz contact of balls and rollers: docs/physics.md §6; bearing "
+                        "kinematics: §7; duty cycles (Palmgren–Miner): §11"),
+    "bevel-drive": ("The pair's geometry, forces and ANSI/AGMA 2003 rating: docs/physics.md "
+                    "§8",
+                    "Each shaft's statics on two bearings, the induced axial forces and load "
+                    "cases of an adjusted pair, ISO 281:2007 lives and the system's life: "
+                    "docs/physics.md §9; duty cycles: §11"),
+}
+STANDARDS["ball-bearing"] = STANDARDS["rolling-bearing"]
+
+_CSS = """
+body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; font-size: 10pt;
+       margin: 1.5em; color: #111; }
+h1 { font-size: 16pt; margin-bottom: 0.2em; } h2 { font-size: 12pt; margin-top: 1.4em;
+  border-bottom: 1px solid #999; } h3 { font-size: 10.5pt; margin: 0.8em 0 0.3em; }
+table { border-collapse: collapse; margin: 0.3em 0 0.8em; }
+th, td { border: 1px solid #bbb; padding: 2px 6px; vertical-align: top; }
+th { background: #eee; text-align: left; } td.number { text-align: right;
+  font-variant-numeric: tabular-nums; white-space: nowrap; }
+.pass { color: #1a7f37; font-weight: bold; } .fail { color: #b42318; font-weight: bold; }
+pre { background: #f6f6f6; border: 1px solid #ddd; padding: 0.6em; font-size: 8.5pt;
+      white-space: pre-wrap; }
+.meta td { border: none; padding: 0 1em 0 0; } figure { margin: 0.5em 0; }
+figure svg { max-width: 100%; height: auto; }
+@page { size: A4; margin: 15mm; }
+@media print { body { margin: 0; } h2 { break-after: avoid; }
+  section { break-before: page; } section.first { break-before: avoid; }
+  table, figure { break-inside: avoid; } }
+"""
+
+
+def report_html(evaluations: Sequence[Evaluation], kinds: Mapping[str, Kind],
+                spec_text: str, spec_path: str, version: str,
+                inputs: Sequence[list[tuple[str, str, str]]],
+                plots: Sequence[list[tuple[str, str]]]) -> str:
+    """The whole report of a spec file: one section per document. ``inputs[i]`` is the
+    i-th document's (field, as written, in SI) rows, ``plots[i]`` its (caption, SVG)."""
+    digest = hashlib.sha256(spec_text.encode("utf-8")).hexdigest()
+    today = datetime.datetime.now(datetime.timezone.utc).date().isoformat()
+    title = escape(evaluations[0].name if len(evaluations) == 1 else spec_path)
+    parts = [f"<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+             f"<title>{title}: calculation report</title><style>{_CSS}</style></head><body>"]
+    for i, evaluation in enumerate(evaluations):
+        parts.append(_section(evaluation, kinds[evaluation.kind], i == 0, today, version,
+                              spec_path, digest, inputs[i], plots[i]))
+    parts.append(f"<section><h2>The spec, verbatim</h2><p>{escape(spec_path)}, SHA-256 "
+                 f"<code>{digest}</code></p><pre>{escape(spec_text)}</pre></section>")
+    parts.append("</body></html>\n")
+    return "".join(parts)
+
+
+def _section(evaluation: Evaluation, kind: Kind, first: bool, today: str, version: str,
+             spec_path: str, digest: str, inputs: list[tuple[str, str, str]],
+             plots: list[tuple[str, str]]) -> str:
+    verdict = ("<span class=\"pass\">PASS</span>: every limit is met" if
+               evaluation.within_limits else "<span class=\"fail\">FAIL</span>: a limit is "
+               "broken")
+    if not evaluation.margins:
+        verdict = "<span class=\"pass\">PASS</span>: no limit judged"
+    out = [f"<section class=\"{'first' if first else ''}\">",
+           f"<h1>{escape(evaluation.name)}</h1>",
+           "<table class=\"meta\">",
+           *(f"<tr><td>{label}</td><td>{value}</td></tr>" for label, value in (
+               ("kind", escape(evaluation.kind)), ("verdict", verdict), ("date", today),
+               ("bearingcalc", escape(version)), ("spec", escape(spec_path)),
+               ("SHA-256", f"<code>{digest}</code>"),
+               *((escape(key), escape(value)) for key, value in evaluation.sources.items()))),
+           "</table>"]
+    out.append("<h2>Inputs</h2><table><tr><th>input</th><th>as written</th><th>SI</th></tr>")
+    out += [f"<tr><td>{escape(name)}</td><td>{escape(written)}</td>"
+            f"<td class=\"number\">{escape(si)}</td></tr>" for name, written, si in inputs]
+    out.append("</table>")
+    out.append("<h2>Results</h2>")
+    out += list(_result_tables(evaluation, kind))
+    out.append("<h2>Verdict</h2><ul>")
+    if evaluation.within_limits:
+        lines = [verdict_line(v) for v in evaluation.verdicts] or ["no limit judged"]
+        out += [f"<li class=\"pass\">PASS: {escape(line)}</li>" for line in lines]
+    else:
+        out += [f"<li class=\"fail\">FAIL: {escape(line)}</li>"
+                for line in evaluation.violations]
+    out.append("</ul>")
+    if evaluation.warnings:
+        out.append("<h2>Warnings</h2><ul>")
+        out += [f"<li>{escape(warning)}</li>" for warning in evaluation.warnings]
+        out.append("</ul>")
+    out.append("<h2>Standards and methods</h2><ul>")
+    out += [f"<li>{escape(line)}</li>" for line in STANDARDS.get(evaluation.kind, ())]
+    out.append("</ul>")
+    for caption, svg in plots:
+        out.append(f"<figure>{svg}<figcaption>{escape(caption)}</figcaption></figure>")
+    out.append("</section>")
+    return "".join(out)
+
+
+def _result_tables(evaluation: Evaluation, kind: Kind) -> Iterator[str]:
+    grouped: set[str] = set()
+    groups = [*kind.groups.items(), ("other", tuple(evaluation.results))]
+    for heading, keys in groups:
+        present = [key for key in keys if key in evaluation.results and key not in grouped]
+        if not present:
+            continue
+        grouped.update(present)
+        yield (f"<h3>{escape(heading)}</h3><table><tr><th>result</th><th>value</th>"
+               "<th>unit</th><th>meaning</th><th>SI</th></tr>")
+        for key in present:
+            value = evaluation.results[key]
+            unit, factor = kind.display.get(key) or to_display(1.0, evaluation.units[key])[::-1]
+            shown = "unbounded" if value is None else format_number(value * factor)
+            si = "null" if value is None else repr(value)
+            yield (f"<tr><td>{escape(key)}</td><td class=\"number\">{escape(shown)}</td>"
+                   f"<td>{escape(unit)}</td><td>{escape(kind.results[key][1])}</td>"
+                   f"<td class=\"number\" data-key=\"{escape(key)}\">{escape(si)}</td></tr>")
+        yield "</table>"
+
+
+def svg_of(draw: Callable[[Any], None]) -> str:
+    """A matplotlib figure drawn by ``draw(axes)`` as inline SVG (no XML declaration)."""
+    from bearingcalc.plots import _pyplot
+
+    plt = _pyplot()
+    figure, axes = plt.subplots(figsize=(7, 3.6), dpi=100)
+    try:
+        draw(axes)
+        figure.tight_layout()
+        buffer = io.StringIO()
+        figure.savefig(buffer, format="svg")
+    finally:
+        plt.close(figure)
+    text = buffer.getvalue()
+    # The drawing alone: no XML declaration, and no metadata naming outside addresses.
+    return re.sub(r"<metadata>.*?</metadata>", "", text[text.index("<svg"):], flags=re.S)

@@ -1,0 +1,75 @@
+"""The calculation report: valid HTML5 with nothing outside it, every result the JSON's
+number, the spec verbatim; printed by a real browser where one is installed."""
+
+from __future__ import annotations
+
+import json
+import re
+import shutil
+import subprocess
+
+import html5lib
+import pytest
+
+from tests.conftest import ROOT
+
+EXAMPLES = sorted((ROOT / "specs").glob("*.yaml"))
+
+
+def _report(cli, path, tmp_path):
+    target = tmp_path / f"{path.stem}.html"
+    run = cli("report", path, "-o", target)
+    assert run.code == 0, run.err
+    return target.read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda path: path.stem)
+def test_the_report_is_html5_with_the_json_numbers(cli, tmp_path, path):
+    page = _report(cli, path, tmp_path)
+    html5lib.HTMLParser(strict=True).parse(page)  # raises on any parse error
+    # nothing outside the file: no scripts, links, images or external addresses
+    assert not re.search(r"<(script|link|img|iframe)\b", page)
+    assert not [ref for ref in re.findall(r'(?:src|href)="([^"]*)"', page)
+                if not ref.startswith("#")]
+    records = [json.loads(line) for line in cli("solve", path, "--format", "json"
+                                                ).out.splitlines()]
+    shown = re.findall(r'data-key="([^"]+)">([^<]*)<', page)
+    expected = [(key, "null" if value is None else repr(value))
+                for record in records for key, value in record["results"].items()]
+    assert sorted(shown) == sorted(expected)
+    assert path.read_text(encoding="utf-8").splitlines()[0].replace("&", "&amp;").replace(
+        "<", "&lt;").replace(">", "&gt;").replace('"', "&quot;").replace("'", "&#x27;") in page
+
+
+def test_a_bearing_report_plots_its_life_against_its_load(cli, tmp_path):
+    page = _report(cli, ROOT / "specs" / "rolling-bearing.yaml", tmp_path)
+    assert page.count("<svg") == 1 and "required life" in page
+    drive = _report(cli, ROOT / "specs" / "bevel-drive-duty-cycle.yaml", tmp_path)
+    assert drive.count("<svg") == 2  # the damage per bin and the bearings' lives
+
+
+def test_a_bad_spec_is_one_line_and_no_file(cli, tmp_path):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("kind: thrust-bearing\nball_diameter: 12.7\n")
+    target = tmp_path / "bad.html"
+    run = cli("report", bad, "-o", target)
+    assert run.code == 2 and run.err.count("\n") >= 1 and not target.exists()
+
+
+@pytest.mark.skipif(shutil.which("chromium") is None and shutil.which("chromium-browser")
+                    is None, reason="no headless Chromium here (Debian's chromium package)")
+def test_a_browser_prints_each_report(cli, tmp_path):
+    browser = shutil.which("chromium") or shutil.which("chromium-browser")
+    for path in EXAMPLES:
+        page = tmp_path / f"{path.stem}.html"
+        page.write_text(_report(cli, path, tmp_path), encoding="utf-8")
+        pdf, shot = tmp_path / f"{path.stem}.pdf", tmp_path / f"{path.stem}.png"
+        for option, target in (("--print-to-pdf", pdf), ("--screenshot", shot)):
+            subprocess.run([browser, "--headless", "--no-sandbox", "--disable-gpu",
+                            f"{option}={target}", page.as_uri()], check=True,
+                           capture_output=True, timeout=120)
+        assert pdf.stat().st_size > 5000
+        from matplotlib.image import imread
+
+        pixels = imread(shot)
+        assert pixels.std() > 0.01  # not a blank page
