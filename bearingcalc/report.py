@@ -129,8 +129,14 @@ def _life_against_load(kind: Any, spec: Any, evaluation: Any) -> tuple[str, str]
         if required is not None:
             axes.axhline(required / 3600.0, color="#c44e52", linestyle=":",
                          label="required life")
+        from matplotlib.ticker import NullFormatter, ScalarFormatter
+
         axes.set_xscale("log")
         axes.set_yscale("log")
+        axes.xaxis.set_major_formatter(ScalarFormatter())  # 2, 5, 10 kN: plain numbers
+        axes.xaxis.set_minor_formatter(NullFormatter())
+        axes.set_xticks([tick for tick in (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
+                         if low / 1e3 <= tick <= high / 1e3] or axes.get_xticks())
         axes.set_xlabel("radial load [kN]")
         axes.set_ylabel("modified rating life [h]")
         axes.grid(alpha=0.3, which="both")
@@ -142,7 +148,8 @@ def _life_against_load(kind: Any, spec: Any, evaluation: Any) -> tuple[str, str]
 
 def _drive_lives(evaluation: Any) -> tuple[str, str]:
     results = evaluation.results
-    keys = [key for key in results if key.endswith("_modified_rating_life")]
+    keys = [key for key in results if key.endswith("_modified_rating_life")
+            and not key.startswith("duty_")]  # the whole cycle's, not a bin's
     names = [key.removesuffix("_modified_rating_life").replace("_", " ") for key in keys]
     lives = np.array([np.inf if results[key] is None else results[key] / 3600.0
                       for key in keys])
