@@ -314,7 +314,7 @@ def test_every_kind_runs_every_method_with_sobol_in_json(cli, spec):
     assert set(record) >= CONTRACT_TOP
     assert record["samples"] == 4096 and record["seed"] == 0 and record["sampler"] == "sobol"
     for entry in record["inputs"].values():
-        assert set(entry) == {"nominal", "low", "high", "distribution", "std"}
+        assert set(entry) == {"nominal", "low", "high", "distribution", "std", "written_unit"}
     for key, entry in record["results"].items():
         assert {"nominal", "worst_case", "rss", "monte_carlo"} <= set(entry), key
         assert {"min", "max"} <= set(entry["worst_case"])
@@ -480,3 +480,14 @@ def test_a_one_sided_limit_gets_its_cpl(cli):
     assert f"Cpl {expected:.3g} (modified rating life)" in table.out
     out = 1 - record["yield"]
     assert f"{100 * out:.3g} % out of spec" in table.out  # above 0.1 %: in %
+
+
+def test_a_temperature_stays_in_the_unit_it_was_written_in(cli, spec_file):
+    text = ((ROOT / "specs" / "rolling-bearing-spherical-roller.yaml").read_text()
+            .replace("temperature: 70 degC", "temperature: 70 degC ± 5 degC"))
+    assert "70 degC ± 5 degC" in text
+    run = cli("tolerance", spec_file(text), "-n", "2000")
+    assert run.code in (0, 1), run.err
+    row = next(line for line in run.out.splitlines() if "lubrication.temperature" in line)
+    cells = [cell.strip() for cell in row.split("│") if cell.strip()]
+    assert cells[1:5] == ["70", "65", "75", "degC"], cells

@@ -45,6 +45,12 @@ DISTRIBUTIONS = ("normal", "uniform", "triangular")
 MIN_SIGMA_LEVEL, MAX_SIGMA_LEVEL = 1.0, 10.0
 
 
+def _unit_of(written: Any) -> str:
+    """The unit of a quantity as written ('80 degC' -> 'degC'); '' for a bare number."""
+    match = re.match(rf"\s*{NUMBER}\s*(.*?)\s*$", written) if isinstance(written, str) else None
+    return match.group(1) if match else ""
+
+
 @dataclass(frozen=True)
 class Tolerance:
     """A manufacturing tolerance on one input, in SI units.
@@ -61,6 +67,7 @@ class Tolerance:
     distribution: str = "normal"
     sigma_level: float = 3.0
     unit: str = ""          # SI unit of the values
+    written_unit: str = ""  # the nominal's unit as the spec writes it ("degC")
 
     @property
     def center(self) -> float:
@@ -196,7 +203,8 @@ class _Quantity:
             nominal_text = f"{nominal_text} {unit}"
         nominal = parse_quantity(nominal_text, self.dimension)
         band = self._deviation(tolerance_text, "tolerance")
-        return Tolerance(nominal, nominal - band, nominal + band, unit=self.dimension.si_unit)
+        return Tolerance(nominal, nominal - band, nominal + band, unit=self.dimension.si_unit,
+                         written_unit=_unit_of(nominal_text))
 
     def _mapping(self, value: dict[str, Any]) -> Tolerance:
         unknown = sorted(set(value) - _MAPPING_KEYS)
@@ -231,7 +239,8 @@ class _Quantity:
                 f"(the band is ±sigma_level·σ; below 1 the distribution is wider than its "
                 f"band), like 3, got {sigma_level!r}")
         return Tolerance(nominal, nominal - minus, nominal + plus, distribution,
-                         float(sigma_level), self.dimension.si_unit)
+                         float(sigma_level), self.dimension.si_unit,
+                         _unit_of(value["nominal"]))
 
     def _deviation(self, text: Any, what: str) -> float:
         deviation = parse_quantity(text, self.dimension)

@@ -7,7 +7,7 @@ import json
 from typing import IO, TYPE_CHECKING, Any
 
 from bearingcalc.reports.formatting import console, format_number, safe_text
-from bearingcalc.units import to_display
+from bearingcalc.units import TEMPERATURE_UNITS, to_display
 
 if TYPE_CHECKING:  # the report type only; its module loads with the command
     from bearingcalc.studies import StudyReport
@@ -39,7 +39,14 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
         inputs.add_column(column, no_wrap=True, justify="left" if column in (
             "input", "unit", "distribution") else "right")
     for name, entry in record["inputs"].items():
-        shown = [to_display(entry[k], units[name]) for k in ("nominal", "low", "high", "std")]
+        written = entry.get("written_unit", "")
+        if written in TEMPERATURE_UNITS:  # as written: 80 degC stays degC
+            scale, offset = TEMPERATURE_UNITS[written]
+            shown = [((entry[k] - offset) / scale, written) for k in ("nominal", "low", "high")]
+            shown.append((entry["std"] / scale, written))
+        else:
+            shown = [to_display(entry[k], units[name]) for k in ("nominal", "low", "high",
+                                                                  "std")]
         inputs.add_row(name, *(format_number(v) for v, _ in shown[:3]), shown[0][1],
                        entry["distribution"], format_number(shown[3][0]))
     out.print(inputs)

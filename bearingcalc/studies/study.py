@@ -160,5 +160,6 @@ class Study:
         return {item.name: {"nominal": float(field_value(self.spec, item.name)),
                             "low": item.low, "high": item.high,
                             "distribution": item.tolerance.distribution,
-                            "std": item.tolerance.std}
+                            "std": item.tolerance.std,
+                            "written_unit": item.tolerance.written_unit}
                 for item in self.inputs}
