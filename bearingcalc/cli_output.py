@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any, BinaryIO, TypeVar
 
 import typer
-from typer.core import TyperCommand
+from typer.core import TyperCommand, TyperGroup
 
 from bearingcalc.errors import SpecError
 from bearingcalc.output import StagedFiles, Target, check_targets, reason
@@ -219,3 +219,35 @@ class HelpListsKinds(TyperCommand):
             super().format_help(ctx, formatter)
         finally:
             self.help = summary
+
+
+class OneLineUsageErrors(TyperGroup):
+    """The command group whose usage errors (an unknown option, a missing argument, a
+    bad option value) are one line on stderr with exit status 2, as every other error
+    is: no usage block, no box."""
+
+    def main(self, *args: Any, standalone_mode: bool = True, **kwargs: Any) -> Any:
+        if not standalone_mode:
+            return super().main(*args, standalone_mode=False, **kwargs)
+        try:
+            status = super().main(*args, standalone_mode=False, **kwargs)
+        except Exception as error:
+            # click's exceptions (typer may carry its own copy of click): by their kind
+            kinds = {cls.__name__ for cls in type(error).__mro__}
+            if "Abort" in kinds:
+                print("bearingcalc: stopped", file=sys.stderr)
+                sys.exit(130)
+            if "ClickException" not in kinds:
+                raise
+            context = getattr(error, "ctx", None)
+            if "NoArgsIsHelpError" in kinds and context is not None:  # bare: its help
+                print(context.get_help())
+                sys.exit(EXIT_INVALID)
+            where = context.command_path if context is not None else "bearingcalc"
+            message = printable(error.format_message())  # type: ignore[attr-defined]
+            if "UsageError" in kinds:
+                print(f"{where}: {message} (see '{where} -h')", file=sys.stderr)
+                sys.exit(EXIT_INVALID)
+            print(f"{where}: {message}", file=sys.stderr)
+            sys.exit(getattr(error, "exit_code", EXIT_INVALID))
+        sys.exit(status if isinstance(status, int) else EXIT_OK)

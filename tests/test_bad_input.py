@@ -508,3 +508,24 @@ def test_an_error_raised_while_ctrl_c_is_handled_is_an_interruption(capsys):
             raise ImportError("numpy._core.multiarray failed to import") from None
     assert exit_info.value.exit_code == 130
     assert capsys.readouterr().err == "interrupted\n"
+
+
+@pytest.mark.parametrize(("args", "where"), [
+    (["solve", "--formt", "x"], "bearingcalc solve"),
+    (["solve"], "bearingcalc solve"),
+    (["nosuch"], "bearingcalc"),
+    (["tolerance", "specs/tolerances/thrust-bearing.yaml", "-n", "abc"], "bearingcalc tolerance"),
+    (["select", "x.yaml", "--top", "0"], "bearingcalc select"),
+])
+def test_a_usage_error_is_one_line_like_every_other_error(args, where):
+    """An unknown option, a missing argument, an unknown command or a bad option value:
+    one line on stderr naming the command and its help, exit status 2, no usage box."""
+    import subprocess
+    import sys
+
+    run = subprocess.run([sys.executable, "-m", "bearingcalc", *args], capture_output=True,
+                         text=True, cwd=ROOT, check=False)
+    assert run.returncode == 2 and run.stdout == ""
+    assert run.stderr.count("\n") == 1, run.stderr
+    assert run.stderr.startswith(f"{where}: ") and run.stderr.rstrip().endswith(
+        f"(see '{where} -h')"), run.stderr

@@ -25,6 +25,7 @@ from bearingcalc.cli_output import (
     EXIT_LIMIT,
     EXIT_OK,
     HelpListsKinds,
+    OneLineUsageErrors,
     Writer,
     emit,
     errors_as_exit,
@@ -37,7 +38,8 @@ from bearingcalc.cli_output import (
 from bearingcalc.errors import SpecError
 from bearingcalc.output import StagedFiles
 
-app = typer.Typer(add_completion=False, pretty_exceptions_enable=False, no_args_is_help=True,
+app = typer.Typer(cls=OneLineUsageErrors, add_completion=False, pretty_exceptions_enable=False,
+                  no_args_is_help=True,
                   context_settings={"help_option_names": ["-h", "--help"]},
                   help="Rolling-contact machine design: thrust bearings, bevel gears and more.")
 
