@@ -491,3 +491,16 @@ def test_a_temperature_stays_in_the_unit_it_was_written_in(cli, spec_file):
     row = next(line for line in run.out.splitlines() if "lubrication.temperature" in line)
     cells = [cell.strip() for cell in row.split("│") if cell.strip()]
     assert cells[1:5] == ["70", "65", "75", "degC"], cells
+
+
+def test_rss_says_when_the_band_crosses_a_switch(cli, spec_file):
+    """A tapered pair at Fa/Fr = 0.28 whose axial load band (1–4 kN) crosses e = 0.37:
+    X and Y switch within the band, which RSS, linear at the centre, cannot see."""
+    text = (ROOT / "specs" / "rolling-bearing.yaml").read_text().replace(
+        "axial_load: 2.5 kN ", "axial_load: 2.5 kN ± 1.5 kN ", 1)
+    assert "2.5 kN ± 1.5 kN" in text
+    record = json.loads(cli("tolerance", spec_file(text), "-n", "2000", "--format", "json").out)
+    assert record["results"]["modified_rating_life"]["rss"]["switches"] == [
+        "radial_factor", "axial_factor"]
+    assert any(w.startswith("RSS linearises at the centre, but the design switches")
+               for w in record["warnings"])

@@ -122,8 +122,18 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
             f"are impossible designs, e.g. at {at} ({box['reason']}); {covers}the study "
             "fails")
     if "rss" in methods:
+        switches: list[str] = []
         for key, entry in rss(study).items():
             record["results"][key]["rss"] = entry
+            switches = switches or entry.get("switches", [])
+        if switches:
+            trusted = ("the worst case" if "worst-case" in methods else "") + (
+                " or Monte Carlo" if "monte-carlo" in methods else "")
+            record["warnings"].append(
+                f"RSS linearises at the centre, but the design switches within the "
+                f"tolerance band ({', '.join(switches)} change"
+                f"{'s' if len(switches) == 1 else ''} there): trust "
+                f"{trusted.removeprefix(' or ') or 'worst case or Monte Carlo'} instead")
     histograms: dict[str, tuple[NDArray, NDArray]] = {}
     if "monte-carlo" in methods:
         mc = monte_carlo(study, samples, seed, sampler, threads=threads,
