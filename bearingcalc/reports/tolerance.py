@@ -7,7 +7,8 @@ import json
 from typing import IO, TYPE_CHECKING, Any
 
 from bearingcalc.reports.formatting import console, format_number, safe_text
-from bearingcalc.units import TEMPERATURE_UNITS, to_display
+from bearingcalc.units import TEMPERATURE_UNITS
+from bearingcalc.units import to_display as si_display
 
 if TYPE_CHECKING:  # the report type only; its module loads with the command
     from bearingcalc.studies import StudyReport
@@ -28,6 +29,14 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
     record = report.record
     out = console(stream)
     units = record["units"]
+
+    def to_display(value: float, si_unit: str, key: str | None = None) -> tuple[float, str]:
+        """As solve shows it: the kind's own unit for its results (10⁶ rev), else the
+        engineering unit of the SI one."""
+        if key is not None and key in report.display:
+            unit, factor = report.display[key]
+            return value * factor, unit
+        return si_display(value, si_unit)
     out.print(f"[bold]{safe_text(record['name'] or record['spec'])}[/] ({record['kind']}, "
               f"{safe_text(record['spec'])})")
     for key, value in record.items():
@@ -60,13 +69,13 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
     results = record["results"]
     for key in report.governing:
         entry = results[key]
-        unit = to_display(0.0, units[key])[1]
+        unit = to_display(0.0, units[key], key)[1]
 
         def cell(*values: float | None, key: str = key) -> str:
             if any(v is None for v in values):
                 return ""
             # Four digits keep six columns in 80; the JSON carries every digit.
-            return "\n".join(f"{to_display(v, units[key])[0]:.4g}" for v in values)
+            return "\n".join(f"{to_display(v, units[key], key)[0]:.4g}" for v in values)
 
         wc, rss, mc = (entry.get(m) or {} for m in ("worst_case", "rss", "monte_carlo"))
         table.add_row(escape(f"{key}\n[{unit}]") if unit else key, cell(entry["nominal"]),
@@ -84,9 +93,9 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
                             no_wrap=True)
         for key in others:
             wc = results[key].get("worst_case") or {}
-            shown = [to_display(v, units[key]) if v is not None else (None, "")
+            shown = [to_display(v, units[key], key) if v is not None else (None, "")
                      for v in (results[key]["nominal"], wc.get("min"), wc.get("max"))]
-            rest.add_row(key, to_display(0.0, units[key])[1],
+            rest.add_row(key, to_display(0.0, units[key], key)[1],
                          *("" if v is None else format_number(v) for v, _ in shown))
         out.print(rest)
 
@@ -94,14 +103,14 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
     rss_lead = (results.get(lead) or {}).get("rss") if lead else None
     if rss_lead and rss_lead.get("contributions"):
         shares = Table(title=f"which tolerance dominates {lead} (RSS)", title_justify="left")
-        unit = to_display(0.0, units[lead])[1]
+        unit = to_display(0.0, units[lead], lead)[1]
         for column in ("input", "share", f"∂f/∂x · σ [{unit}]" if unit else "∂f/∂x · σ"):
             shares.add_column(escape(column), justify="left" if column == "input" else "right")
         ranked = sorted(rss_lead["contributions"].items(), key=lambda kv: -kv[1])
         for name, share in ranked:
             effect = rss_lead["sensitivities"][name] * record["inputs"][name]["std"]
             shares.add_row(name, f"{100 * share:.2f} %", format_number(
-                to_display(effect, units[lead])[0]))
+                to_display(effect, units[lead], lead)[0]))
         out.print(shares)
 
     if "yield" in record:
@@ -137,14 +146,14 @@ def _terminal_histogram(out: Any, key: str, report: StudyReport, si_unit: str,
     lows, highs, totals = coarse_histogram(*report.histograms[key], rows)
     if totals.size == 0:
         return
-    unit = to_display(0.0, si_unit)[1]
+    unit = si_display(0.0, si_unit)[1]
     out.print()
     out.print(safe_text(f"{key}{f' [{unit}]' if unit else ''}, Monte Carlo histogram:"))
     peak = int(totals.max()) or 1
     for low, high, total in zip(lows, highs, totals.tolist(), strict=True):
         bar = "█" * round(width * total / peak)
-        out.print(f"{format_number(to_display(low, si_unit)[0]):>12} … "
-                  f"{format_number(to_display(high, si_unit)[0]):<12} {bar} {total}")
+        out.print(f"{format_number(si_display(low, si_unit)[0]):>12} … "
+                  f"{format_number(si_display(high, si_unit)[0]):<12} {bar} {total}")
 
 
 def _out_of_spec(fraction: float) -> str:

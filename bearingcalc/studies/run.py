@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 from numpy.typing import NDArray
@@ -32,6 +32,8 @@ class StudyReport:
     governing: list[str]
     limits: dict[str, float]
     margins: tuple[str, ...]
+    #: result key -> (unit, factor from SI) where the kind's tables use their own unit
+    display: dict[str, tuple[str, float]] = field(default_factory=dict)
 
     @property
     def plotted(self) -> str | None:
@@ -156,7 +158,7 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
             else:
                 record["results"][key]["sobol"] = entry
     return StudyReport(_finite(record), histograms, governing, study.limit_values,
-                       tuple(study.margins))
+                       tuple(study.margins), dict(kind.display))
 
 
 def _finite(value: Any) -> Any:
