@@ -195,34 +195,82 @@ class errors_as_exit:
         raise typer.Exit(EXIT_INVALID)
 
 
-class HelpListsKinds(TyperCommand):
+class _WordedParameters:
+    """Help that names a parameter's value in words, not by the parser's types: an
+    option's value by its metavar (``FILE``, ``N``), a flag by none."""
+
+    params: list[Any]
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        for param in self.params:
+            _quiet_type(param)
+
+    def get_help_option(self, ctx: click.Context) -> Any:
+        option = super().get_help_option(ctx)  # type: ignore[misc]
+        if option is not None:
+            _quiet_type(option)
+        return option
+
+
+class WordedHelp(_WordedParameters, TyperCommand):
+    """A command whose help speaks in words, and whose usage line names the arguments
+    as the help does: ``[OPTIONS] SPEC...``."""
+
+    def collect_usage_pieces(self, ctx: click.Context) -> list[str]:
+        pieces = [self.options_metavar] if self.options_metavar else []
+        for param in self.get_params(ctx):
+            if param.param_type_name == "argument":
+                word = param.metavar or (param.name or "").upper()
+                word += "..." if param.nargs != 1 and not word.endswith("...") else ""
+                pieces.append(word if param.required else f"[{word}]")
+        return pieces
+
+
+def _quiet_type(param: Any) -> None:
+    """Show a flag with no value, and an argument by its metavar alone.
+
+    Newer typer names the Python type beside a parameter (``<bool>``,
+    ``<list[Path]>``); a flag's empty metavar replaces it, and an argument's metavar
+    already says what it is.
+    """
+    if getattr(param, "is_flag", False) and param.metavar is None:
+        param.metavar = ""
+    if param.param_type_name == "argument" and hasattr(param, "display_type_rich"):
+        param.display_type_rich = lambda ctx: None
+
+
+class HelpListsKinds(WordedHelp):
     """A command whose ``--help`` ends with every registered kind and its summary.
 
     The list is read from the registry when the help is shown, so a new kind appears
     in it without an edit to the command, and a run that shows no help never builds it.
+    It is a table of its own, so a summary that wraps stays in its column.
     """
 
     def format_help(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
-        from rich.markup import escape
+        from rich import box
+        from rich.console import Console
+        from rich.panel import Panel
+        from rich.table import Table
 
         from bearingcalc.kinds import KINDS
 
-        width = max(map(len, KINDS))
-        kinds = "\n".join(f"  {name:{width}}  {escape(kind.summary)}"
-                          for name, kind in KINDS.items())
-        summary = self.help
-        # typer removes the indentation that all lines but the first share: the last
-        # line, flush left, keeps the list's.
-        self.help = (f"{summary}\n\nKinds (a spec's 'kind:'):\n{kinds}\n\n"
-                     "'bearingcalc new KIND' prints a commented template spec of KIND.")
-        try:
-            super().format_help(ctx, formatter)
-        finally:
-            self.help = summary
+        super().format_help(ctx, formatter)
+        kinds = Table.grid(padding=(0, 2))
+        kinds.add_column(style="bold cyan", no_wrap=True)
+        kinds.add_column()
+        for name, kind in KINDS.items():
+            kinds.add_row(name, kind.summary)
+        kinds.add_row("", "")
+        kinds.add_row("", "'bearingcalc new KIND' prints a commented template spec of KIND.")
+        Console().print(Panel(kinds, title="Kinds (a spec's 'kind:')", title_align="left",
+                              border_style="dim", box=box.ROUNDED))
 
 
-class OneLineUsageErrors(TyperGroup):
-    """The command group whose usage errors (an unknown option, a missing argument, a
+class OneLineUsageErrors(_WordedParameters, TyperGroup):
+    """The command group whose help speaks in words (:class:`WordedHelp`), and whose
+    usage errors (an unknown option, a missing argument, a
     bad option value) are one line on stderr with exit status 2, as every other error
     is: no usage block, no box."""
 

@@ -252,6 +252,32 @@ def test_help_lists_every_registered_kind_with_its_summary(cli, monkeypatch):
     assert added.summary in text
 
 
+COMMANDS = ("solve", "check", "schema", "new", "report", "select", "tolerance", "sweep")
+
+
+@pytest.mark.parametrize("command", ("", *COMMANDS))
+def test_help_speaks_in_words(cli, command):
+    """No parser types (``<bool>``, ``<list[Path]>``), no braces round the arguments:
+    every value an option takes is a capitalised word, and a flag takes none."""
+    run = cli(*command.split(), "--help")
+    assert run.code == 0, run.err
+    text = re.sub(r"\x1b\[[0-9;]*m", "", run.out)
+    assert not re.search(r"<[\w|\[\], ]+>", text), text
+    assert "{" not in text and "list[" not in text
+    usage = next(line for line in text.splitlines() if "Usage:" in line)
+    assert re.search(r"\[OPTIONS\]( (SPEC|PATH)\.\.\.| SPEC| \[KIND\]| COMMAND)?", usage)
+    for line in text.splitlines():
+        for flag in ("--version", "--help", "--debug", "--all", "--list", "--sobol"):
+            if re.search(rf"{flag}\b", line):
+                after = line.split(flag, 1)[1]
+                assert not re.match(r"\s+(-\w\s+)?[A-Z<]{2,}", after), line
+
+
+def test_solve_usage_names_its_specs(cli):
+    text = re.sub(r"\x1b\[[0-9;]*m", "", cli("solve", "--help").out)
+    assert re.search(r"Usage: \S+ solve \[OPTIONS\] SPEC\.\.\.\s", text)
+
+
 def test_solver_is_importable_and_takes_arrays():
     from bearingcalc import solve_thrust_bearing
 

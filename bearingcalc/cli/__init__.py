@@ -26,6 +26,7 @@ from bearingcalc.cli_output import (
     EXIT_OK,
     HelpListsKinds,
     OneLineUsageErrors,
+    WordedHelp,
     Writer,
     emit,
     errors_as_exit,
@@ -55,10 +56,11 @@ class SolveFormat(str, Enum):
 DebugOption = Annotated[bool, typer.Option("--debug", help="Show tracebacks of internal errors.")]
 # Folders are refused by check_targets, in one line like every other unwritable target.
 OutputOption = Annotated[Path | None, typer.Option(
-    "--output", "-o", help="Write to this file instead of stdout (atomically: a failed run "
-    "leaves an existing file as it was; never one of the specs the run reads).")]
+    "--output", "-o", metavar="FILE",
+    help="Write to this file instead of stdout (atomically: a failed run leaves "
+    "an existing file as it was; never one of the specs the run reads).")]
 PlotOption = Annotated[Path | None, typer.Option(
-    "--plot", help="Draw a chart to this .png or .svg file.")]
+    "--plot", metavar="FILE", help="Draw a chart to this .png or .svg file.")]
 
 
 def _use_catalogue(path: Path | None) -> Path | None:
@@ -69,7 +71,7 @@ def _use_catalogue(path: Path | None) -> Path | None:
 
 
 CatalogueOption = Annotated[Path | None, typer.Option(
-    "--catalogue", callback=_use_catalogue, show_default=False,
+    "--catalogue", callback=_use_catalogue, show_default=False, metavar="FILE",
     help="The bearing catalogue (CSV) of specs that name a designation but no catalogue "
     "(default: the file the environment variable BEARINGCALC_CATALOGUE names).")]
 
@@ -97,7 +99,8 @@ def solve(
     specs: Annotated[list[Path], typer.Argument(
         help="YAML spec files.", show_default=False, metavar="SPEC...")],
     output_format: Annotated[SolveFormat, typer.Option(
-        "--format", "-f", help="table (engineering units), json (JSON Lines, SI) or csv (SI).")
+        "--format", "-f", metavar="FORMAT",
+        help="table (engineering units), json (JSON Lines, SI) or csv (SI).")
     ] = SolveFormat.table,
     catalogue: CatalogueOption = None,
     debug: DebugOption = False,
@@ -136,17 +139,18 @@ class CheckFormat(str, Enum):
     junit = "junit"
 
 
-@app.command()
+@app.command(cls=WordedHelp)
 def check(
     paths: Annotated[list[str], typer.Argument(
         help="Spec files, folders (searched recursively for *.yaml and *.yml) or globs.",
         show_default=False, metavar="PATH...")],
     output_format: Annotated[CheckFormat, typer.Option(
-        "--format", "-f", help="table, json (JSON Lines) or junit (JUnit XML).")
+        "--format", "-f", metavar="FORMAT",
+        help="table, json (JSON Lines) or junit (JUnit XML).")
     ] = CheckFormat.table,
     output: OutputOption = None,
     jobs: Annotated[int | None, typer.Option(
-        "--jobs", "-j", min=1, help="Worker processes (default: the number of cores).",
+        "--jobs", "-j", min=1, metavar="N", help="Worker processes (default: the number of cores).",
         show_default=False)] = None,
     show_all: Annotated[bool, typer.Option(
         "--all", help="Table: list passing specs too when there are many.")] = False,
@@ -177,10 +181,11 @@ def check(
         raise typer.Exit(batch.exit_status(records))
 
 
-@app.command()
+@app.command(cls=WordedHelp)
 def schema(
     kind: Annotated[str | None, typer.Option(
-        "--kind", "-k", help="Only this kind's schema (see 'bearingcalc new --list').")] = None,
+        "--kind", "-k", metavar="KIND",
+        help="Only this kind's schema (see 'bearingcalc new --list').")] = None,
 ) -> None:
     """Print the JSON Schema (draft 2020-12) of the spec format, for editors and CI."""
     import json
@@ -196,12 +201,13 @@ def schema(
         write_stdout(lambda stream: stream.write(text))
 
 
-@app.command()
+@app.command(cls=WordedHelp)
 def new(
-    kind: Annotated[str | None, typer.Argument(help="The kind of spec.", show_default=False)
+    kind: Annotated[str | None, typer.Argument(
+        help="The kind of spec.", show_default=False, metavar="KIND")
                     ] = None,
     bearing_type: Annotated[str | None, typer.Option(
-        "--type", help="A template of this type, where the kind has several.",
+        "--type", metavar="TYPE", help="A template of this type, where the kind has several.",
         show_default=False)] = None,
     list_kinds: Annotated[bool, typer.Option("--list", help="List the kinds.")] = False,
 ) -> None:

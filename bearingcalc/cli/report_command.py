@@ -9,11 +9,17 @@ from typing import Annotated
 import typer
 
 from bearingcalc.cli import CatalogueOption, DebugOption, OutputOption, app
-from bearingcalc.cli_output import emit, errors_as_exit, output_target, refuse_unwritable
+from bearingcalc.cli_output import (
+    WordedHelp,
+    emit,
+    errors_as_exit,
+    output_target,
+    refuse_unwritable,
+)
 from bearingcalc.output import StagedFiles
 
 
-@app.command("report")
+@app.command("report", cls=WordedHelp)
 def report_command(
     spec_path: Annotated[Path, typer.Argument(
         help="A YAML spec file (every document of it goes in the report).",
@@ -22,8 +28,9 @@ def report_command(
     catalogue: CatalogueOption = None,
     debug: DebugOption = False,
 ) -> None:
-    """A calculation report to print and file: inputs, results, verdict, standards,
-    plots and the spec itself, in one HTML file with nothing outside it.
+    """A calculation report to print and file, one HTML file with nothing outside it.
+
+    It holds the inputs, results, verdict, standards, plots and the spec itself.
 
     Exit status: 0 the report is written; 2 the spec cannot be read or solved.
     """

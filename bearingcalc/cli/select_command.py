@@ -11,6 +11,7 @@ import typer
 
 from bearingcalc.cli import EXIT_LIMIT, CatalogueOption, DebugOption, OutputOption, app
 from bearingcalc.cli_output import (
+    WordedHelp,
     Writer,
     emit,
     errors_as_exit,
@@ -29,7 +30,7 @@ class SelectFormat(str, Enum):
     csv = "csv"
 
 
-@app.command("select")
+@app.command("select", cls=WordedHelp)
 def select_command(
     spec_path: Annotated[Path, typer.Argument(
         help="A rolling-bearing spec (loads, speed, lubrication, limits; bore_diameter the "
@@ -37,27 +38,33 @@ def select_command(
         show_default=False, metavar="SPEC")],
     catalogue: CatalogueOption = None,
     bearing_type: Annotated[list[str] | None, typer.Option(
-        "--type", "-t", help="Allow this bearing type (repeatable; default: the spec's type, "
+        "--type", "-t", metavar="TYPE",
+        help="Allow this bearing type (repeatable; default: the spec's type, "
         "else every type).", show_default=False)] = None,
     series: Annotated[list[str] | None, typer.Option(
-        "--series", "-s", help="Allow this series, as designations begin: 62, 73, NU22, 302 "
+        "--series", "-s", metavar="SERIES",
+        help="Allow this series, as designations begin: 62, 73, NU22, 302 "
         "(repeatable; default: every series).", show_default=False)] = None,
     max_outside_diameter: Annotated[str | None, typer.Option(
-        "--max-outside-diameter", help="The largest outside diameter D, like '62 mm'.",
+        "--max-outside-diameter", metavar="LENGTH",
+        help="The largest outside diameter D, like '62 mm'.",
         show_default=False)] = None,
     max_width: Annotated[str | None, typer.Option(
-        "--max-width", help="The largest width B (T of a tapered bearing), like '17 mm'.",
+        "--max-width", metavar="LENGTH",
+        help="The largest width B (T of a tapered bearing), like '17 mm'.",
         show_default=False)] = None,
     top: Annotated[int, typer.Option(
-        "--top", "-n", min=1, max=MAX_TOP, help="List this many of each.")] = 5,
+        "--top", "-n", min=1, max=MAX_TOP, metavar="N", help="List this many of each.")] = 5,
     output_format: Annotated[SelectFormat, typer.Option(
-        "--format", "-f", help="table (engineering units), json (JSON Lines, SI) or csv (SI).")
+        "--format", "-f", metavar="FORMAT",
+        help="table (engineering units), json (JSON Lines, SI) or csv (SI).")
     ] = SelectFormat.table,
     output: OutputOption = None,
     debug: DebugOption = False,
 ) -> None:
-    """The smallest bearings of a catalogue that meet every limit of the spec, ranked by
-    outside diameter, width and mass, and the nearest that fail.
+    """The smallest bearings of a catalogue that meet every limit of the spec.
+
+    They are ranked by outside diameter, width and mass; the nearest that fail follow.
 
     Exit status: 0 a bearing qualifies (in every position a drive selects); 1 none
     does; 2 the spec, the catalogue or the options are invalid, or no bearing fits.

@@ -21,6 +21,7 @@ from bearingcalc.cli import (
     app,
 )
 from bearingcalc.cli_output import (
+    WordedHelp,
     Writer,
     check_parquet_output,
     check_plot_name,
@@ -56,29 +57,34 @@ class StudyFormat(str, Enum):
     json = "json"
 
 
-@app.command()
+@app.command(cls=WordedHelp)
 def tolerance(
     spec_path: Annotated[Path, typer.Argument(
         help="A YAML spec with tolerances on some inputs ('20 deg ± 0.25 deg').",
         show_default=False, metavar="SPEC")],
     method: Annotated[str, typer.Option(
-        "--method", "-m", help="Comma-separated: worst-case, rss, monte-carlo.")
+        "--method", "-m", metavar="METHODS", help="Comma-separated: worst-case, rss, monte-carlo.")
     ] = "worst-case,rss,monte-carlo",
-    samples: Annotated[int, typer.Option("--samples", "-n", parser=_sample_count,
+    samples: Annotated[int, typer.Option("--samples", "-n", parser=_sample_count, metavar="N",
                                          help="Monte Carlo samples (1e5, 100000).")] = 100_000,
-    seed: Annotated[int, typer.Option("--seed", min=0, help="Seed of the sampler.")] = 0,
-    sampler: Annotated[str, typer.Option("--sampler", help="sobol or random.")] = "sobol",
+    seed: Annotated[int, typer.Option(
+        "--seed", min=0, metavar="N", help="Seed of the sampler.")] = 0,
+    sampler: Annotated[str, typer.Option(
+        "--sampler", metavar="SAMPLER", help="sobol or random.")] = "sobol",
     sobol: Annotated[bool, typer.Option("--sobol", help="Add Sobol sensitivity indices.")
                      ] = False,
     result: Annotated[list[str] | None, typer.Option(
-        "--result", "-r", help="Study this result (repeatable): it leads the table and plot, "
+        "--result", "-r", metavar="KEY",
+        help="Study this result (repeatable): it leads the table and plot, "
         "and Monte Carlo and Sobol cover only the chosen results.")] = None,
     output_format: Annotated[StudyFormat, typer.Option(
-        "--format", "-f", help="table (engineering units) or json (SI).")] = StudyFormat.table,
+        "--format", "-f", metavar="FORMAT", help="table (engineering units) or json (SI).")
+    ] = StudyFormat.table,
     plot: PlotOption = None,
     output: OutputOption = None,
     jobs: Annotated[int | None, typer.Option(
-        "--jobs", "-j", min=1, help="Threads for Monte Carlo (default: the number of cores).",
+        "--jobs", "-j", min=1, metavar="N",
+        help="Threads for Monte Carlo (default: the number of cores).",
         show_default=False)] = None,
     catalogue: CatalogueOption = None,
     debug: DebugOption = False,
@@ -136,19 +142,21 @@ class SweepFormat(str, Enum):
     parquet = "parquet"
 
 
-@app.command()
+@app.command(cls=WordedHelp)
 def sweep(
     spec_path: Annotated[Path, typer.Argument(
         help="A YAML spec; the varied inputs replace its values.", show_default=False,
         metavar="SPEC")],
     vary: Annotated[list[str], typer.Option(
-        "--vary", "-v", help="NAME=START:STOP:N with units, e.g. contact_angle=5deg:40deg:36; "
+        "--vary", "-v", metavar="NAME=START:STOP:N",
+        help="NAME=START:STOP:N with units, e.g. contact_angle=5deg:40deg:36; "
         "once for a line, twice for a grid.", show_default=False)],
     result: Annotated[list[str] | None, typer.Option(
-        "--result", "-r", help="Results for the table and plot (repeatable) "
+        "--result", "-r", metavar="KEY", help="Results for the table and plot (repeatable) "
         "(default: the kind's governing results).")] = None,
     output_format: Annotated[SweepFormat | None, typer.Option(
-        "--format", "-f", help="table, csv, json (JSON Lines) or parquet (default: csv for "
+        "--format", "-f", metavar="FORMAT",
+        help="table, csv, json (JSON Lines) or parquet (default: csv for "
         "--output *.csv, json for *.json or *.jsonl, parquet for *.parquet, else table).",
         show_default=False)
     ] = None,
