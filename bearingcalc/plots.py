@@ -88,7 +88,7 @@ def tolerance_histogram(report: StudyReport, key: str, path: str | Path | IO[byt
 
 def sweep_plot(sweep: Sweep, keys: Sequence[str], path: str | Path | IO[bytes], *,
                fmt: str | None = None, chosen: bool = False) -> None:
-    """A line sweep: the chosen results against the input, one y axis per unit, limits
+    """A line sweep: the chosen results against the input, one panel per unit, limits
     drawn and the range within limits shaded. A grid sweep: filled contours of the first
     chosen result, the limit contour bold, impossible designs left blank. Unless the
     results were ``chosen`` by the user, a margin gives way to the quantity it judges
@@ -96,7 +96,7 @@ def sweep_plot(sweep: Sweep, keys: Sequence[str], path: str | Path | IO[bytes], 
     plt = _pyplot()
     figure, axes = plt.subplots(figsize=(8, 5), dpi=120)
     if len(sweep.axes) == 1:
-        _line(sweep, keys, figure, axes)
+        axes = _line(sweep, keys, figure, axes)
     else:
         key = keys[0]
         quantity = _judged_quantity(sweep, key)
@@ -182,7 +182,10 @@ def _power_law(x: NDArray, y: NDArray) -> bool:
     return abs(slope) > 0.5 and float(np.std(residual)) < 1e-3 * max(float(np.std(ly)), 1e-300)
 
 
-def _line(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> None:
+def _line(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> Any:
+    """Draw a line sweep; returns the top panel. Results of one unit share a panel, and
+    panels of different units are stacked over the one input axis, so no limit line of
+    one result seems to cross the curve of another."""
     axis = sweep.axes[0]
     x_scale, x_label = _axis_label(axis.name, axis.unit)
     x = sweep.inputs[axis.name] * x_scale
@@ -193,52 +196,111 @@ def _line(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> None:
     by_unit: dict[str, list[str]] = {}
     for key in keys:
         by_unit.setdefault(units[key], []).append(key)
+    if len(by_unit) > 1:
+        figure.delaxes(axes)
+        figure.set_figheight(2.4 + 2.2 * len(by_unit))
+        panels = list(figure.subplots(len(by_unit), 1, sharex=True))
+    else:
+        panels = [axes]
     log_x = any(_power_law(x, sweep.results[key]) for key in keys) and bool(np.all(x > 0))
     colours = iter(["#4c72b0", "#dd8452", "#55a868", "#c44e52", "#8172b3", "#937860"])
     handles = []
-    for n, (si_unit, members) in enumerate(by_unit.items()):
-        target = axes if n == 0 else axes.twinx()
-        if n > 1:
-            target.spines["right"].set_position(("axes", 1 + 0.12 * (n - 1)))
+    log_y: dict[str, bool] = {}
+    for panel, (si_unit, members) in zip(panels, by_unit.items(), strict=True):
         scale, unit = to_display(1.0, si_unit)
         for key in members:
             colour = next(colours, "#333333")
             # A whole-number input has no values between its points: mark the points.
-            (line,) = target.plot(x, sweep.results[key] * scale, color=colour,
-                                  label=words(key), marker="o" if axis.integer else None,
-                                  markersize=4)
+            (line,) = panel.plot(x, sweep.results[key] * scale, color=colour,
+                                 label=words(key), marker="o" if axis.integer else None,
+                                 markersize=4)
             handles.append(line)
             for i, (level, named) in enumerate(_limit_levels(sweep, key)):
                 label = f"{named} of {words(key)}" if named == "limit" else named
-                limit = target.axhline(level * scale, color=colour, linestyle=":",
-                                       linewidth=1.4, label=label)
+                limit = panel.axhline(level * scale, color=colour, linestyle=":",
+                                      linewidth=1.4, label=label)
                 if i == 0:
                     handles.append(limit)
-        if all(_spans_decades(sweep.results[key]) for key in members):
-            target.set_yscale("log")
-        target.set_ylabel(", ".join(words(key) for key in members)
-                          + (f" [{unit}]" if unit else ""))
-    ok = sweep.within_limits
-    if sweep.kind.margins and ok.any():
-        # Shade each run of points within limits out to the midpoints beside it.
-        middles = np.concatenate([[x[0]], (x[1:] + x[:-1]) / 2, [x[-1]]])
-        edges = np.flatnonzero(np.diff(np.concatenate([[0], ok.astype(int), [0]])))
-        for i, (start, stop) in enumerate(zip(edges[::2], edges[1::2], strict=True)):
-            axes.axvspan(middles[start], middles[stop], color="#55a868", alpha=0.15,
-                         label="within limits" if i == 0 else None)
-        handles.append(axes.get_legend_handles_labels()[0][-1])
+        logarithmic = all(_spans_decades(sweep.results[key]) for key in members)
+        log_y.update(dict.fromkeys(members, logarithmic))
+        if logarithmic:
+            panel.set_yscale("log")
+        panel.set_ylabel(", ".join(words(key) for key in members)
+                         + (f" [{unit}]" if unit else ""))
+        panel.grid(alpha=0.3, which="both" if log_x else "major")
+    if sweep.kind.margins and sweep.within_limits.any():
+        for i, (start, stop) in enumerate(_within_limit_spans(sweep, x, log_x, log_y)):
+            for panel in panels:
+                panel.axvspan(start, stop, color="#55a868", alpha=0.15,
+                              label="within limits" if i == 0 else None)
+        handles.append(panels[0].get_legend_handles_labels()[0][-1])
+    bottom = panels[-1]
     impossible = sweep.status != 0
     if impossible.any():
-        axes.text(0.01, 0.01, f"{int(impossible.sum())} of {len(impossible)} points are "
-                  "impossible designs (gaps)", transform=axes.transAxes, fontsize="small",
-                  color="#555555")
-    axes.set_xlabel(x_label)
+        # in the legend, where no curve runs under it
+        (note,) = bottom.plot([], [], linestyle="none", label=(
+            f"{int(impossible.sum())} of {len(impossible)} points are impossible (gaps)"))
+        handles.append(note)
+    bottom.set_xlabel(x_label)
     if log_x:
-        axes.set_xscale("log")
+        bottom.set_xscale("log")
     elif axis.integer:
-        axes.xaxis.get_major_locator().set_params(integer=True)
-    _legend_below(axes, handles)
-    axes.grid(alpha=0.3, which="both" if log_x else "major")
+        bottom.xaxis.get_major_locator().set_params(integer=True)
+    _legend_below(bottom, handles)
+    return panels[0]
+
+
+def _within_limit_spans(sweep: Sweep, x: NDArray, log_x: bool,
+                        log_y: dict[str, bool]) -> list[tuple[float, float]]:
+    """The runs of the input within limits, each ending where a judged curve crosses
+    its limit as drawn: straight between points on the plot's own axes (log where they
+    are log), so the shade ends exactly where the drawn curve meets its limit line.
+    Where no judged result changes side (an impossible point), the run ends midway."""
+    at = np.log(x) if log_x else x
+    sides = _sides_of_limits(sweep, log_y)
+    ok = sweep.within_limits
+
+    def edge(i: int, leaving: bool) -> float:
+        crossings = []
+        for side in sides:
+            a, b = side[i], side[i + 1]
+            if np.isfinite(a) and np.isfinite(b) and (a >= 0) == leaving and (b >= 0) != leaving:
+                crossings.append(at[i] + a / (a - b) * (at[i + 1] - at[i]))
+        if not crossings:
+            where = (at[i] + at[i + 1]) / 2
+        else:
+            where = min(crossings) if leaving else max(crossings)
+        return float(np.exp(where) if log_x else where)
+
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], ok.astype(int), [0]])))
+    return [(float(x[0]) if start == 0 else edge(start - 1, leaving=False),
+             float(x[-1]) if stop == len(x) else edge(stop - 1, leaving=True))
+            for start, stop in zip(edges[::2], edges[1::2], strict=True)]
+
+
+def _sides_of_limits(sweep: Sweep, log_y: dict[str, bool]) -> list[NDArray]:
+    """For each limit the sweep judges, a number per point that is ≥ 0 within it: the
+    drawn quantity's distance from its drawn limit line (in logs on a log axis), else
+    the margin itself or the room left under a symmetric limit."""
+    sides = []
+    for margin in sweep.kind.margins:
+        if margin not in sweep.results:
+            continue
+        judged = sweep.kind.judged.get(margin)
+        quantity = _judged_quantity(sweep, margin)
+        levels = _limit_levels(sweep, quantity) if quantity in log_y else []
+        if judged is not None and quantity in sweep.results and levels:
+            value, limit = np.abs(sweep.results[quantity]), abs(levels[0][0])
+            with np.errstate(divide="ignore", invalid="ignore"):
+                room = (np.log(value) - np.log(limit) if log_y[quantity]
+                        else value - limit)
+            sides.append(room if judged.at_least else -room)
+        else:
+            sides.append(sweep.results[margin])
+    for key, limit in sweep.limits.items():
+        if key in sweep.results:
+            sides.append(limit - np.abs(sweep.results[key]))
+    return sides
 
 
 def _contour(sweep: Sweep, key: str, figure: Any, axes: Any) -> None:

@@ -93,6 +93,8 @@ def _plots(kind: Any, spec: Any, evaluation: Any) -> list[tuple[str, str]]:
             plots.append(curve)
     if kind.name == "bevel-drive":
         plots.append(_drive_lives(evaluation))
+        if not shares:  # a duty cycle's shafts carry a load per bin, not one diagram
+            plots.append(_shaft_loads(spec, evaluation))
     return plots
 
 
@@ -188,3 +190,52 @@ def _damage_plot(evaluation: Any, shares: list[str]) -> tuple[str, str]:
 
     return ("Each bin's share of the time and of the fatigue damage (Palmgren–Miner).",
             svg_of(draw))
+
+
+def _shaft_loads(spec: Any, evaluation: Any) -> tuple[str, str]:
+    """Each shaft's bending moment along its axis, with its bearings and its gear."""
+    from bearingcalc.core.bevel_drive import shaft_bending_moments
+
+    results = evaluation.results
+    shafts = spec.solver_inputs()["shafts"]
+    drawn = []
+    for shaft, gear in (("pinion", "a"), ("gear", "b")):
+        if shaft not in shafts:
+            continue
+        positions = tuple(float(bearing["position"]) for bearing in shafts[shaft])
+        angle = results[f"gear_{gear}_pitch_angle"]
+        mesh = results["mean_cone_distance"] * np.cos(angle)
+        radius = results["mean_cone_distance"] * np.sin(angle)
+        ends = [*positions, mesh]
+        x = np.linspace(min(ends), max(ends), 801)
+        x = np.unique(np.concatenate([x, ends]))
+        moment_y, moment_z = shaft_bending_moments(
+            x, positions, mesh, radius, results["tangential_force"],
+            results[f"gear_{gear}_radial_force"], results[f"gear_{gear}_axial_force"])
+        loads = [results[f"{shaft}_bearing_{i}_radial_load"] for i in (1, 2)]
+        drawn.append((shaft, x, np.hypot(moment_y, moment_z), positions, mesh, loads))
+
+    def draw(panels: list[Any]) -> None:
+        for axes, (shaft, x, moment, positions, mesh, loads) in zip(panels, drawn,
+                                                                    strict=True):
+            axes.plot(x * 1e3, moment, color="#4c72b0")
+            axes.plot([mesh * 1e3], [0.0], "v", color="#c44e52", markersize=9, linestyle="none",
+                      label=f"mean pitch point of the {shaft}")
+            axes.plot([p * 1e3 for p in positions], [0.0, 0.0], "^", color="#333333",
+                      markersize=9, linestyle="none", label="bearing, with its radial load")
+            for i, (at, load) in enumerate(zip(positions, loads, strict=True), 1):
+                axes.annotate(f"bearing {i}: {load / 1e3:.3g} kN", (at * 1e3, 0.0),
+                              textcoords="offset points", xytext=(0, -17), ha="center",
+                              fontsize="small")
+            axes.set_title(f"{shaft} shaft", fontsize="medium", loc="left")
+            axes.set_ylabel("bending moment [N·m]")
+            axes.set_ylim(-0.3 * moment.max(), 1.15 * moment.max())
+            axes.margins(x=0.1)
+            axes.grid(alpha=0.3)
+            axes.legend(fontsize="small", loc="upper right")
+        panels[-1].set_xlabel("position along the shaft from the pitch-cone apex [mm]")
+
+    return ("Each shaft's bending moment (the resultant of its two planes) along its axis; "
+            "its bearings with their radial loads and the gear's mean pitch point. Rigid "
+            "shaft on two simple supports, as the bearing loads above.",
+            svg_of(draw, panels=len(drawn)))

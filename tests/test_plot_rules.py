@@ -52,10 +52,53 @@ def test_the_line_plot_leaves_a_margin_out_beside_its_quantity(tmp_path, monkeyp
     real = plots._line
 
     def spy(sweep, keys, figure, axes):
-        real(sweep, keys, figure, axes)
+        top = real(sweep, keys, figure, axes)
         drawn.extend(line.get_label() for ax in figure.axes for line in ax.get_lines())
+        return top
 
     monkeypatch.setattr(plots, "_line", spy)
     plots.sweep_plot(solved, ["modified_rating_life", "life_margin"], tmp_path / "a.png")
     assert "modified rating life" in drawn and "life margin" not in drawn
     assert "required modified rating life" in drawn
+
+
+def test_the_shade_ends_where_the_drawn_life_crosses_its_drawn_requirement():
+    """The life is drawn straight between points on a log axis: the shade within limits
+    ends where that line meets the required life's line, not midway between points."""
+    solved = _sweep(ROOT / "specs" / "rolling-bearing.yaml", "radial_load=2kN:20kN:10")
+    x = solved.inputs["radial_load"]
+    life = solved.results["modified_rating_life"]
+    required = 6000 * 3600.0
+    ((start, stop),) = plots._within_limit_spans(
+        solved, x, log_x=False, log_y={"modified_rating_life": True})
+    # the life falls with the load: interpolate the load against log life
+    drawn = np.interp(np.log(required), np.log(life[::-1]), x[::-1])
+    assert start == x[0]
+    assert stop == pytest.approx(drawn, rel=1e-12)
+    # and it lies near where the bearing's life truly reaches 6000 h
+    fine = _sweep(ROOT / "specs" / "rolling-bearing.yaml", "radial_load=8kN:11kN:3001")
+    true = fine.inputs["radial_load"][np.argmin(abs(fine.results["modified_rating_life"]
+                                                     - required))]
+    assert stop == pytest.approx(true, rel=0.01)
+    assert abs(stop - true) < abs((x[3] + x[4]) / 2 - true)  # nearer than the midpoint
+
+
+def test_results_of_different_units_are_stacked_not_twinned(tmp_path, monkeypatch):
+    """A limit line on a second y axis would seem to cross the other result's curve."""
+    solved = _sweep(ROOT / "specs" / "rolling-bearing.yaml", "radial_load=2kN:20kN:10")
+    figures = []
+    real = plots._line
+
+    def spy(sweep, keys, figure, axes):
+        figures.append(figure)
+        return real(sweep, keys, figure, axes)
+
+    monkeypatch.setattr(plots, "_line", spy)
+    plots.sweep_plot(solved, ["modified_rating_life", "static_safety_factor"],
+                     tmp_path / "a.png")
+    (figure,) = figures
+    panels = figure.axes
+    assert len(panels) == 2
+    tops = sorted(panel.get_position().y0 for panel in panels)
+    assert tops[0] < tops[1]  # one above the other, not twins on one frame
+    assert panels[0].get_shared_x_axes().joined(panels[0], panels[1])

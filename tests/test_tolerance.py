@@ -5,6 +5,7 @@ from __future__ import annotations
 import importlib
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -417,7 +418,28 @@ def test_no_tolerance_and_sobol_with_one_input_are_clear_errors(cli):
 def test_limit_exceeded_at_worst_case_exits_1(cli, spec_file):
     run = cli("tolerance", spec_file(TB), "-n", "4096")
     assert run.code == 1 and "FAIL" in run.out
-    assert "slip_margin reaches" in run.out
+    # in engineering terms, as solve says it: the quantity against its limit
+    assert re.search(r"at worst case, spin-to-roll ratio [\d.]+ > max 0\.004 \(margin −", run.out)
+
+
+def test_the_worst_case_verdict_is_the_life_at_the_worst_design():
+    """The verdict's life is the life where the margin is least: the worst case's own
+    minimum of the life, found by its own search, and its requirement the spec's."""
+    from bearingcalc.evaluation import load_one_spec
+    from bearingcalc.studies import run_study
+
+    kind, spec, _ = load_one_spec(ROOT / "specs" / "tolerances" / "ball-bearing.yaml")
+    record = run_study(kind, spec, "spec", methods=["worst-case"]).record
+    weakest = record["worst_case_verdicts"][0]
+    results = record["results"]
+    assert weakest["key"] == "life_margin" and weakest["unit"] == "s"
+    assert weakest["limit"] == pytest.approx(2000 * 3600.0, rel=1e-12)
+    assert weakest["value"] == pytest.approx(
+        results["modified_rating_life"]["worst_case"]["min"], rel=1e-9)
+    assert weakest["value"] / weakest["limit"] - 1 == pytest.approx(
+        results["life_margin"]["worst_case"]["min"], rel=1e-12)
+    margins = [v["margin"] for v in record["worst_case_verdicts"]]
+    assert margins == sorted(margins)
 
 
 def test_sobol_gives_no_numbers_where_designs_are_impossible_or_results_constant(spec_file):

@@ -146,6 +146,41 @@ def shaft_reactions(positions: tuple[ArrayLike, ArrayLike], mesh_position: Array
     return np.hypot(wr - r2y, wt - r2z), np.hypot(r2y, r2z)
 
 
+def shaft_bending_moments(x: ArrayLike, positions: tuple[float, float], mesh_position: float,
+                          mesh_radius: float, tangential: float, radial: float,
+                          axial: float) -> tuple[NDArray, NDArray]:
+    r"""The bending moment along a shaft of :func:`shaft_reactions`, in its two planes.
+
+    With the supports' reactions from the balance of the whole shaft, the moment at a
+    section x is that of every force on the side nearer the apex (x' < x):
+
+    .. math:: M_y(x) = \sum_i R_{iy}\langle x - x_i\rangle - W_r\langle x - x_p\rangle
+              + W_a r_p H(x - x_p), \quad
+              M_z(x) = \sum_i R_{iz}\langle x - x_i\rangle - W_t\langle x - x_p\rangle
+
+    (⟨u⟩ = max(u, 0), H the unit step; W_a r_p is the couple of the axial force at
+    the pitch point). Both vanish beyond the last force, and each slope jumps by the
+    reaction at a support. [N·m] at x [m]; inputs as in :func:`shaft_reactions`.
+
+    Source: singularity functions of a beam, Budynas & Nisbett, *Shigley's Mechanical
+    Engineering Design*, 10th ed., §3-3.
+    """
+    x = np.asarray(x, dtype=float)
+    x1, x2 = positions
+    span = x2 - x1
+    r2y = (radial * (mesh_position - x1) + axial * mesh_radius) / span
+    r2z = tangential * (mesh_position - x1) / span
+    reactions = ((x1, radial - r2y, tangential - r2z), (x2, r2y, r2z))
+
+    def arm(at: float) -> NDArray:
+        return np.maximum(x - at, 0.0)
+
+    moment_y = sum(ry * arm(at) for at, ry, _ in reactions) - radial * arm(mesh_position) \
+        + axial * mesh_radius * (x > mesh_position)
+    moment_z = sum(rz * arm(at) for at, _, rz in reactions) - tangential * arm(mesh_position)
+    return np.asarray(moment_y), np.asarray(moment_z)
+
+
 def system_life(lives: list[NDArray], slope: float = WEIBULL_SLOPE) -> NDArray:
     r"""L_sys = (Σ L_i^(−e))^(−1/e), e the Weibull slope: 10/9 for ball bearings, 9/8
     when any bearing is a roller bearing.

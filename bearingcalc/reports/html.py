@@ -160,12 +160,15 @@ def _result_tables(evaluation: Evaluation, kind: Kind) -> Iterator[str]:
         yield "</table>"
 
 
-def svg_of(draw: Callable[[Any], None]) -> str:
-    """A matplotlib figure drawn by ``draw(axes)`` as inline SVG (no XML declaration)."""
+def svg_of(draw: Callable[[Any], None], panels: int = 1) -> str:
+    """A matplotlib figure drawn by ``draw(axes)`` as inline SVG (no XML declaration);
+    with several ``panels``, stacked, ``axes`` is their list."""
     from bearingcalc.plots import _pyplot
 
     plt = _pyplot()
-    figure, axes = plt.subplots(figsize=(7, 3.6), dpi=100)
+    figure, axes = plt.subplots(panels, 1, figsize=(7, 3.6 if panels == 1 else 2.8 * panels),
+                                dpi=100, squeeze=False)
+    axes = axes[0, 0] if panels == 1 else list(axes[:, 0])
     try:
         draw(axes)
         figure.tight_layout()

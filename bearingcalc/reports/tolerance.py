@@ -4,11 +4,13 @@
 from __future__ import annotations
 
 import json
+import math
 from typing import IO, TYPE_CHECKING, Any
 
-from bearingcalc.reports.formatting import console, format_number, safe_text
+from bearingcalc.reports.formatting import console, format_number, safe_text, verdict_line
 from bearingcalc.units import TEMPERATURE_UNITS
 from bearingcalc.units import to_display as si_display
+from bearingcalc.verdicts import Verdict
 
 if TYPE_CHECKING:  # the report type only; its module loads with the command
     from bearingcalc.studies import StudyReport
@@ -31,12 +33,8 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
     units = record["units"]
 
     def to_display(value: float, si_unit: str, key: str | None = None) -> tuple[float, str]:
-        """As solve shows it: the kind's own unit for its results (10⁶ rev), else the
-        engineering unit of the SI one."""
-        if key is not None and key in report.display:
-            unit, factor = report.display[key]
-            return value * factor, unit
-        return si_display(value, si_unit)
+        return _as_solve_shows(report, value, si_unit, key)
+
     out.print(f"[bold]{safe_text(record['name'] or record['spec'])}[/] ({record['kind']}, "
               f"{safe_text(record['spec'])})")
     for key, value in record.items():
@@ -115,23 +113,39 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
 
     if "yield" in record:
         out.print(f"Monte Carlo: {record['samples']} samples ({record['sampler']}, seed "
-                  f"{record['seed']}): yield {100 * record['yield']:.4f} %, "
+                  f"{record['seed']}): yield {_yield(record['yield'])}, "
                   f"{_out_of_spec(1.0 - record['yield'])} out of spec, "
                   f"{_capability(record)}, {record['infeasible_samples']} impossible designs")
+        normal = [name for name, entry in record["inputs"].items()
+                  if entry["distribution"] == "normal"]
+        if normal:
+            out.print(f"[dim]A normal input's band is ±3σ ({', '.join(normal)}): Monte "
+                      "Carlo draws each beyond it in 0.27 % of samples, so the samples' "
+                      "extremes can pass the worst case.[/]")
+    worst = [Verdict(**entry) for entry in record.get("worst_case_verdicts", [])]
     verdict = report.within_limits
     if verdict is True:
         out.print("[bold green]PASS[/]: every margin stays within its limit"
-                  + (" at worst case" if _ran(results, "worst_case") else ""))
+                  + (f" at worst case; the closest: {verdict_line(worst[0])}" if worst
+                     else " at worst case" if _ran(results, "worst_case") else ""))
     elif verdict is False:
-        reached = [f"{m} reaches {format_number(results[m]['worst_case']['min'])}"
-                   for m in report.margins if (results[m].get("worst_case") or {}).get("min")
-                   is not None and results[m]["worst_case"]["min"] < 0]
+        reached = [verdict_line(v) for v in worst if not v.passed]
         out.print("[bold red]FAIL[/]: the tolerances can take a margin past its limit"
-                  + (f" ({'; '.join(reached)} at worst case)" if reached else ""))
+                  + (f": at worst case, {'; '.join(reached)}" if reached else ""))
     for warning in record["warnings"]:
         out.print(f"[yellow]warning[/]: {safe_text(warning)}")
     if lead and lead in report.histograms:
         _terminal_histogram(out, lead, report, units[lead])
+
+
+def _as_solve_shows(report: StudyReport, value: float, si_unit: str,
+                    key: str | None = None) -> tuple[float, str]:
+    """A value as solve shows it: the kind's own unit for its results (10⁶ rev), else
+    the engineering unit of the SI one."""
+    if key is not None and key in report.display:
+        unit, factor = report.display[key]
+        return value * factor, unit
+    return si_display(value, si_unit)
 
 
 def _ran(results: dict[str, Any], method: str) -> bool:
@@ -146,14 +160,24 @@ def _terminal_histogram(out: Any, key: str, report: StudyReport, si_unit: str,
     lows, highs, totals = coarse_histogram(*report.histograms[key], rows)
     if totals.size == 0:
         return
-    unit = si_display(0.0, si_unit)[1]
+    scale, unit = _as_solve_shows(report, 1.0, si_unit, key)
     out.print()
     out.print(safe_text(f"{key}{f' [{unit}]' if unit else ''}, Monte Carlo histogram:"))
     peak = int(totals.max()) or 1
+    # Four digits tell the bins apart; the edges are the histogram's, not results.
     for low, high, total in zip(lows, highs, totals.tolist(), strict=True):
         bar = "█" * round(width * total / peak)
-        out.print(f"{format_number(si_display(low, si_unit)[0]):>12} … "
-                  f"{format_number(si_display(high, si_unit)[0]):<12} {bar} {total}")
+        out.print(f"{low * scale:>10.4g} … {high * scale:<10.4g} {bar} {total}")
+
+
+def _yield(fraction: float) -> str:
+    """The yield to as many decimals as its complement, out of spec, shows: 74.8 %,
+    99.99730 %."""
+    out = 1.0 - fraction
+    if out <= 0:
+        return "100 %"
+    decimals = max(1, 2 - math.floor(math.log10(100 * out)))
+    return f"{100 * fraction:.{decimals}f} %"
 
 
 def _out_of_spec(fraction: float) -> str:

@@ -5,9 +5,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
 from typing import Any
 
+import numpy as np
 from numpy.typing import NDArray
 
 from bearingcalc.kinds import Kind
@@ -19,6 +20,7 @@ from bearingcalc.studies.sensitivity import sobol_indices
 from bearingcalc.studies.study import Study, StudyError
 from bearingcalc.studies.worst_case import worst_case
 from bearingcalc.units import to_display
+from bearingcalc.verdicts import judge
 
 METHODS = ("worst-case", "rss", "monte-carlo")
 
@@ -108,6 +110,7 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
     if "worst-case" in methods:
         for key, entry in worst_case(study).items():
             record["results"][key]["worst_case"] = entry
+        record["worst_case_verdicts"] = worst_case_verdicts(study, record["results"])
     else:
         # Every method must know when the box crosses a validity edge, not only the
         # worst case: RSS at the centre and a lucky sample would otherwise pass it.
@@ -170,3 +173,21 @@ def _finite(value: Any) -> Any:
     if isinstance(value, float) and not math.isfinite(value):
         return None
     return value
+
+
+def worst_case_verdicts(study: Study, results: dict[str, Any]) -> list[dict[str, Any]]:
+    """Each margin judged at the design where the worst case puts its minimum, in
+    engineering terms (the life and its requirement, not the margin), the weakest
+    first: the fields of :class:`~bearingcalc.verdicts.Verdict`, SI."""
+    worst = {m: results[m]["worst_case"] for m in study.margins
+             if (results[m].get("worst_case") or {}).get("min_inputs") is not None}
+    if not worst:
+        return []
+    rows = np.array([[entry["min_inputs"][item.name] for item in study.inputs]
+                     for entry in worst.values()])
+    values, _ = study.evaluate(rows)
+    verdicts = []
+    for i, (margin, entry) in enumerate(worst.items()):
+        at = {key: float(np.asarray(column).reshape(-1)[i]) for key, column in values.items()}
+        verdicts += judge(study.kind, at, {margin: entry["min"]})
+    return [asdict(verdict) for verdict in sorted(verdicts, key=lambda v: v.margin)]

@@ -1,0 +1,165 @@
+"""`bearingcalc schema` under ajv in strict mode.
+
+ajv is the validator of many editors and JavaScript tools, and in strict mode it refuses
+what check-jsonschema lets through: unknown keywords, ``required`` names without a
+``properties`` entry, keywords applied to a type the schema does not declare. A schema
+strict ajv compiles is one the strictest of the common validators accepts.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+from pathlib import Path
+from typing import Any
+
+import pytest
+from typer.testing import CliRunner
+
+from bearingcalc.cli import app
+from bearingcalc.kinds import KINDS
+from bearingcalc.models.yaml_loader import load_documents
+from tests.conftest import ROOT
+
+AJV_PACKAGES = ("ajv-cli@5", "ajv-formats@3")
+INSTALL_TIMEOUT = 300
+RUN_TIMEOUT = 120
+SPECS = sorted((ROOT / "specs").rglob("*.yaml"))
+
+
+@pytest.fixture(scope="session")
+def ajv(tmp_path_factory) -> Path:
+    """The ajv command, installed from the npm registry once for the whole test run."""
+    npm = shutil.which("npm")
+    if shutil.which("node") is None or npm is None:
+        pytest.skip("node and npm are not installed, so ajv cannot run")
+    prefix = tmp_path_factory.mktemp("ajv")
+    try:
+        done = subprocess.run(
+            [npm, "install", "--prefix", str(prefix), "--no-audit", "--no-fund",
+             "--loglevel=error", "--fetch-retries=1", *AJV_PACKAGES],
+            capture_output=True, text=True, timeout=INSTALL_TIMEOUT, check=False)
+    except subprocess.TimeoutExpired:
+        pytest.skip("ajv-cli could not be installed: the npm registry did not answer")
+    exe = prefix / "node_modules" / ".bin" / "ajv"
+    if done.returncode != 0 or not exe.exists():
+        pytest.skip("ajv-cli could not be installed from the npm registry")
+    return exe
+
+
+def printed_schema(*args: str) -> dict[str, Any]:
+    run = CliRunner().invoke(app, ["schema", *args])
+    assert run.exit_code == 0, run.output
+    return json.loads(run.stdout)
+
+
+@pytest.fixture(scope="session")
+def schemas(tmp_path_factory) -> dict[str | None, Path]:
+    """What `bearingcalc schema` prints, for any spec (key None) and for each kind."""
+    folder = tmp_path_factory.mktemp("schemas")
+    paths: dict[str | None, Path] = {}
+    for kind in (None, *sorted(KINDS)):
+        path = folder / f"{kind or 'any'}.json"
+        path.write_text(json.dumps(printed_schema(*(["--kind", kind] if kind else []))))
+        paths[kind] = path
+    return paths
+
+
+def uses_formats(node: Any) -> bool:
+    """Whether a schema has a ``format`` keyword, which strict ajv refuses unless the
+    formats are loaded (a property that is named "format" holds a schema, not a string)."""
+    if isinstance(node, dict):
+        return isinstance(node.get("format"), str) or any(map(uses_formats, node.values()))
+    if isinstance(node, list):
+        return any(map(uses_formats, node))
+    return False
+
+
+def run_ajv(ajv: Path, command: str, schema: Path, *args: str) -> subprocess.CompletedProcess:
+    formats = ["-c", "ajv-formats"] if uses_formats(json.loads(schema.read_text())) else []
+    return subprocess.run(
+        [str(ajv), command, "--spec=draft2020", "--strict=true", *formats, "-s", str(schema),
+         *args],
+        capture_output=True, text=True, timeout=RUN_TIMEOUT, check=False)
+
+
+def as_json_documents(path: Path, folder: Path, text: str | None = None) -> list[Path]:
+    """Each YAML document of a spec as a JSON file, read as bearingcalc reads it.
+
+    Plain PyYAML follows YAML 1.1, where ``1e7`` is a string; bearingcalc, editors and
+    check-jsonschema follow YAML 1.2, where it is a number, so the spec loader converts.
+    """
+    stem = "--".join(path.relative_to(ROOT / "specs").with_suffix("").parts)
+    written = []
+    for document in load_documents(path, text):
+        out = folder / f"{stem}.{document.index}.json"
+        out.write_text(json.dumps(document.data))
+        written.append(out)
+    return written
+
+
+def test_strict_ajv_compiles_the_schema_of_any_spec_and_of_each_kind(ajv, schemas):
+    extra = [arg for kind, path in schemas.items() if kind is not None
+             for arg in ("-s", str(path))]
+    run = run_ajv(ajv, "compile", schemas[None], *extra)
+    assert run.returncode == 0, run.stdout + run.stderr
+
+
+def test_strict_ajv_accepts_every_document_of_every_example_spec(ajv, schemas, tmp_path):
+    documents = [out for path in SPECS for out in as_json_documents(path, tmp_path)]
+    assert len(documents) >= len(SPECS)
+    # One ajv run for all the documents: node's start-up is most of each run's time.
+    run = run_ajv(ajv, "validate", schemas[None], "--errors=json",
+                  *(arg for out in documents for arg in ("-d", str(out))))
+    assert run.returncode == 0, run.stdout + run.stderr
+
+
+def example(name: str) -> str:
+    return (ROOT / "specs" / name).read_text()
+
+
+#: Broken bearing specs: the example, its broken text, and what ajv must name (the
+#: unknown key, or the instance path of the wrong value).
+BROKEN = [
+    ("rolling-bearing.yaml", example("rolling-bearing.yaml") + "dynamic_load_ratin: 3 kN\n",
+     "dynamic_load_ratin"),
+    ("rolling-bearing.yaml", example("rolling-bearing.yaml").replace("  e: 0.37", "  e: high"),
+     "/load_factors/e"),
+    ("ball-bearing.yaml", example("ball-bearing.yaml").replace(
+        "dynamic_load_rating: 55.3 kN", "dynamic_load_rating: [55.3 kN]"),
+     "/dynamic_load_rating"),
+]
+
+
+def test_strict_ajv_reports_the_error_of_the_branch_the_spec_chose(ajv, schemas, tmp_path):
+    """A broken rolling or ball bearing spec is refused for its own field, with no error
+    from another kind's branch (such as the thrust bearing's required fields)."""
+    documents = []
+    for number, (spec, text, _) in enumerate(BROKEN, 1):
+        assert text != example(spec), spec
+        folder = tmp_path / str(number)
+        folder.mkdir()
+        documents += as_json_documents(ROOT / "specs" / spec, folder, text)
+    run = run_ajv(ajv, "validate", schemas[None], "--errors=json",
+                  *(arg for out in documents for arg in ("-d", str(out))))
+    output = run.stdout + run.stderr
+    assert run.returncode == 1, output
+    # Each name is wrong in one document only, so its mention shows that document was
+    # refused. Quoted, as ajv's JSON errors hold it: bare, "dynamic_load_ratin" would be
+    # found inside "dynamic_load_rating".
+    for _, _, mentioned in BROKEN:
+        assert json.dumps(mentioned) in output, (mentioned, output)
+
+    chosen = {KINDS[json.loads(out.read_text())["kind"]].model for out in documents}
+    own_fields = {name for model in chosen for name in model.model_json_schema()["properties"]}
+    schema = json.loads(schemas[None].read_text())
+    for index, branch in enumerate(schema.get("allOf", [])):
+        other = KINDS[branch["if"]["properties"]["kind"]["const"]].model
+        if other not in chosen:
+            assert f"#/allOf/{index}/" not in output, (other.__name__, output)
+    for other in {kind.model for kind in KINDS.values()} - chosen:
+        # pydantic names each model's definition after its class.
+        assert other.__name__ not in output, (other.__name__, output)
+        for required in set(other.model_json_schema().get("required", [])) - own_fields:
+            assert json.dumps(required) not in output, (other.__name__, required, output)
