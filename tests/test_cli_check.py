@@ -351,3 +351,20 @@ def test_a_validator_reports_the_error_of_the_branch_the_spec_chose(schema_file,
     schema = json.loads(schema_file.read_text())
     text = json.dumps(schema)
     assert "discriminator" not in text and '"x-' not in text  # keywords strict validators refuse
+
+
+def test_a_narrow_terminal_gets_a_paragraph_per_spec(cli, monkeypatch):
+    """Where the table's columns cannot fit, a file name is never broken mid-word: each
+    spec is a line (status, file, name, kind) and its verdict the next."""
+    from bearingcalc.reports import formatting
+
+    monkeypatch.setattr(formatting, "PIPE_WIDTH", 80)
+    run = cli("check", ROOT / "specs", "--all")
+    assert run.code == 0, run.err
+    lines = run.out.splitlines()
+    specs = sorted(str(p.relative_to(ROOT)) for p in (ROOT / "specs").rglob("*.yaml"))
+    heads = [line for line in lines if line.startswith("PASS  ")]
+    assert len(heads) == len(specs)
+    for head in heads:
+        assert head.split()[1].endswith(".yaml")
+    assert "┃" not in run.out and "│" not in run.out

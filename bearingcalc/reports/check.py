@@ -66,25 +66,25 @@ def print_check_table(records: Sequence[CheckRecord], *, show_all: bool,
     out = console(stream)
     shown = records if show_all or len(records) <= many else [
         r for r in records if r.status != "pass"]
-    if shown:
+    colours = {"pass": "green", "fail": "red", "invalid": "magenta"}
+    rows = [(f"[{colours[record.status]}]{record.status.upper()}[/]", safe_text(record.spec),
+             safe_text(record.name or ""), record.kind or "",
+             safe_text(_without_source(_detail(record), record.spec))) for record in shown]
+    headers = ("status", "file", "name", "kind", "governing margin / problem")
+    # status, file, name and kind on one line each, and at least 30 columns for the rest
+    needed = sum(max([len(headers[i]), *(len(row[i]) for row in rows)]) + 3
+                 for i in range(1, 4)) + 9 + 30
+    if rows and needed <= out.width:
         table = Table(show_edge=False)
-        for column in ("status", "file", "name", "kind", "governing margin / problem"):
-            table.add_column(column, overflow="fold")
-        colours = {"pass": "green", "fail": "red", "invalid": "magenta"}
-        for record in shown:
-            governing = record.governing_margin
-            if record.status == "invalid":
-                detail = _first(record.messages)
-            elif governing is None:
-                detail = "no limits judged"
-            elif record.verdicts:
-                detail = verdict_line(record.verdicts[0])
-            else:
-                detail = f"{governing[0]} = {format_number(governing[1])}"
-            table.add_row(f"[{colours[record.status]}]{record.status.upper()}[/]",
-                          safe_text(record.spec), safe_text(record.name or ""),
-                          record.kind or "", safe_text(_without_source(detail, record.spec)))
+        for column in headers:
+            table.add_column(column, overflow="fold", no_wrap=column != headers[-1])
+        for row in rows:
+            table.add_row(*row)
         out.print(table)
+    else:  # a narrow terminal: a spec per paragraph, the verdict on its own line
+        for status, spec, name, kind, detail in rows:
+            out.print(f"{status}  {spec}  {name} ({kind})" if kind else f"{status}  {spec}")
+            out.print(f"      {detail}")
     counts = {status: sum(r.status == status for r in records)
               for status in ("pass", "fail", "invalid")}
     hidden = len(records) - len(shown)
@@ -92,6 +92,18 @@ def print_check_table(records: Sequence[CheckRecord], *, show_all: bool,
     out.print(f"{plural(len(records), 'spec')}: [green]{counts['pass']} pass[/], "
               f"[red]{counts['fail']} fail[/], "
               f"[magenta]{counts['invalid']} invalid[/]{note}")
+
+
+def _detail(record: CheckRecord) -> str:
+    """What decided the record: its governing verdict, or its first problem."""
+    governing = record.governing_margin
+    if record.status == "invalid":
+        return _first(record.messages)
+    if governing is None:
+        return "no limits judged"
+    if record.verdicts:
+        return verdict_line(record.verdicts[0])
+    return f"{governing[0]} = {format_number(governing[1])}"
 
 
 def _without_source(message: str, source: str) -> str:

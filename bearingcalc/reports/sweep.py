@@ -90,12 +90,14 @@ def print_sweep_table(sweep: Sweep, keys: Sequence[str], stream: IO[str] | None 
         table = Table(title=escape(title), title_justify="left")
         for header in (label(axis.name, axis.unit), *(label(k, units[k]) for k in keys)):
             table.add_column(header, justify="right")
-        table.add_column("impossible because")
+        gaps = bool(np.any(sweep.status != 0))
+        if gaps:  # an empty column only takes room
+            table.add_column("impossible because")
         for i, value in enumerate(sweep.inputs[axis.name].tolist()):
             code = int(sweep.status[i])
             table.add_row(shown(value, axis.unit),
                           *(result(k, sweep.results[k][i]) for k in keys),
-                          sweep.reason(code) if code else "")
+                          *([sweep.reason(code) if code else ""] if gaps else []))
         out.print(table)
         return
     first, second = sweep.axes
