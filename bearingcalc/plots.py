@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any
 
@@ -10,9 +10,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from bearingcalc.units import to_display
-from bearingcalc.wording import printable
+from bearingcalc.wording import plural, printable
 
 if TYPE_CHECKING:
+    from bearingcalc.kinds import Kind
     from bearingcalc.studies import StudyReport
     from bearingcalc.sweeps import Sweep
 
@@ -56,14 +57,11 @@ def tolerance_histogram(report: StudyReport, key: str, path: str | Path | IO[byt
         if worst.get(side) is not None:
             axes.axvline(worst[side] * scale, color="#dd8452", linestyle="--",
                          label="worst case" if side == "min" else None)
-    limits = []
-    if key in report.limits:
-        limits = [-report.limits[key], report.limits[key]]
-    elif key in report.margins:
-        limits = [0.0]
-    for i, limit in enumerate(limits):
+    levels = _study_limits(report, key)
+    limits = [level for level, _ in levels]
+    for i, (limit, named) in enumerate(levels):
         axes.axvline(limit * scale, color="#c44e52", linewidth=2,
-                     label="limit" if i == 0 else None)
+                     label=named if i == 0 else None)
     # The axis spans the 0.135 %–99.865 % quantiles, the worst case and the limits: a
     # few tail samples would otherwise stretch it and squeeze the histogram.
     spots = [value for value in (mc.get("p00135"), mc.get("p99865"), worst.get("min"),
@@ -75,7 +73,7 @@ def tolerance_histogram(report: StudyReport, key: str, path: str | Path | IO[byt
         outside = int(totals[(highs * scale < left) | (lows * scale > right)].sum()) if (
             totals.size) else 0
         if outside:
-            axes.text(0.99, 0.97, f"{outside} samples beyond the axis", ha="right",
+            axes.text(0.99, 0.97, f"{plural(outside, 'sample')} beyond the axis", ha="right",
                       va="top", transform=axes.transAxes, fontsize="small", color="#555555")
     axes.set_xlabel(f"{words(key)} [{unit}]" if unit else words(key))
     axes.set_ylabel("samples")
@@ -140,23 +138,50 @@ def _axis_label(name: str, si_unit: str) -> tuple[float, str]:
 
 
 def _limit_levels(sweep: Sweep, key: str) -> list[tuple[float, str]]:
-    """The limits of a result, each with its words: its own symmetric limit, 0 of a
-    margin, or the limit of the quantity a margin judges (a life's required life)."""
-    if key in sweep.limits:
-        return [(-sweep.limits[key], "limit"), (sweep.limits[key], "limit")]
-    if key in sweep.kind.margins:
-        return [(0.0, "limit")]
-    for margin, judged in sweep.kind.judged.items():
-        if judged.quantity != key or margin not in sweep.results:
-            continue
+    """The limits of a result in a sweep, each with its words (see :func:`_levels`), a
+    judged quantity's read at the first point where it and its margin are known."""
+    def at_a_point(margin: str) -> tuple[float, float] | None:
+        if margin not in sweep.results:
+            return None
         values, margins = sweep.results[key], sweep.results[margin]
         good = np.flatnonzero(np.isfinite(values) & np.isfinite(margins))
-        if good.size:
-            i = int(good[0])
-            limit = judged.limit(abs(float(values[i])) if not judged.at_least
-                                 else float(values[i]), float(margins[i]))
-            if np.isfinite(limit):
-                return [(limit, f"{judged.limit_word} {judged.named({})}")]
+        return (float(values[good[0]]), float(margins[good[0]])) if good.size else None
+
+    return _levels(sweep.kind, sweep.limits, sweep.kind.margins, key, at_a_point)
+
+
+def _study_limits(report: StudyReport, key: str) -> list[tuple[float, str]]:
+    """The limits of a result in a tolerance study (see :func:`_levels`), a judged
+    quantity's read at the nominal design."""
+    from bearingcalc.kinds import KINDS
+
+    results = report.record["results"]
+
+    def nominal(margin: str) -> tuple[float, float] | None:
+        if margin not in report.margins or results[key]["nominal"] is None:
+            return None
+        return results[key]["nominal"], results[margin]["nominal"]
+
+    return _levels(KINDS[report.record["kind"]], report.limits, report.margins, key, nominal)
+
+
+def _levels(kind: Kind, limits: Mapping[str, float], margins: Iterable[str], key: str,
+            known: Callable[[str], tuple[float, float] | None]) -> list[tuple[float, str]]:
+    """The limits of a result, each with its words: its own symmetric limit, 0 of a
+    margin, or the limit of the quantity a margin judges (a life's required life), from
+    the quantity and margin ``known`` gives at one design."""
+    if key in limits:
+        return [(-limits[key], "limit"), (limits[key], "limit")]
+    if key in margins:
+        return [(0.0, "limit")]
+    for margin, judged in kind.judged.items():
+        pair = known(margin) if judged.quantity == key else None
+        if pair is None:
+            continue
+        value, margin_value = pair
+        limit = judged.limit(value if judged.at_least else abs(value), margin_value)
+        if np.isfinite(limit):
+            return [(limit, f"{judged.limit_word} {judged.named({})}")]
     return []
 
 

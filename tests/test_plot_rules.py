@@ -102,3 +102,40 @@ def test_results_of_different_units_are_stacked_not_twinned(tmp_path, monkeypatc
     tops = sorted(panel.get_position().y0 for panel in panels)
     assert tops[0] < tops[1]  # one above the other, not twins on one frame
     assert panels[0].get_shared_x_axes().joined(panels[0], panels[1])
+
+
+def _study(name, samples=4096):
+    from bearingcalc.studies import run_study
+
+    kind, spec, _ = load_one_spec(ROOT / "specs" / "tolerances" / name)
+    return run_study(kind, spec, name, methods=["worst-case", "monte-carlo"],
+                     samples=samples)
+
+
+def test_a_study_plots_the_life_its_weakest_margin_judges_with_the_required_life():
+    report = _study("ball-bearing.yaml")
+    assert report.plotted == "modified_rating_life"
+    ((level, named),) = plots._study_limits(report, "modified_rating_life")
+    assert level == pytest.approx(2000 * 3600.0, rel=1e-12)
+    assert named == "required modified rating life"
+
+
+def test_a_study_plots_the_margin_that_fails():
+    """The drive fails on the bending safety (a margin of the weaker gear, no one
+    result), not on its lives: that margin is the plot."""
+    report = _study("bevel-drive.yaml")
+    results = report.record["results"]
+    assert results["bending_safety_margin"]["worst_case"]["min"] < 0
+    assert results["life_margin"]["worst_case"]["min"] > 0
+    assert report.plotted == "bending_safety_margin"
+    assert plots._study_limits(report, "bending_safety_margin") == [(0.0, "limit")]
+
+
+def test_a_chosen_result_is_the_plot(cli, tmp_path, monkeypatch):
+    drawn = []
+    monkeypatch.setattr(plots, "tolerance_histogram",
+                        lambda report, key, path, fmt=None: drawn.append(key))
+    run = cli("tolerance", ROOT / "specs" / "tolerances" / "ball-bearing.yaml", "-n", "1024",
+              "-r", "static_safety_factor", "--plot", tmp_path / "h.png")
+    assert run.code in (0, 1), run.err
+    assert drawn == ["static_safety_factor"]

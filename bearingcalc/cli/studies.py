@@ -126,11 +126,12 @@ def tolerance(
             StudyFormat.json: lambda stream: reports.write_tolerance_json(report, stream),
         }
         with StagedFiles() as files:
-            if histogram is not None and report.plotted is not None:
+            plotted = result[0] if result else report.plotted
+            if histogram is not None and plotted is not None:
                 from bearingcalc.plots import tolerance_histogram
 
                 stage_plot(files, histogram, lambda f, fmt: tolerance_histogram(
-                    report, report.plotted, f, fmt=fmt))
+                    report, plotted, f, fmt=fmt))
             emit(writers[output_format], table_or_json, files)
         raise typer.Exit(EXIT_LIMIT if report.within_limits is False else EXIT_OK)
 

@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from bearingcalc.kinds import Kind
+from bearingcalc.kinds import KINDS, Kind
 from bearingcalc.models.base import SpecModel
 from bearingcalc.studies.monte_carlo import monte_carlo, one_sided_capability, smallest_cpk
 from bearingcalc.studies.rss import rss
@@ -53,7 +53,13 @@ class StudyReport:
 
         judged = [key for key in self.margins if key in self.histograms]
         if judged:
-            return min(judged, key=lowest)
+            weakest = min(judged, key=lowest)
+            # the quantity it judges says the same with its limit in its own unit (a life
+            # in hours against the required life), where it was sampled
+            judges = KINDS[self.record["kind"]].judged.get(weakest)
+            quantity = getattr(judges, "quantity", None)
+            return quantity if isinstance(quantity, str) and quantity in self.histograms \
+                else weakest
         return self.governing[0] if self.governing else None
 
     @property
