@@ -138,50 +138,60 @@ def _axis_label(name: str, si_unit: str) -> tuple[float, str]:
 
 
 def _limit_levels(sweep: Sweep, key: str) -> list[tuple[float, str]]:
-    """The limits of a result in a sweep, each with its words (see :func:`_levels`), a
-    judged quantity's read at the first point where it and its margin are known."""
-    def at_a_point(margin: str) -> tuple[float, float] | None:
+    """The limits of a result in a sweep, each with its words (see :func:`_levels`),
+    read at the first point where the result and the margin are known."""
+    def at_a_point(margin: str) -> Mapping[str, float] | None:
         if margin not in sweep.results:
             return None
-        values, margins = sweep.results[key], sweep.results[margin]
-        good = np.flatnonzero(np.isfinite(values) & np.isfinite(margins))
-        return (float(values[good[0]]), float(margins[good[0]])) if good.size else None
+        good = np.flatnonzero(np.isfinite(sweep.results[key])
+                              & np.isfinite(sweep.results[margin]))
+        if not good.size:
+            return None
+        return {name: float(values[good[0]]) for name, values in sweep.results.items()}
 
     return _levels(sweep.kind, sweep.limits, sweep.kind.margins, key, at_a_point)
 
 
 def _study_limits(report: StudyReport, key: str) -> list[tuple[float, str]]:
-    """The limits of a result in a tolerance study (see :func:`_levels`), a judged
-    quantity's read at the nominal design."""
+    """The limits of a result in a tolerance study (see :func:`_levels`), read at the
+    nominal design."""
     from bearingcalc.kinds import KINDS
 
     results = report.record["results"]
 
-    def nominal(margin: str) -> tuple[float, float] | None:
+    def nominal(margin: str) -> Mapping[str, float] | None:
         if margin not in report.margins or results[key]["nominal"] is None:
             return None
-        return results[key]["nominal"], results[margin]["nominal"]
+        return {name: entry["nominal"] for name, entry in results.items()
+                if entry["nominal"] is not None}
 
     return _levels(KINDS[report.record["kind"]], report.limits, report.margins, key, nominal)
 
 
+#: A value no result has exactly, to ask a margin whether it judges a result.
+_PROBE = 1.2345678
+
+
 def _levels(kind: Kind, limits: Mapping[str, float], margins: Iterable[str], key: str,
-            known: Callable[[str], tuple[float, float] | None]) -> list[tuple[float, str]]:
+            known: Callable[[str], Mapping[str, float] | None]) -> list[tuple[float, str]]:
     """The limits of a result, each with its words: its own symmetric limit, 0 of a
-    margin, or the limit of the quantity a margin judges (a life's required life), from
-    the quantity and margin ``known`` gives at one design."""
+    margin, or the limit of a result a margin judges (a life's required life; the min
+    bending safety of either gear), from the results ``known`` gives at one design."""
     if key in limits:
         return [(-limits[key], "limit"), (limits[key], "limit")]
     if key in margins:
         return [(0.0, "limit")]
     for margin, judged in kind.judged.items():
-        pair = known(margin) if judged.quantity == key else None
-        if pair is None:
+        if judged.value({key: _PROBE}) != _PROBE:  # it judges other results
             continue
-        value, margin_value = pair
-        limit = judged.limit(value if judged.at_least else abs(value), margin_value)
+        point = known(margin)
+        value = None if point is None else judged.value(point)
+        if point is None or value is None:
+            continue
+        limit = judged.limit(value, point[margin])
         if np.isfinite(limit):
-            return [(limit, f"{judged.limit_word} {judged.named({})}")]
+            named = judged.named({}).removeprefix("smallest ")  # "min static safety s0"
+            return [(limit, f"{judged.limit_word} {named}")]
     return []
 
 
@@ -252,7 +262,9 @@ def _line(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> Any:
             panel.set_yscale("log")
         panel.set_ylabel(", ".join(words(key) for key in members)
                          + (f" [{unit}]" if unit else ""))
-        panel.grid(alpha=0.3, which="both" if log_x else "major")
+        panel.grid(alpha=0.3)
+        if logarithmic or log_x:
+            panel.grid(alpha=0.1, which="minor")
     if sweep.kind.margins and sweep.within_limits.any():
         for i, (start, stop) in enumerate(_within_limit_spans(sweep, x, log_x, log_y)):
             for panel in panels:
@@ -269,10 +281,23 @@ def _line(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> Any:
     bottom.set_xlabel(x_label)
     if log_x:
         bottom.set_xscale("log")
+        _plain_log_ticks(bottom.xaxis, float(np.nanmin(x)), float(np.nanmax(x)))
     elif axis.integer:
         bottom.xaxis.get_major_locator().set_params(integer=True)
     _legend_below(bottom, handles)
     return panels[0]
+
+
+def _plain_log_ticks(axis: Any, low: float, high: float) -> None:
+    """Ticks at 1, 2 and 5 of each decade, written plainly (2, 5, 10 kN, not 10⁰, 10¹)."""
+    from matplotlib.ticker import NullFormatter, ScalarFormatter
+
+    decades = range(int(np.floor(np.log10(low))), int(np.ceil(np.log10(high))) + 1)
+    ticks = [m * 10.0 ** d for d in decades for m in (1, 2, 5) if low <= m * 10.0 ** d <= high]
+    if len(ticks) >= 2:
+        axis.set_ticks(ticks)
+        axis.set_major_formatter(ScalarFormatter())
+        axis.set_minor_formatter(NullFormatter())
 
 
 def _within_limit_spans(sweep: Sweep, x: NDArray, log_x: bool,

@@ -139,3 +139,18 @@ def test_a_chosen_result_is_the_plot(cli, tmp_path, monkeypatch):
               "-r", "static_safety_factor", "--plot", tmp_path / "h.png")
     assert run.code in (0, 1), run.err
     assert drawn == ["static_safety_factor"]
+
+
+def test_a_safety_judged_through_the_weaker_member_still_draws_its_limit():
+    """A drive's bending margin judges the weaker gear and its s0 margin the weakest
+    bearing (no one result): each such result is drawn with that same limit."""
+    solved = _sweep(ROOT / "specs" / "bevel-drive.yaml",
+                    "pinion_bearings.2.position=110mm:250mm:8")
+    spec = load_one_spec(ROOT / "specs" / "bevel-drive.yaml")[1]
+    ((bending, named),) = plots._limit_levels(solved, "bending_safety")
+    assert bending == pytest.approx(spec.limits.min_bending_safety, rel=1e-12)
+    assert named == "min bending safety S_F"
+    ((static, named),) = plots._limit_levels(solved, "pinion_bearing_1_static_safety_factor")
+    assert static == pytest.approx(spec.limits.min_static_safety, rel=1e-12)
+    assert named == "min static safety s0"
+    assert plots._limit_levels(solved, "gear_speed") == []
