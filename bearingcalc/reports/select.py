@@ -130,8 +130,8 @@ def _print_choice(out: Any, selection: Selection, choice: PositionChoice) -> Non
         out.print(table)
     if choice.qualifying:
         best = choice.qualifying[0].row
-        out.print(f"[bold green]SELECTED[/] for {safe_text(choice.label)}: "
-                  f"{safe_text(best.designation)} ({safe_text(best.maker)}): "
+        out.print(f"[bold green]SELECTED[/] {safe_text(best.designation)} "
+                  f"({safe_text(best.maker)}) as {safe_text(choice.label)}; its row is from "
                   f"{safe_text(printable(best.source))}")
     else:
         out.print(f"[bold red]NONE[/] of the catalogue's bearings meets every limit for "
