@@ -515,6 +515,20 @@ def test_a_temperature_stays_in_the_unit_it_was_written_in(cli, spec_file):
     assert cells[1:5] == ["70", "65", "75", "degC"], cells
 
 
+def test_every_input_stays_in_the_unit_it_was_written_in(cli, spec_file):
+    """0.5 in ± 0.0002 in is shown in inches, not as 12.7 mm; rpm as rpm."""
+    text = TB.replace("12.7 mm ± 0.005 mm", "0.5 in ± 0.0002 in").replace(
+        "1500 rpm", "25 rev/s")
+    run = cli("tolerance", spec_file(text), "-n", "1024", "--method", "worst-case")
+    assert run.code in (0, 1), run.err
+    row = next(line for line in run.out.splitlines() if "ball_diameter" in line)
+    cells = [cell.strip() for cell in row.split("│") if cell.strip()]
+    assert [float(c) for c in cells[1:4]] == pytest.approx([0.5, 0.4998, 0.5002], rel=1e-12)
+    assert cells[4] == "in"
+    row = next(line for line in run.out.splitlines() if "pitch_radius" in line)
+    assert "mm" in row and "26" in row
+
+
 def test_rss_says_when_the_band_crosses_a_switch(cli, spec_file):
     """A tapered pair at Fa/Fr = 0.28 whose axial load band (1–4 kN) crosses e = 0.37:
     X and Y switch within the band, which RSS, linear at the centre, cannot see."""

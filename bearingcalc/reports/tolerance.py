@@ -5,10 +5,11 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from typing import IO, TYPE_CHECKING, Any
 
 from bearingcalc.reports.formatting import console, format_number, safe_text, verdict_line
-from bearingcalc.units import TEMPERATURE_UNITS
+from bearingcalc.units import DIMENSIONS, TEMPERATURE_UNITS, UnitError, unit_scale
 from bearingcalc.units import to_display as si_display
 from bearingcalc.verdicts import Verdict
 
@@ -46,14 +47,8 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
         inputs.add_column(column, no_wrap=True, justify="left" if column in (
             "input", "unit", "distribution") else "right")
     for name, entry in record["inputs"].items():
-        written = entry.get("written_unit", "")
-        if written in TEMPERATURE_UNITS:  # as written: 80 degC stays degC
-            scale, offset = TEMPERATURE_UNITS[written]
-            shown = [((entry[k] - offset) / scale, written) for k in ("nominal", "low", "high")]
-            shown.append((entry["std"] / scale, written))
-        else:
-            shown = [to_display(entry[k], units[name]) for k in ("nominal", "low", "high",
-                                                                  "std")]
+        shown = _as_written(entry, units[name]) or [
+            to_display(entry[k], units[name]) for k in ("nominal", "low", "high", "std")]
         inputs.add_row(name, *(format_number(v) for v, _ in shown[:3]), shown[0][1],
                        entry["distribution"], format_number(shown[3][0]))
     out.print(inputs)
@@ -146,6 +141,29 @@ def _as_solve_shows(report: StudyReport, value: float, si_unit: str,
         unit, factor = report.display[key]
         return value * factor, unit
     return si_display(value, si_unit)
+
+
+def _as_written(entry: dict[str, Any], si_unit: str) -> list[tuple[float, str]] | None:
+    """A toleranced input's nominal, band ends and σ in the unit the spec wrote it in
+    (80 degC stays degC, 0.3 in stays in); None where it was written without a unit
+    or in one that is not this quantity's."""
+    written = entry.get("written_unit", "")
+    keys = ("nominal", "low", "high")
+    if written in TEMPERATURE_UNITS:
+        scale, offset = TEMPERATURE_UNITS[written]
+        return [((entry[k] - offset) / scale, written) for k in keys] + [
+            (entry["std"] / scale, written)]
+    dimension = next((d for d in DIMENSIONS.values() if d.si_unit == si_unit), None)
+    if not written or dimension is None:
+        return None
+    try:
+        factor, divides = unit_scale(written, dimension)
+    except UnitError:
+        return None
+    unit = re.sub(r"\s*\*\s*(?![*\d])", "·", written.replace("**2", "²").replace("^2", "²")
+                  .replace("**3", "³").replace("^3", "³"))
+    return [(entry[k] * factor if divides else entry[k] / factor, unit)
+            for k in (*keys, "std")]
 
 
 def _ran(results: dict[str, Any], method: str) -> bool:
