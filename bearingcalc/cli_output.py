@@ -264,8 +264,11 @@ class HelpListsKinds(WordedHelp):
             kinds.add_row(name, kind.summary)
         kinds.add_row("", "")
         kinds.add_row("", "'bearingcalc new KIND' prints a commented template spec of KIND.")
-        Console().print(Panel(kinds, title="Kinds (a spec's 'kind:')", title_align="left",
-                              border_style="dim", box=box.ROUNDED))
+        # as wide as typer draws the panels above it
+        width = os.environ.get("TERMINAL_WIDTH")
+        console = Console(width=int(width) if width and width.isdigit() else None)
+        console.print(Panel(kinds, title="Kinds (a spec's 'kind:')", title_align="left",
+                            border_style="dim", box=box.ROUNDED))
 
 
 class OneLineUsageErrors(_WordedParameters, TyperGroup):

@@ -93,8 +93,9 @@ def _plots(kind: Any, spec: Any, evaluation: Any) -> list[tuple[str, str]]:
             plots.append(curve)
     if kind.name == "bevel-drive":
         plots.append(_drive_lives(evaluation))
-        if not shares:  # a duty cycle's shafts carry a load per bin, not one diagram
-            plots.append(_shaft_loads(spec, evaluation))
+        diagram = None if shares else _shaft_loads(spec, evaluation)
+        if diagram is not None:  # a duty cycle's shafts carry a load per bin, not one
+            plots.append(diagram)
     return plots
 
 
@@ -192,9 +193,9 @@ def _damage_plot(evaluation: Any, shares: list[str]) -> tuple[str, str]:
             svg_of(draw))
 
 
-def _shaft_loads(spec: Any, evaluation: Any) -> tuple[str, str]:
+def _shaft_loads(spec: Any, evaluation: Any) -> tuple[str, str] | None:
     """Each shaft's bending moment along its axis, with its bearings and its gear."""
-    from bearingcalc.core.bevel_drive import shaft_bending_moments
+    from bearingcalc.core.bevel_drive import mean_pitch_point, shaft_bending_moments
 
     results = evaluation.results
     shafts = spec.solver_inputs()["shafts"]
@@ -204,8 +205,8 @@ def _shaft_loads(spec: Any, evaluation: Any) -> tuple[str, str]:
             continue
         positions = tuple(float(bearing["position"]) for bearing in shafts[shaft])
         angle = results[f"gear_{gear}_pitch_angle"]
-        mesh = results["mean_cone_distance"] * np.cos(angle)
-        radius = results["mean_cone_distance"] * np.sin(angle)
+        mesh, radius = (float(v) for v in mean_pitch_point(results["mean_cone_distance"],
+                                                             angle))
         ends = [*positions, mesh]
         x = np.linspace(min(ends), max(ends), 801)
         x = np.unique(np.concatenate([x, ends]))
@@ -214,6 +215,8 @@ def _shaft_loads(spec: Any, evaluation: Any) -> tuple[str, str]:
             results[f"gear_{gear}_radial_force"], results[f"gear_{gear}_axial_force"])
         loads = [results[f"{shaft}_bearing_{i}_radial_load"] for i in (1, 2)]
         drawn.append((shaft, x, np.hypot(moment_y, moment_z), positions, mesh, loads))
+    if not drawn:
+        return None
 
     def draw(panels: list[Any]) -> None:
         for axes, (shaft, x, moment, positions, mesh, loads) in zip(panels, drawn,

@@ -9,6 +9,7 @@ import pytest
 
 from bearingcalc import plots
 from bearingcalc.evaluation import load_one_spec
+from bearingcalc.plots import common, limits, line
 from bearingcalc.sweeps import parse_axis, run_sweep
 from tests.conftest import ROOT
 
@@ -25,11 +26,11 @@ def test_names_read_as_words(name, said):
 
 def test_decades_and_power_laws():
     x = np.linspace(1.0, 20.0, 40)
-    assert plots._power_law(x, 3.0 * x ** (-10 / 3))  # a life against a load
-    assert not plots._power_law(x, 3.0 + x)
-    assert plots._spans_decades(np.array([1.0, 50.0, 300.0]))
-    assert not plots._spans_decades(np.array([1.0, 50.0]))
-    assert not plots._spans_decades(np.array([-1.0, 500.0]))
+    assert common.power_law(x, 3.0 * x ** (-10 / 3))  # a life against a load
+    assert not common.power_law(x, 3.0 + x)
+    assert common.spans_decades(np.array([1.0, 50.0, 300.0]))
+    assert not common.spans_decades(np.array([1.0, 50.0]))
+    assert not common.spans_decades(np.array([-1.0, 500.0]))
 
 
 def _sweep(path, text):
@@ -40,23 +41,23 @@ def _sweep(path, text):
 def test_a_life_sweep_draws_the_required_life_in_hours():
     """The life's limit comes from its margin: the spec's 6000 h, whatever the point."""
     solved = _sweep(ROOT / "specs" / "rolling-bearing.yaml", "radial_load=1kN:20kN:12")
-    ((level, named),) = plots._limit_levels(solved, "modified_rating_life")
+    ((level, named),) = limits.sweep_limits(solved, "modified_rating_life")
     assert level == pytest.approx(6000 * 3600.0, rel=1e-12)
     assert named == "required modified rating life"
-    assert plots._judged_quantity(solved, "life_margin") == "modified_rating_life"
+    assert limits.judged_quantity(solved, "life_margin") == "modified_rating_life"
 
 
 def test_the_line_plot_leaves_a_margin_out_beside_its_quantity(tmp_path, monkeypatch):
     solved = _sweep(ROOT / "specs" / "rolling-bearing.yaml", "radial_load=1kN:20kN:12")
     drawn = []
-    real = plots._line
+    real = plots.line_sweep
 
     def spy(sweep, keys, figure, axes):
         top = real(sweep, keys, figure, axes)
         drawn.extend(line.get_label() for ax in figure.axes for line in ax.get_lines())
         return top
 
-    monkeypatch.setattr(plots, "_line", spy)
+    monkeypatch.setattr(plots, "line_sweep", spy)
     plots.sweep_plot(solved, ["modified_rating_life", "life_margin"], tmp_path / "a.png")
     assert "modified rating life" in drawn and "life margin" not in drawn
     assert "required modified rating life" in drawn
@@ -69,7 +70,7 @@ def test_the_shade_ends_where_the_drawn_life_crosses_its_drawn_requirement():
     x = solved.inputs["radial_load"]
     life = solved.results["modified_rating_life"]
     required = 6000 * 3600.0
-    ((start, stop),) = plots._within_limit_spans(
+    ((start, stop),) = line.within_limit_spans(
         solved, x, log_x=False, log_y={"modified_rating_life": True})
     # the life falls with the load: interpolate the load against log life
     drawn = np.interp(np.log(required), np.log(life[::-1]), x[::-1])
@@ -87,13 +88,13 @@ def test_results_of_different_units_are_stacked_not_twinned(tmp_path, monkeypatc
     """A limit line on a second y axis would seem to cross the other result's curve."""
     solved = _sweep(ROOT / "specs" / "rolling-bearing.yaml", "radial_load=2kN:20kN:10")
     figures = []
-    real = plots._line
+    real = plots.line_sweep
 
     def spy(sweep, keys, figure, axes):
         figures.append(figure)
         return real(sweep, keys, figure, axes)
 
-    monkeypatch.setattr(plots, "_line", spy)
+    monkeypatch.setattr(plots, "line_sweep", spy)
     plots.sweep_plot(solved, ["modified_rating_life", "static_safety_factor"],
                      tmp_path / "a.png")
     (figure,) = figures
@@ -115,7 +116,7 @@ def _study(name, samples=4096):
 def test_a_study_plots_the_life_its_weakest_margin_judges_with_the_required_life():
     report = _study("ball-bearing.yaml")
     assert report.plotted == "modified_rating_life"
-    ((level, named),) = plots._study_limits(report, "modified_rating_life")
+    ((level, named),) = limits.study_limits(report, "modified_rating_life")
     assert level == pytest.approx(2000 * 3600.0, rel=1e-12)
     assert named == "required modified rating life"
 
@@ -128,7 +129,7 @@ def test_a_study_plots_the_margin_that_fails():
     assert results["bending_safety_margin"]["worst_case"]["min"] < 0
     assert results["life_margin"]["worst_case"]["min"] > 0
     assert report.plotted == "bending_safety_margin"
-    assert plots._study_limits(report, "bending_safety_margin") == [(0.0, "limit")]
+    assert limits.study_limits(report, "bending_safety_margin") == [(0.0, "limit")]
 
 
 def test_a_chosen_result_is_the_plot(cli, tmp_path, monkeypatch):
@@ -147,10 +148,40 @@ def test_a_safety_judged_through_the_weaker_member_still_draws_its_limit():
     solved = _sweep(ROOT / "specs" / "bevel-drive.yaml",
                     "pinion_bearings.2.position=110mm:250mm:8")
     spec = load_one_spec(ROOT / "specs" / "bevel-drive.yaml")[1]
-    ((bending, named),) = plots._limit_levels(solved, "bending_safety")
+    ((bending, named),) = limits.sweep_limits(solved, "bending_safety")
     assert bending == pytest.approx(spec.limits.min_bending_safety, rel=1e-12)
     assert named == "min bending safety S_F"
-    ((static, named),) = plots._limit_levels(solved, "pinion_bearing_1_static_safety_factor")
+    ((static, named),) = limits.sweep_limits(solved, "pinion_bearing_1_static_safety_factor")
     assert static == pytest.approx(spec.limits.min_static_safety, rel=1e-12)
     assert named == "min static safety s0"
-    assert plots._limit_levels(solved, "gear_speed") == []
+    assert limits.sweep_limits(solved, "gear_speed") == []
+
+
+def test_the_shade_is_the_same_on_a_falling_input():
+    """Swept from high load to low, the run within limits ends at the same crossing."""
+    path = ROOT / "specs" / "rolling-bearing.yaml"
+    rising = _sweep(path, "radial_load=2kN:20kN:10")
+    falling = _sweep(path, "radial_load=20kN:2kN:10")
+    log_y = {"modified_rating_life": True}
+    ((start, stop),) = line.within_limit_spans(rising, rising.inputs["radial_load"], False,
+                                               log_y)
+    ((start_falling, stop_falling),) = line.within_limit_spans(
+        falling, falling.inputs["radial_load"], False, log_y)
+    assert (start_falling, stop_falling) == (pytest.approx(stop, rel=1e-12), 2000.0)
+    assert start == 2000.0
+
+
+def test_of_two_limits_crossed_between_points_the_last_to_pass_starts_the_run(monkeypatch):
+    """From 16 kN down to 4 kN both margins recover: the life at 10 kN, the safety only
+    at 6.4 kN; the run within limits starts at 6.4 kN, whichever way the input runs."""
+    from types import SimpleNamespace
+
+    sides = [np.array([-1.0, 1.0]), np.array([-0.8, 0.2])]
+    monkeypatch.setattr(line, "_sides_of_limits", lambda sweep, log_y: sides)
+    falling = SimpleNamespace(within_limits=np.array([False, True]))
+    ((start, stop),) = line.within_limit_spans(falling, np.array([16.0, 4.0]), False, {})
+    assert (start, stop) == (pytest.approx(6.4, rel=1e-12), 4.0)
+    sides = [side[::-1] for side in sides]
+    rising = SimpleNamespace(within_limits=np.array([True, False]))
+    ((start, stop),) = line.within_limit_spans(rising, np.array([4.0, 16.0]), False, {})
+    assert (start, stop) == (4.0, pytest.approx(6.4, rel=1e-12))

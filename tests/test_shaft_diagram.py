@@ -52,3 +52,28 @@ def test_the_report_of_a_drive_draws_its_shafts(cli, tmp_path):
     assert run.code == 0, run.err
     page = target.read_text(encoding="utf-8")
     assert "bending moment" in page and page.count("<svg") >= 2
+
+
+def test_a_drive_with_bearings_on_one_shaft_draws_that_shaft(cli, tmp_path, monkeypatch):
+    import yaml
+
+    from bearingcalc import report
+
+    panels = []
+    real = report.svg_of
+
+    def counted(draw, **kwargs):
+        panels.append(kwargs.get("panels"))
+        return real(draw, **kwargs)
+
+    monkeypatch.setattr(report, "svg_of", counted)
+
+    data = yaml.safe_load((ROOT / "specs" / "bevel-drive.yaml").read_text())
+    del data["gear_bearings"]
+    spec = tmp_path / "pinion-only.yaml"
+    spec.write_text(yaml.safe_dump(data, allow_unicode=True))
+    target = tmp_path / "drive.html"
+    run = cli("report", spec, "-o", target)
+    assert run.code == 0, run.err
+    assert target.read_text(encoding="utf-8").count("<svg") == 2  # lives, the one shaft
+    assert panels == [None, 1]

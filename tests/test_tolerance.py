@@ -518,7 +518,7 @@ def test_a_temperature_stays_in_the_unit_it_was_written_in(cli, spec_file):
 def test_every_input_stays_in_the_unit_it_was_written_in(cli, spec_file):
     """0.5 in ± 0.0002 in is shown in inches, not as 12.7 mm; rpm as rpm."""
     text = TB.replace("12.7 mm ± 0.005 mm", "0.5 in ± 0.0002 in").replace(
-        "1500 rpm", "25 rev/s")
+        "1500 rpm", "25 rev/s ± 0.5 rev/s")
     run = cli("tolerance", spec_file(text), "-n", "1024", "--method", "worst-case")
     assert run.code in (0, 1), run.err
     row = next(line for line in run.out.splitlines() if "ball_diameter" in line)
@@ -527,6 +527,10 @@ def test_every_input_stays_in_the_unit_it_was_written_in(cli, spec_file):
     assert cells[4] == "in"
     row = next(line for line in run.out.splitlines() if "pitch_radius" in line)
     assert "mm" in row and "26" in row
+    row = next(line for line in run.out.splitlines() if "shaft_speed" in line)
+    cells = [cell.strip() for cell in row.split("│") if cell.strip()]
+    assert [float(c) for c in cells[1:4]] == pytest.approx([25, 24.5, 25.5], rel=1e-12)
+    assert cells[4] == "rev/s"
 
 
 def test_rss_says_when_the_band_crosses_a_switch(cli, spec_file):
@@ -540,3 +544,14 @@ def test_rss_says_when_the_band_crosses_a_switch(cli, spec_file):
         "radial_factor", "axial_factor"]
     assert any(w.startswith("RSS linearises at the centre, but the design switches")
                for w in record["warnings"])
+
+
+def test_the_note_on_normal_tails_gives_each_band_in_sigma(cli, spec_file):
+    """A band of ±1.5σ leaves erfc(1.5/√2) = 13.4 % of the draws outside it."""
+    text = TB.replace("30 deg ± 0.25 deg", "{nominal: 30 deg, tolerance: 0.25 deg, "
+                      "sigma_level: 1.5}")
+    run = cli("tolerance", spec_file(text), "-n", "1024")
+    assert run.code in (0, 1), run.err
+    said = " ".join(run.out.split())
+    assert f"contact_angle ±1.5σ: {100 * math.erfc(1.5 / math.sqrt(2)):.3g} %" in said
+    assert "ball_diameter, pitch_radius ±3σ: 0.27 %" in said

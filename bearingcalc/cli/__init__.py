@@ -203,7 +203,7 @@ def schema(
 
 @app.command(cls=WordedHelp)
 def new(
-    kind: Annotated[str | None, typer.Argument(
+    kind_name: Annotated[str | None, typer.Argument(
         help="The kind of spec.", show_default=False, metavar="KIND")
                     ] = None,
     bearing_type: Annotated[str | None, typer.Option(
@@ -215,20 +215,20 @@ def new(
     from bearingcalc.kinds import KINDS, unknown_kind
     from bearingcalc.templates import template_text
 
-    if list_kinds or kind is None:
+    if list_kinds or kind_name is None:
         text = "".join(f"{name:16} {entry.summary}\n" for name, entry in KINDS.items())
-    elif kind not in KINDS:
-        print(f"error: {unknown_kind(kind)}", file=sys.stderr)
+    elif kind_name not in KINDS:
+        print(f"error: {unknown_kind(kind_name)}", file=sys.stderr)
         raise typer.Exit(EXIT_INVALID)
     else:
         try:
-            text = template_text(kind, bearing_type)
+            text = template_text(kind_name, bearing_type)
         except LookupError as error:
             print(f"error: --type: {error}", file=sys.stderr)
             raise typer.Exit(EXIT_INVALID) from None
     with errors_as_exit(debug=False):
         write_stdout(lambda stream: stream.write(text))
-    if kind is None and not list_kinds:
+    if kind_name is None and not list_kinds:
         raise typer.Exit(EXIT_INVALID)
 
 

@@ -137,13 +137,30 @@ def shaft_reactions(positions: tuple[ArrayLike, ArrayLike], mesh_position: Array
     Source: statics of a beam on two simple supports (Budynas & Nisbett, *Shigley's
     Mechanical Engineering Design*, 10th ed., Example 13-8 sets up the same balance).
     """
+    (r1y, r1z), (r2y, r2z) = _support_forces(positions, mesh_position, mesh_radius,
+                                             tangential, radial, axial)
+    return np.hypot(r1y, r1z), np.hypot(r2y, r2z)
+
+
+def _support_forces(positions: tuple[ArrayLike, ArrayLike], mesh_position: ArrayLike,
+                    mesh_radius: ArrayLike, tangential: ArrayLike, radial: ArrayLike,
+                    axial: ArrayLike) -> tuple[tuple[NDArray, NDArray], tuple[NDArray, NDArray]]:
+    """((R1y, R1z), (R2y, R2z)) of :func:`shaft_reactions`, in the two planes. [N]"""
     x1, x2 = (np.asarray(x, dtype=float) for x in positions)
     xp, rp = np.asarray(mesh_position, dtype=float), np.asarray(mesh_radius, dtype=float)
     wt, wr, wa = (np.asarray(w, dtype=float) for w in (tangential, radial, axial))
     span = x2 - x1
     r2y = (wr * (xp - x1) + wa * rp) / span
     r2z = wt * (xp - x1) / span
-    return np.hypot(wr - r2y, wt - r2z), np.hypot(r2y, r2z)
+    return (wr - r2y, wt - r2z), (r2y, r2z)
+
+
+def mean_pitch_point(mean_cone_distance: ArrayLike, pitch_angle: ArrayLike
+                     ) -> tuple[NDArray, NDArray]:
+    """(x_p, r_p) = (Rm·cosδ, Rm·sinδ): where a gear's mean pitch point lies along its
+    shaft from the pitch-cone apex, and how far from the axis. [m]"""
+    distance, angle = np.asarray(mean_cone_distance), np.asarray(pitch_angle)
+    return distance * np.cos(angle), distance * np.sin(angle)
 
 
 def shaft_bending_moments(x: ArrayLike, positions: tuple[float, float], mesh_position: float,
@@ -166,11 +183,9 @@ def shaft_bending_moments(x: ArrayLike, positions: tuple[float, float], mesh_pos
     Engineering Design*, 10th ed., §3-3.
     """
     x = np.asarray(x, dtype=float)
-    x1, x2 = positions
-    span = x2 - x1
-    r2y = (radial * (mesh_position - x1) + axial * mesh_radius) / span
-    r2z = tangential * (mesh_position - x1) / span
-    reactions = ((x1, radial - r2y, tangential - r2z), (x2, r2y, r2z))
+    first, second = _support_forces(positions, mesh_position, mesh_radius, tangential,
+                                    radial, axial)
+    reactions = ((positions[0], *first), (positions[1], *second))
 
     def arm(at: float) -> NDArray:
         return np.maximum(x - at, 0.0)
@@ -257,9 +272,8 @@ def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -
                        np.asarray(positions[0]) == np.asarray(positions[1])))
         axial_force = pair.results[f"gear_{gear}_axial_force"]
         loads = shaft_reactions(
-            positions, mean_cone * np.cos(delta), mean_cone * np.sin(delta),
-            pair.results["tangential_force"], pair.results[f"gear_{gear}_radial_force"],
-            axial_force)
+            positions, *mean_pitch_point(mean_cone, delta), pair.results["tangential_force"],
+            pair.results[f"gear_{gear}_radial_force"], axial_force)
         axial_loads, adjusted = shaft_axial_loads(inputs["arrangements"][shaft], bearings,
                                                   loads, axial_force)
         for i, (bearing, radial, axial) in enumerate(zip(bearings, loads, axial_loads,

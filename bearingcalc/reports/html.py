@@ -160,15 +160,16 @@ def _result_tables(evaluation: Evaluation, kind: Kind) -> Iterator[str]:
         yield "</table>"
 
 
-def svg_of(draw: Callable[[Any], None], panels: int = 1) -> str:
+def svg_of(draw: Callable[[Any], None], panels: int | None = None) -> str:
     """A matplotlib figure drawn by ``draw(axes)`` as inline SVG (no XML declaration);
-    with several ``panels``, stacked, ``axes`` is their list."""
-    from bearingcalc.plots import _pyplot
+    given a number of ``panels``, stacked, ``axes`` is their list."""
+    from bearingcalc.plots.common import pyplot
 
-    plt = _pyplot()
-    figure, axes = plt.subplots(panels, 1, figsize=(7, 3.6 if panels == 1 else 2.8 * panels),
+    plt = pyplot()
+    count = panels or 1
+    figure, grid = plt.subplots(count, 1, figsize=(7, 3.6 if count == 1 else 2.8 * count),
                                 dpi=100, squeeze=False)
-    axes = axes[0, 0] if panels == 1 else list(axes[:, 0])
+    axes = grid[0, 0] if panels is None else list(grid[:, 0])
     try:
         draw(axes)
         figure.tight_layout()

@@ -111,12 +111,10 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
                   f"{record['seed']}): yield {_yield(record['yield'])}, "
                   f"{_out_of_spec(1.0 - record['yield'])} out of spec, "
                   f"{_capability(record)}, {record['infeasible_samples']} impossible designs")
-        normal = [name for name, entry in record["inputs"].items()
-                  if entry["distribution"] == "normal"]
-        if normal:
-            out.print(f"[dim]A normal input's band is ±3σ ({', '.join(normal)}): Monte "
-                      "Carlo draws each beyond it in 0.27 % of samples, so the samples' "
-                      "extremes can pass the worst case.[/]")
+        beyond = _beyond_the_band(record["inputs"])
+        if beyond:
+            out.print(f"[dim]Monte Carlo draws a normal input beyond its band ({beyond}), so "
+                      "the samples' extremes can pass the worst case.[/]")
     worst = [Verdict(**entry) for entry in record.get("worst_case_verdicts", [])]
     verdict = report.within_limits
     if verdict is True:
@@ -160,8 +158,8 @@ def _as_written(entry: dict[str, Any], si_unit: str) -> list[tuple[float, str]] 
         factor, divides = unit_scale(written, dimension)
     except UnitError:
         return None
-    unit = re.sub(r"\s*\*\s*(?![*\d])", "·", written.replace("**2", "²").replace("^2", "²")
-                  .replace("**3", "³").replace("^3", "³"))
+    powers = re.sub(r"\s*(\*\*|\^)\s*", "^", written)
+    unit = re.sub(r"\s*\*\s*", "·", powers.replace("^2", "²").replace("^3", "³"))
     return [(entry[k] * factor if divides else entry[k] / factor, unit)
             for k in (*keys, "std")]
 
@@ -185,17 +183,39 @@ def _terminal_histogram(out: Any, key: str, report: StudyReport, si_unit: str,
     # Four digits tell the bins apart; the edges are the histogram's, not results.
     for low, high, total in zip(lows, highs, totals.tolist(), strict=True):
         bar = "█" * round(width * total / peak)
-        out.print(f"{low * scale:>10.4g} … {high * scale:<10.4g} {bar} {total}")
+        out.print(f"{_four_digits(low * scale):>10} … {_four_digits(high * scale):<10} "
+                  f"{bar} {total}")
+
+
+def _beyond_the_band(inputs: dict[str, Any]) -> str:
+    """Each normal input's band in σ and the share of samples beyond it, P(|z| > k) =
+    erfc(k/√2): "radial_load, speed ±3σ: 0.27 %"; empty without normal inputs."""
+    by_k: dict[float, list[str]] = {}
+    for name, entry in inputs.items():
+        if entry["distribution"] == "normal" and entry["std"]:
+            k = round((entry["high"] - entry["low"]) / 2 / entry["std"], 6)
+            by_k.setdefault(k, []).append(name)
+    return "; ".join(f"{', '.join(names)} ±{k:g}σ: {_out_of_spec(math.erfc(k / math.sqrt(2)))}"
+                     for k, names in by_k.items())
 
 
 def _yield(fraction: float) -> str:
     """The yield to as many decimals as its complement, out of spec, shows: 74.8 %,
     99.99730 %."""
-    out = 1.0 - fraction
+    # rounded so that 1 − 0.9 is 0.1, not 0.0999…, whose decade is one lower
+    out = round(1.0 - fraction, 12)
     if out <= 0:
         return "100 %"
     decimals = max(1, 2 - math.floor(math.log10(100 * out)))
     return f"{100 * fraction:.{decimals}f} %"
+
+
+def _four_digits(value: float) -> str:
+    """Four significant digits without an exponent where the value allows: 20780, 0.1595."""
+    if value == 0 or 1e-4 <= abs(value) < 1e7:
+        digits = max(0, 3 - math.floor(math.log10(abs(value)))) if value else 0
+        return f"{value:.{digits}f}"
+    return f"{value:.4g}"
 
 
 def _out_of_spec(fraction: float) -> str:
