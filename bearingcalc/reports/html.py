@@ -68,7 +68,8 @@ pre { background: #f6f6f6; border: 1px solid #ddd; padding: 0.6em; font-size: 8.
       white-space: pre-wrap; }
 .meta td { border: none; padding: 0 1em 0 0; } figure { margin: 0.5em 0; }
 figure svg { max-width: 100%; height: auto; }
-@page { size: A4; margin: 15mm; }
+td.si { color: #555; font-size: 8.5pt; }
+@page { margin: 15mm; }
 @media print { body { margin: 0; } h2 { break-after: avoid; }
   section { break-before: page; } section.first { break-before: avoid; }
   table, figure { break-inside: avoid; } }
@@ -156,7 +157,7 @@ def _result_tables(evaluation: Evaluation, kind: Kind) -> Iterator[str]:
             si = "null" if value is None else repr(value)
             yield (f"<tr><td>{escape(key)}</td><td class=\"number\">{escape(shown)}</td>"
                    f"<td>{escape(unit)}</td><td>{escape(kind.results[key][1])}</td>"
-                   f"<td class=\"number\" data-key=\"{escape(key)}\">{escape(si)}</td></tr>")
+                   f"<td class=\"number si\" data-key=\"{escape(key)}\">{escape(si)}</td></tr>")
         yield "</table>"
 
 
