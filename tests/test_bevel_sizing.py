@@ -251,3 +251,19 @@ def test_a_small_pinion_warns_of_undercut(cli, spec_file):
         "gear_b: {teeth: 25}", "gear_b: {teeth: 40}")
     (record,) = solve_json(cli, spec_file(text.replace("27.94 mm", "20 mm")))
     assert any("undercut" in w for w in record["warnings"])
+
+
+def test_a_pair_faster_than_its_dynamic_factor_covers_is_refused(cli, spec_file):
+    """A module written in m, not mm, makes a 60 m pinion at 4,700 m/s: far above the
+    v_t,max the AGMA dynamic factor covers at Q_v 8 (about 28.7 m/s), so the spec is
+    refused at the quality number, not rated."""
+    text = (ROOT / "specs" / "bevel-drive.yaml").read_text()
+    run = cli("solve", spec_file(text.replace("module: 3 mm", "module: 3 m")))
+    assert run.code == 2 and "rating.quality_number" in run.err and "v_t,max" in run.err
+    # (50 + 56·(1 − B) + Q_v − 3)²/200 with B = 0.25·(12 − Q_v)^(2/3), written out at Q_v 8
+    b_exp = 0.25 * 4.0 ** (2.0 / 3.0)
+    assert bevel_rating.max_pitch_line_speed(8) == pytest.approx(
+        (50.0 + 56.0 * (1.0 - b_exp) + 5.0) ** 2 / 200.0, rel=1e-12)
+    assert 28.6 < bevel_rating.max_pitch_line_speed(8) < 28.7
+    # the example pair at 1500 rpm runs at 4.7 m/s: rated as before
+    assert cli("solve", spec_file(text)).code == 0

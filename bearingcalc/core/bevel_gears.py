@@ -137,6 +137,10 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
                       "most Re/3)"),
     8: ("power", "gear A does not turn relative to its arm, so power gives no torque: give "
                  "torque instead"),
+    9: ("rating.quality_number", "the pitch-line speed is above v_t,max = [A + (Q_v − 3)]²/200 "
+        "m/s, the most the AGMA dynamic factor covers at this quality number (28.7 m/s at "
+        "Q_v 8; Budynas & Nisbett eq. 15-6): check the module and speed, or give a higher "
+        "quality number"),
 }
 
 #: |γ − (α + β)| above which given angles are inconsistent. [rad] (about 2e-7 deg)
@@ -385,6 +389,10 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
         inputs["reliability"], lengthwise_curvature_factor=curvature,
         **gear_materials.rating_terms(inputs))  # type: ignore[arg-type]
     out.update(rating)
+    # the rating's own v_et, at the pinion's outer pitch circle
+    outer_speed = 0.5 * out["gear_a_outer_pitch_diameter"] * speed
+    checks.append((9, outer_speed > bevel_rating.max_pitch_line_speed(
+        inputs["quality_number"])))  # type: ignore[arg-type]
     bending, contact = rating["bending_safety"], rating["contact_safety"]
     if "gear_b_bending_safety" in rating:  # the weaker member of the two governs
         bending = np.minimum(bending, rating["gear_b_bending_safety"])

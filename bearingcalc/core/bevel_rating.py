@@ -77,6 +77,21 @@ def dynamic_factor(quality_number: ArrayLike, pitch_line_speed: ArrayLike) -> ND
     return ((a_coeff + np.sqrt(200.0 * np.abs(np.asarray(pitch_line_speed)))) / a_coeff) ** b_exp
 
 
+def max_pitch_line_speed(quality_number: ArrayLike) -> NDArray:
+    r"""The highest pitch-line speed the dynamic factor covers at a quality number.
+
+    .. math:: v_{t,max} = \frac{[A + (Q_v - 3)]^2}{200}
+
+    in m/s, A as in :func:`dynamic_factor`; 28.7 m/s at Q_v = 8.
+
+    Source: Budynas & Nisbett, eq. (15-6).
+    """
+    qv = np.asarray(quality_number, dtype=float)
+    b_exp = 0.25 * (12.0 - qv) ** (2.0 / 3.0)
+    a_coeff = 50.0 + 56.0 * (1.0 - b_exp)
+    return (a_coeff + (qv - 3.0)) ** 2 / 200.0
+
+
 def life_factors(cycles: ArrayLike) -> tuple[NDArray, NDArray]:
     r"""AGMA 2003's stress-cycle factors of through-hardened steel beyond 10⁷ cycles.
 
