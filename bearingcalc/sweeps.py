@@ -209,8 +209,20 @@ def sweep_spec(kind: Kind, spec: Spec, document: Document, vary: list[str]) -> S
 
 def shown_results(solved: Sweep, asked: list[str] | None) -> list[str]:
     """The results a table or chart shows: those asked for, else the kind's governing
-    ones; one the sweep has not is a :class:`SpecError`."""
+    ones and every other limit the sweep crosses (a drive's gear safety where its lives
+    hold), so that each edge of the range within limits is a curve that is shown; one the
+    sweep has not is a :class:`SpecError`."""
     keys = asked or [key for key in solved.kind.governing if key in solved.results]
+    if not asked:
+        for margin in solved.kind.margins:
+            values = solved.results.get(margin)
+            judged = solved.kind.judged.get(margin)
+            quantity = judged.quantity if judged is not None else None
+            shown = quantity if isinstance(quantity, str) and quantity in solved.results \
+                else margin
+            if values is not None and bool(np.any(values < 0)) and not {margin, shown} & {
+                    *keys}:
+                keys.append(shown)
     unknown = [key for key in keys if key not in solved.results]
     if unknown:
         raise SpecError(f"--result {unknown[0]!r} is not a result of this {solved.kind.name} "

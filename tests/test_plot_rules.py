@@ -185,3 +185,22 @@ def test_of_two_limits_crossed_between_points_the_last_to_pass_starts_the_run(mo
     rising = SimpleNamespace(within_limits=np.array([True, False]))
     ((start, stop),) = line.within_limit_spans(rising, np.array([4.0, 16.0]), False, {})
     assert (start, stop) == (4.0, pytest.approx(6.4, rel=1e-12))
+
+
+def test_every_limit_the_sweep_crosses_is_shown():
+    """Over torque the drive's lives hold past where its gear's bending safety fails:
+    the bending margin is shown, so the shade's edge is a drawn curve."""
+    from bearingcalc.sweeps import shown_results
+
+    solved = _sweep(ROOT / "specs" / "bevel-drive.yaml", "torque=40N*m:80N*m:9")
+    keys = shown_results(solved, None)
+    assert keys[:len(solved.kind.governing)] == [
+        key for key in solved.kind.governing if key in solved.results]
+    assert "bending_safety_margin" in keys
+    assert shown_results(solved, ["gear_speed"]) == ["gear_speed"]
+
+
+def test_a_study_leads_with_the_margin_that_fails():
+    report = _study("bevel-drive.yaml")
+    assert report.governing[0] == "bending_safety_margin"
+    assert "life_margin" in report.governing

@@ -42,18 +42,9 @@ class StudyReport:
         """The result a plot shows by default: the margin that comes nearest its limit
         (the one that fails, if any) by worst case or Monte Carlo, else the first
         governing result."""
-        results = self.record["results"]
-
-        def lowest(key: str) -> float:
-            entry = results.get(key, {})
-            found = [(entry.get("worst_case") or {}).get("min"),
-                     (entry.get("monte_carlo") or {}).get("min")]
-            values = [value for value in found if value is not None]
-            return min(values) if values else float("inf")
-
         judged = [key for key in self.margins if key in self.histograms]
         if judged:
-            weakest = min(judged, key=lowest)
+            weakest = weakest_margin(self.record, judged)
             # the quantity it judges says the same with its limit in its own unit (a life
             # in hours against the required life), where it was sampled
             judges = KINDS[self.record["kind"]].judged.get(weakest)
@@ -76,6 +67,21 @@ class StudyReport:
         if "yield" in self.record:
             return bool(self.record["yield"] == 1.0)  # Monte Carlo alone: every sample
         return None
+
+
+def weakest_margin(record: dict[str, Any], margins: Sequence[str]) -> str:
+    """Of ``margins``, the one that comes nearest its limit (the one that fails, if any)
+    by worst case or Monte Carlo, whichever reaches lower."""
+    results = record["results"]
+
+    def lowest(key: str) -> float:
+        entry = results.get(key, {})
+        found = [(entry.get("worst_case") or {}).get("min"),
+                 (entry.get("monte_carlo") or {}).get("min")]
+        values = [value for value in found if value is not None]
+        return min(values) if values else float("inf")
+
+    return min(margins, key=lowest)
 
 
 def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str],
@@ -166,7 +172,11 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
                 record["warnings"].append(f"{key}: no Sobol indices, {entry}")
             else:
                 record["results"][key]["sobol"] = entry
-    return StudyReport(_finite(record), histograms, governing, study.limit_values,
+    record = _finite(record)
+    if not results and study.margins:  # the margin nearest its limit leads the tables
+        weakest = weakest_margin(record, study.margins)
+        governing = [weakest, *(key for key in governing if key != weakest)]
+    return StudyReport(record, histograms, governing, study.limit_values,
                        tuple(study.margins), dict(kind.display))
 
 
