@@ -105,7 +105,10 @@ def solve(
     catalogue: CatalogueOption = None,
     debug: DebugOption = False,
 ) -> None:
-    """Solve each spec and report every result of its kind and the verdict on its limits."""
+    """Solve each spec and report every result of its kind and the verdict on its limits.
+
+    Exit status: 0 every spec within its limits; 1 a limit violated; 2 a spec invalid.
+    """
     with errors_as_exit(debug):
         from bearingcalc import reports
         from bearingcalc.evaluation import Evaluation, evaluate_file
@@ -187,7 +190,10 @@ def schema(
         "--kind", "-k", metavar="KIND",
         help="Only this kind's schema (see 'bearingcalc new --list').")] = None,
 ) -> None:
-    """Print the JSON Schema (draft 2020-12) of the spec format, for editors and CI."""
+    """Print the JSON Schema (draft 2020-12) of the spec format, for editors and CI.
+
+    Exit status: 0; 2 for an unknown kind.
+    """
     import json
 
     from bearingcalc.kinds import KINDS, unknown_kind
@@ -211,7 +217,10 @@ def new(
         show_default=False)] = None,
     list_kinds: Annotated[bool, typer.Option("--list", help="List the kinds.")] = False,
 ) -> None:
-    """Print a commented template spec of KIND, ready for 'bearingcalc check'."""
+    """Print a commented template spec of KIND, ready for 'bearingcalc check'.
+
+    Exit status: 0; 2 for an unknown kind or type, or no KIND (the kinds are listed).
+    """
     from bearingcalc.kinds import KINDS, unknown_kind
     from bearingcalc.templates import template_text
 
@@ -229,6 +238,8 @@ def new(
     with errors_as_exit(debug=False):
         write_stdout(lambda stream: stream.write(text))
     if kind_name is None and not list_kinds:
+        print("bearingcalc new: give a KIND, one of those above (see 'bearingcalc new -h')",
+              file=sys.stderr)
         raise typer.Exit(EXIT_INVALID)
 
 

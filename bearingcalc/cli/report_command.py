@@ -28,7 +28,7 @@ def report_command(
     catalogue: CatalogueOption = None,
     debug: DebugOption = False,
 ) -> None:
-    """A calculation report to print and file, one HTML file with nothing outside it.
+    """Write a calculation report to print and file: one HTML file, nothing outside it.
 
     It holds the inputs, results, verdict, standards, plots and the spec itself.
 

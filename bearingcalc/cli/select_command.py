@@ -62,7 +62,7 @@ def select_command(
     output: OutputOption = None,
     debug: DebugOption = False,
 ) -> None:
-    """The smallest bearings of a catalogue that meet every limit of the spec.
+    """Choose the smallest bearings of a catalogue that meet every limit of the spec.
 
     They are ranked by outside diameter, width and mass; the nearest that fail follow.
 

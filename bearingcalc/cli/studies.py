@@ -66,13 +66,15 @@ def tolerance(
         "--method", "-m", metavar="METHODS", help="Comma-separated: worst-case, rss, monte-carlo.")
     ] = "worst-case,rss,monte-carlo",
     samples: Annotated[int, typer.Option("--samples", "-n", parser=_sample_count, metavar="N",
-                                         help="Monte Carlo samples (1e5, 100000).")] = 100_000,
+                                         help="Monte Carlo samples, as 1e5 or 100000.")] = 100_000,
     seed: Annotated[int, typer.Option(
         "--seed", min=0, metavar="N", help="Seed of the sampler.")] = 0,
     sampler: Annotated[str, typer.Option(
-        "--sampler", metavar="SAMPLER", help="sobol or random.")] = "sobol",
-    sobol: Annotated[bool, typer.Option("--sobol", help="Add Sobol sensitivity indices.")
-                     ] = False,
+        "--sampler", metavar="SAMPLER",
+        help="How Monte Carlo draws: sobol (Sobol' points) or random.")] = "sobol",
+    sobol: Annotated[bool, typer.Option(
+        "--sobol", help="Add Sobol' sensitivity indices: which input drives each result's "
+        "variance.")] = False,
     result: Annotated[list[str] | None, typer.Option(
         "--result", "-r", metavar="KEY",
         help="Study this result (repeatable): it leads the table and plot, "
@@ -89,10 +91,11 @@ def tolerance(
     catalogue: CatalogueOption = None,
     debug: DebugOption = False,
 ) -> None:
-    """Worst case, RSS and Monte Carlo of every result under the spec's tolerances.
+    """Study every result under the spec's tolerances: worst case, RSS and Monte Carlo.
 
     Exit status: 0 the margins stay within their limits (at worst case when it is
-    run); 1 they can be exceeded; 2 the spec or the options are invalid.
+    run); 1 they can be exceeded, or the box holds impossible designs; 2 the spec or
+    the options are invalid.
     """
     with errors_as_exit(debug):
         from bearingcalc import batch, reports
@@ -154,7 +157,8 @@ def sweep(
         "once for a line, twice for a grid.", show_default=False)],
     result: Annotated[list[str] | None, typer.Option(
         "--result", "-r", metavar="KEY", help="Results for the table and plot (repeatable) "
-        "(default: the kind's governing results).")] = None,
+        "(default: the kind's governing results and any other limit the sweep crosses).")
+    ] = None,
     output_format: Annotated[SweepFormat | None, typer.Option(
         "--format", "-f", metavar="FORMAT",
         help="table, csv, json (JSON Lines) or parquet (default: csv for "
@@ -166,7 +170,11 @@ def sweep(
     catalogue: CatalogueOption = None,
     debug: DebugOption = False,
 ) -> None:
-    """Solve the spec over a line or grid of one or two inputs; impossible points are gaps."""
+    """Solve the spec over a line or grid of one or two inputs; impossible points are gaps.
+
+    Exit status: 0 the sweep is written; 2 a bad spec, --vary or --result, or an output
+    that cannot be written.
+    """
     with errors_as_exit(debug):
         from bearingcalc import batch, reports, sweeps
         from bearingcalc.evaluation import load_one_spec
