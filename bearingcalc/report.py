@@ -74,7 +74,12 @@ def _inputs(data: Any, spec: Any) -> Iterator[tuple[str, str, str]]:
             value = value.nominal
         parsed = field_parser(found.info) if found.info is not None else None
         unit = "" if parsed is None or parsed[2] == "1" else f" {parsed[2]}"
-        si = f"{value!r}{unit}" if isinstance(value, float) else str(value)
+        if isinstance(value, bool):
+            si = "true" if value else "false"
+        elif isinstance(value, float):
+            si = f"{value:.10g}{unit}"  # ten digits: the float's own, not its last bits
+        else:
+            si = str(value)
         yield name, shown, si
 
 
@@ -159,7 +164,12 @@ def _drive_lives(evaluation: Any) -> tuple[str, str]:
     required = _required_life(evaluation)
 
     def draw(axes: Any) -> None:
-        axes.barh(names, np.where(np.isfinite(lives), lives, 0.0), color="#4c72b0")
+        bars = axes.barh(names, np.where(np.isfinite(lives), lives, 0.0), color="#4c72b0")
+        # the bars start at the axis' edge, not at zero (a log axis): the numbers say it
+        axes.bar_label(bars, labels=[f"{life:,.0f} h".replace(",", "\u202f")
+                                     if np.isfinite(life) else "unbounded" for life in lives],
+                       padding=3, fontsize="small")
+        axes.margins(x=0.25)
         if required is not None:
             axes.axvline(required / 3600.0, color="#c44e52", linestyle=":",
                          label="required life (of the system)")
@@ -233,7 +243,7 @@ def _shaft_loads(spec: Any, evaluation: Any) -> tuple[str, str] | None:
             axes.set_title(f"{shaft} shaft", fontsize="medium", loc="left")
             axes.set_ylabel("bending moment [N·m]")
             axes.set_ylim(-0.3 * moment.max(), 1.15 * moment.max())
-            axes.margins(x=0.1)
+            axes.margins(x=0.15)
             axes.grid(alpha=0.3)
             axes.legend(fontsize="small", loc="upper right")
         panels[-1].set_xlabel("position along the shaft from the pitch-cone apex [mm]")

@@ -34,10 +34,15 @@ def test_the_report_is_html5_with_the_json_numbers(cli, tmp_path, path):
                 if not ref.startswith("#")]
     records = [json.loads(line) for line in cli("solve", path, "--format", "json"
                                                 ).out.splitlines()]
-    shown = re.findall(r'data-key="([^"]+)">([^<]*)<', page)
-    expected = [(key, "null" if value is None else repr(value))
-                for record in records for key, value in record["results"].items()]
-    assert sorted(shown) == sorted(expected)
+    cells = re.findall(r'data-key="([^"]+)" data-si="([^"]*)">([^<]*)<', page)
+    expected = {(key, "null" if value is None else repr(value))
+                for record in records for key, value in record["results"].items()}
+    # the JSON's number to the last digit, and on the page to ten digits
+    assert sorted((key, si) for key, si, _ in cells) == sorted(expected)
+    for key, si, shown in cells:
+        if si != "null":
+            assert float(shown) == pytest.approx(float(si), rel=1e-9, abs=0), key
+            assert len(shown) <= 16, shown
     assert path.read_text(encoding="utf-8").splitlines()[0].replace("&", "&amp;").replace(
         "<", "&lt;").replace(">", "&gt;").replace('"', "&quot;").replace("'", "&#x27;") in page
 

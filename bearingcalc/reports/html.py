@@ -142,7 +142,10 @@ def _section(evaluation: Evaluation, kind: Kind, first: bool, today: str, versio
 
 def _result_tables(evaluation: Evaluation, kind: Kind) -> Iterator[str]:
     grouped: set[str] = set()
-    groups = [*kind.groups.items(), ("other", tuple(evaluation.results))]
+    # a matrix's members (each bearing of a shaft, each bin of a cycle) under its heading
+    members = [(heading, tuple(f"{row}_{column}" for row in rows for column in columns))
+               for heading, (rows, columns) in kind.matrices.items()]
+    groups = [*kind.groups.items(), *members, ("other", tuple(evaluation.results))]
     for heading, keys in groups:
         present = [key for key in keys if key in evaluation.results and key not in grouped]
         if not present:
@@ -154,10 +157,14 @@ def _result_tables(evaluation: Evaluation, kind: Kind) -> Iterator[str]:
             value = evaluation.results[key]
             unit, factor = kind.display.get(key) or to_display(1.0, evaluation.units[key])[::-1]
             shown = "unbounded" if value is None else format_number(value * factor)
+            # the JSON's number whole in data-si; ten digits on the page, which the
+            # float's last bits (2.1500000000000004) would only clutter
             si = "null" if value is None else repr(value)
+            short = "null" if value is None else f"{value:.10g}"
             yield (f"<tr><td>{escape(key)}</td><td class=\"number\">{escape(shown)}</td>"
                    f"<td>{escape(unit)}</td><td>{escape(kind.results[key][1])}</td>"
-                   f"<td class=\"number si\" data-key=\"{escape(key)}\">{escape(si)}</td></tr>")
+                   f"<td class=\"number si\" data-key=\"{escape(key)}\" "
+                   f"data-si=\"{escape(si)}\">{escape(short)}</td></tr>")
         yield "</table>"
 
 
