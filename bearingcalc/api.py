@@ -90,14 +90,10 @@ class Result:
     def to_frame(self) -> Any:
         """The results as a pandas DataFrame (key, value in SI, unit, meaning); pandas is
         an optional extra (``pip install pandas``)."""
-        try:
-            import pandas as pd
-        except ImportError:
-            raise ImportError("to_frame needs pandas: pip install pandas") from None
         from bearingcalc.kinds import KINDS
 
         meanings = KINDS[self.kind].results
-        return pd.DataFrame(
+        return _pandas().DataFrame(
             [(key, value, self.units[key], meanings[key][1])
              for key, value in self.results.items()],
             columns=["result", "value", "unit", "meaning"]).set_index("result")
@@ -123,6 +119,14 @@ class Result:
     def __repr__(self) -> str:
         verdict = "within limits" if self.within_limits else "outside limits"
         return f"<Result {self.name!r} ({self.kind}): {len(self.results)} results, {verdict}>"
+
+
+def _pandas() -> Any:
+    try:
+        import pandas as pd
+    except ImportError:
+        raise ImportError("to_frame needs pandas: pip install pandas") from None
+    return pd
 
 
 #: The SI units results name that pint spells otherwise.
@@ -166,6 +170,38 @@ class Study:
     @property
     def within_limits(self) -> bool | None:
         return self.report.within_limits
+
+    def to_frame(self) -> Any:
+        """Each result's nominal value and what each method found, a row per result, in
+        SI (pandas, an optional extra)."""
+        columns = {"nominal": ("nominal",), "worst_case_min": ("worst_case", "min"),
+                   "worst_case_max": ("worst_case", "max"), "rss_mean": ("rss", "mean"),
+                   "rss_std": ("rss", "std"), "monte_carlo_mean": ("monte_carlo", "mean"),
+                   "monte_carlo_std": ("monte_carlo", "std"),
+                   "p00135": ("monte_carlo", "p00135"), "p99865": ("monte_carlo", "p99865")}
+
+        def cell(entry: dict[str, Any], path: tuple[str, ...]) -> Any:
+            found: Any = entry
+            for step in path:
+                found = found.get(step) if isinstance(found, dict) else None
+            return found
+
+        results = self.record["results"]
+        frame = _pandas().DataFrame(
+            [[key, self.record["units"][key], *(cell(entry, path) for path in columns.values())]
+             for key, entry in results.items()], columns=["result", "unit", *columns])
+        return frame.set_index("result").dropna(axis="columns", how="all")
+
+    def __repr__(self) -> str:
+        record = self.record
+        methods = [name for name, key in (("worst case", "worst_case"), ("RSS", "rss"))
+                   if any(key in entry for entry in record["results"].values())]
+        if "samples" in record:
+            methods.append(f"Monte Carlo {record['samples']:g}")
+        verdict = {True: "within limits", False: "limits exceeded", None: "no limits"}[
+            self.within_limits]
+        return (f"<Study {record['name'] or record['spec']!r} ({record['kind']}): "
+                f"{len(record['results'])} results by {', '.join(methods)}, {verdict}>")
 
     def plot(self, path: str | Path | None = None, key: str | None = None) -> Any:
         """The Monte Carlo histogram of ``key`` (default: the margin nearest its limit), written
@@ -214,6 +250,25 @@ class Sweep:
     @property
     def status(self) -> Any:
         return self.solved.status
+
+    def to_frame(self) -> Any:
+        """A row per point: the varied inputs, then every result, as the CSV's columns
+        (SI, NaN where a design is impossible), and the reason a point is impossible
+        (pandas, an optional extra)."""
+        from bearingcalc.reports.sweep_csv import sweep_columns
+
+        frame = _pandas().DataFrame(dict(sweep_columns(self.solved)))
+        frame["reason"] = [self.solved.reason(int(code)) if code else ""
+                           for code in self.solved.status]
+        return frame
+
+    def __repr__(self) -> str:
+        solved = self.solved
+        axes = (" × ".join(str(axis.values.size) for axis in solved.axes) + " points of "
+                + " × ".join(axis.name for axis in solved.axes))
+        impossible = int((solved.status != 0).sum())
+        return (f"<Sweep {solved.name!r} ({solved.kind.name}): {axes}, "
+                f"{len(solved.results)} results, {impossible} impossible>")
 
     def plot(self, path: str | Path | None = None, results: Sequence[str] = ()) -> Any:
         """The results against the swept input (contours over a grid), written to

@@ -69,6 +69,13 @@ def test_sweep_gives_the_points_of_the_command_line(cli, tmp_path):
                                                 "csv").out)))
     ours = line.results["pitch_radius_pure_rolling"]
     assert [float(row["pitch_radius_pure_rolling [m]"]) for row in rows] == list(ours)
+    frame = line.to_frame()  # the CSV's columns, number for number, and the reasons
+    for header in rows[0]:
+        if header != "reason" and not header.startswith("input."):
+            values = [float(row[header]) if row[header] else math.nan for row in rows]
+            assert frame[header].tolist() == pytest.approx(values, rel=0, nan_ok=True), header
+    assert frame["reason"].tolist() == [row["reason"] for row in rows]
+    assert len(repr(line)) < 200 and "7 points of contact_angle" in repr(line)
     assert line.plot(tmp_path / "line.png").stat().st_size > 1000
     assert line.plot()._repr_svg_().lstrip().startswith("<?xml")
 
@@ -80,3 +87,10 @@ def test_tolerance_gives_the_record_of_the_command_line(cli):
                             "json").out)
     assert study.record["results"] == record["results"]
     assert study.within_limits is True
+    frame = study.to_frame()
+    for key, entry in record["results"].items():
+        assert frame.loc[key, "nominal"] == entry["nominal"]
+        assert frame.loc[key, "worst_case_min"] == entry["worst_case"]["min"]
+        assert frame.loc[key, "monte_carlo_std"] == entry["monte_carlo"]["std"]
+        assert frame.loc[key, "unit"] == record["units"][key]
+    assert len(repr(study)) < 200 and "within limits" in repr(study)
