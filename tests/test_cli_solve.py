@@ -295,3 +295,18 @@ def test_a_limit_no_margin_can_name_is_said_as_the_plain_margin(cli, spec_file):
         "shaft_speed: 1500 rpm", "shaft_speed: 0 rpm")))
     assert run.code == 0, run.err
     assert "PASS: spin-to-roll ratio" in run.out and "the only limit judged" in run.out
+
+
+def test_a_narrow_terminal_turns_a_members_table_and_cuts_no_number(cli, monkeypatch):
+    """At 80 columns a drive's bearing table has a row per quantity and a column per
+    bearing; nothing in any table is cut short with an ellipsis."""
+    from bearingcalc.reports import formatting
+
+    monkeypatch.setattr(formatting, "PIPE_WIDTH", 80)
+    run = cli("solve", ROOT / "specs" / "bevel-drive.yaml")
+    assert run.code == 0, run.err
+    assert "…" not in run.out
+    assert re.search(r"│ modified rating life \[h\]\s+│\s+9793\.09 │\s+1588600 │", run.out)
+    monkeypatch.setattr(formatting, "PIPE_WIDTH", 200)
+    wide = cli("solve", ROOT / "specs" / "bevel-drive.yaml").out
+    assert re.search(r"│ pinion_bearing_1 │\s+3\.817113 │", wide)

@@ -91,10 +91,12 @@ def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
         table = Table(title=safe_text(f"{evaluation.name}  ({evaluation.kind}, "
                                       f"{evaluation.source})") + cited,
                       title_justify="left")
-        table.add_column("result")
-        table.add_column("value", justify="right")
-        table.add_column("unit")
-        table.add_column("meaning", style="dim")
+        # Narrow terminals take their room from the meaning, which wraps; a key, a
+        # number and a unit are read whole.
+        table.add_column("result", no_wrap=True)
+        table.add_column("value", justify="right", no_wrap=True)
+        table.add_column("unit", no_wrap=True)
+        table.add_column("meaning", style="dim", overflow="fold")
         in_matrices = {f"{row}_{column}" for rows, columns in kind.matrices.values()
                        for row in rows for column in columns}
         shown = {key: value for key, value in evaluation.results.items()
@@ -145,30 +147,49 @@ def _no_margins(kind: Kind) -> str:
 def _print_matrix(out: Any, evaluation: Evaluation, heading: str, rows: Sequence[str],
                   columns: Sequence[str], labels: Mapping[str, Mapping[float, str]]) -> None:
     """Results named ``{row}_{column}`` as a table with a row per member and a column per
-    quantity any member has; nothing when the evaluation has none of them."""
+    quantity any member has; nothing when the evaluation has none of them. Where that
+    table is wider than the terminal, it is turned: a row per quantity, a column per
+    member, so that every number stays whole."""
     from rich.table import Table
 
     present = [row for row in rows if any(f"{row}_{c}" in evaluation.results for c in columns)]
     if not present:
         return
     columns = [c for c in columns if any(f"{row}_{c}" in evaluation.results for row in present)]
-    table = Table(title=heading, title_justify="left")
-    table.add_column("")
+    headings = []
     for column in columns:
         unit = to_display(1.0, evaluation.units.get(f"{present[0]}_{column}", "1"))[1]
-        table.add_column(safe_text(f"{column} [{unit}]" if unit else column), justify="right")
-    for row in present:
-        cells = []
-        for column in columns:
-            value = evaluation.results.get(f"{row}_{column}")
-            key = f"{row}_{column}"
-            if value is not None and key in labels:
-                cells.append(labels[key].get(value, format_number(value)))
-                continue
-            cells.append("" if value is None else format_number(
-                to_display(value, evaluation.units[key])[0]))
-        table.add_row(safe_text(evaluation.row_names.get(row, row)), *cells)
+        name = column.replace("_", " ")
+        headings.append(safe_text(f"{name} [{unit}]" if unit else name))
+    names = [safe_text(evaluation.row_names.get(row, row)) for row in present]
+    cells = [[_matrix_cell(evaluation, f"{row}_{column}", labels) for column in columns]
+             for row in present]
+    # each column as wide as its widest number and its longest heading word, plus borders
+    wide = max(map(len, names)) + 4 + sum(
+        max(*(len(cell[k]) for cell in cells), *map(len, headings[k].split())) + 3
+        for k in range(len(columns)))
+    table = Table(title=heading, title_justify="left")
+    if wide <= out.width:
+        table.add_column("", no_wrap=True)  # the member's name, whole
+        for name in headings:  # in words: a long heading wraps, the numbers stay whole
+            table.add_column(name, justify="right")
+        for name, row in zip(names, cells, strict=True):
+            table.add_row(name, *row)
+    else:
+        table.add_column("", overflow="fold")
+        for name in names:
+            table.add_column(name, justify="right", no_wrap=True)
+        for k, name in enumerate(headings):
+            table.add_row(name, *(row[k] for row in cells))
     out.print(table)
+
+
+def _matrix_cell(evaluation: Evaluation, key: str,
+                 labels: Mapping[str, Mapping[float, str]]) -> str:
+    value = evaluation.results.get(key)
+    if value is not None and key in labels:
+        return labels[key].get(value, format_number(value))
+    return "" if value is None else format_number(to_display(value, evaluation.units[key])[0])
 
 
 def _grouped(results: Mapping[str, Any], groups: Mapping[str, Sequence[str]]

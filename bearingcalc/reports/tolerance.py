@@ -44,8 +44,10 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
 
     inputs = Table(title="toleranced inputs", title_justify="left")
     for column in ("input", "nominal", "low", "high", "unit", "distribution", "σ"):
-        inputs.add_column(column, no_wrap=True, justify="left" if column in (
-            "input", "unit", "distribution") else "right")
+        # the name folds in a narrow terminal; numbers and units are read whole
+        inputs.add_column(column, no_wrap=column != "input", overflow="fold",
+                          justify="left" if column in ("input", "unit", "distribution")
+                          else "right")
     for name, entry in record["inputs"].items():
         shown = _as_written(entry, units[name]) or [
             to_display(entry[k], units[name]) for k in ("nominal", "low", "high", "std")]
