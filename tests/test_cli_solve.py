@@ -265,6 +265,7 @@ def test_help_speaks_in_words(cli, command):
     assert not re.search(r"<[\w|\[\], ]+>", text), text
     # click's type names, which older typer puts where a metavar repeats the name
     assert not re.search(r"\b(TEXT|INTEGER|FLOAT|BOOLEAN)\b", text), text
+    assert not re.search(r"\[\S*x[<>]=", text), text  # typer's range tokens, [x>=1]
     assert "{" not in text and "list[" not in text
     usage = next(line for line in text.splitlines() if "Usage:" in line)
     assert re.search(r"\[OPTIONS\]( (SPEC|PATH)\.\.\.| SPEC| \[KIND\]| COMMAND)?", usage)

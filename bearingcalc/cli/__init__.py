@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import os
 import sys
+from collections.abc import Callable
 from enum import Enum
 from pathlib import Path
 from typing import Annotated
@@ -61,6 +62,18 @@ OutputOption = Annotated[Path | None, typer.Option(
     "an existing file as it was; never one of the specs the run reads).")]
 PlotOption = Annotated[Path | None, typer.Option(
     "--plot", metavar="FILE", help="Draw a chart to this .png or .svg file.")]
+
+
+def whole_number(low: int, high: int | None = None) -> Callable[[int | None], int | None]:
+    """An option's check that its whole number is at least ``low`` (and at most
+    ``high``): said in one line, and in the help's own words rather than a range token."""
+    def check(value: int | None) -> int | None:
+        if value is not None and (value < low or (high is not None and value > high)):
+            span = f"from {low} to {high}" if high is not None else f"of at least {low}"
+            raise typer.BadParameter(f"{value}: give a whole number {span}")
+        return value
+
+    return check
 
 
 def _use_catalogue(path: Path | None) -> Path | None:
@@ -153,7 +166,8 @@ def check(
     ] = CheckFormat.table,
     output: OutputOption = None,
     jobs: Annotated[int | None, typer.Option(
-        "--jobs", "-j", min=1, metavar="N", help="Worker processes (default: the number of cores).",
+        "--jobs", "-j", callback=whole_number(1), metavar="N",
+        help="Worker processes, 1 or more (default: the number of cores).",
         show_default=False)] = None,
     show_all: Annotated[bool, typer.Option(
         "--all", help="Table: list passing specs too when there are many.")] = False,

@@ -9,7 +9,14 @@ from typing import Annotated
 
 import typer
 
-from bearingcalc.cli import EXIT_LIMIT, CatalogueOption, DebugOption, OutputOption, app
+from bearingcalc.cli import (
+    EXIT_LIMIT,
+    CatalogueOption,
+    DebugOption,
+    OutputOption,
+    app,
+    whole_number,
+)
 from bearingcalc.cli_output import (
     WordedHelp,
     Writer,
@@ -54,7 +61,8 @@ def select_command(
         help="The largest width B (T of a tapered bearing), like '17 mm'.",
         show_default=False)] = None,
     top: Annotated[int, typer.Option(
-        "--top", "-n", min=1, max=MAX_TOP, metavar="N", help="List this many of each.")] = 5,
+        "--top", "-n", callback=whole_number(1, MAX_TOP), metavar="N",
+        help=f"List this many of each, 1 to {MAX_TOP}.")] = 5,
     output_format: Annotated[SelectFormat, typer.Option(
         "--format", "-f", metavar="FORMAT",
         help="table (engineering units), json (JSON Lines, SI) or csv (SI).")

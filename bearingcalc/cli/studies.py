@@ -19,6 +19,7 @@ from bearingcalc.cli import (
     PlotOption,
     _workers,
     app,
+    whole_number,
 )
 from bearingcalc.cli_output import (
     WordedHelp,
@@ -68,7 +69,8 @@ def tolerance(
     samples: Annotated[int, typer.Option("--samples", "-n", parser=_sample_count, metavar="N",
                                          help="Monte Carlo samples, as 1e5 or 100000.")] = 100_000,
     seed: Annotated[int, typer.Option(
-        "--seed", min=0, metavar="N", help="Seed of the sampler.")] = 0,
+        "--seed", callback=whole_number(0), metavar="N",
+        help="Seed of the sampler, 0 or more.")] = 0,
     sampler: Annotated[str, typer.Option(
         "--sampler", metavar="SAMPLER",
         help="How Monte Carlo draws: sobol (Sobol' points) or random.")] = "sobol",
@@ -85,8 +87,8 @@ def tolerance(
     plot: PlotOption = None,
     output: OutputOption = None,
     jobs: Annotated[int | None, typer.Option(
-        "--jobs", "-j", min=1, metavar="N",
-        help="Threads for Monte Carlo (default: the number of cores).",
+        "--jobs", "-j", callback=whole_number(1), metavar="N",
+        help="Threads for Monte Carlo, 1 or more (default: the number of cores).",
         show_default=False)] = None,
     catalogue: CatalogueOption = None,
     debug: DebugOption = False,
