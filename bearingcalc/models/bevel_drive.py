@@ -174,10 +174,19 @@ class BevelDriveSpec(DutyCycleRules, BevelPair):
 
     @staticmethod
     def _one_locating(field: str, bearings: list[DriveBearing]) -> list[SpecFieldError]:
+        # R is the share of an adjusted pair's preload; a locating bearing takes the whole
+        # force whatever R is, so a given R would change no number.
+        problems = [SpecFieldError(
+            f"{field}.{i}.induced_axial_factor", "not used in a locating-floating "
+            "arrangement: the locating bearing takes the whole axial force; leave it out, "
+            f"or give {field.removesuffix('_bearings')}_arrangement: back-to-back or "
+            "face-to-face for two bearings adjusted against each other")
+            for i, bearing in enumerate(bearings, 1)
+            if "induced_axial_factor" in bearing.model_fields_set]
         locating = [i for i, bearing in enumerate(bearings, 1) if bearing.locating]
         if len(locating) == 1:
-            return []
-        return [SpecFieldError(
+            return problems
+        return [*problems, SpecFieldError(
             f"{field}.1.locating" if not locating else f"{field}.{locating[1]}.locating",
             "exactly one bearing of a shaft is locating: it takes the whole axial force "
             f"(got {len(locating)})")]
