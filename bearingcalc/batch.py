@@ -15,7 +15,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from bearingcalc.errors import SpecError
-from bearingcalc.evaluation import Evaluation, evaluate_documents, load_selected
+from bearingcalc.evaluation import (
+    Evaluation,
+    evaluate_documents,
+    load_selected,
+    note_internal_error,
+)
 from bearingcalc.models.yaml_loader import Document, is_spec_file
 from bearingcalc.verdicts import Verdict
 
@@ -233,6 +238,7 @@ def check_chunk(files: Sequence[Path]) -> list[list[CheckRecord]]:
         except SpecError as error:
             loaded.append(_invalid(str(path), str(error)))
         except Exception as exc:  # one file's surprise never stops the batch
+            note_internal_error(exc)
             loaded.append(_invalid(str(path), f"{path}: internal error ({type(exc).__name__}); "
                                    "please report it with this file"))
     documents = [doc for item in loaded if isinstance(item, list) for doc in item]

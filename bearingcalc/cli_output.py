@@ -169,10 +169,17 @@ class errors_as_exit:
         self.debug = debug
 
     def __enter__(self) -> None:
-        return None
+        if self.debug:  # also the errors that specs' runs catch and go on after
+            from bearingcalc.evaluation import show_tracebacks
+
+            show_tracebacks(True)
 
     def __exit__(self, exc_type: type[BaseException] | None, exc: BaseException | None,
                  tb: object) -> bool:
+        if self.debug:
+            from bearingcalc.evaluation import show_tracebacks
+
+            show_tracebacks(False)
         if exc is None or isinstance(exc, (typer.Exit, typer.Abort, SystemExit)):
             return False
         if _interrupted(exc):

@@ -10,6 +10,8 @@ from __future__ import annotations
 import functools
 import math
 import re
+import sys
+import traceback
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -224,7 +226,25 @@ def _stacked(inputs: list[Any]) -> Any:
     return first if first is None or isinstance(first, str) else np.array(inputs)
 
 
+#: Whether an internal error's traceback goes to stderr where it is caught (the command
+#: line's --debug); without, it is only the spec's one line, as the run goes on.
+_TRACEBACKS: dict[str, bool] = {"shown": False}
+
+
+def show_tracebacks(shown: bool) -> None:
+    """Print (or not) the traceback of every internal error as it is caught."""
+    _TRACEBACKS["shown"] = shown
+
+
+def note_internal_error(exc: BaseException) -> None:
+    """An exception caught so that one spec's failure does not stop the others: its
+    traceback on stderr when :func:`show_tracebacks` asked for it."""
+    if _TRACEBACKS["shown"]:
+        traceback.print_exception(exc, file=sys.stderr)
+
+
 def _internal_error(document: Document, exc: Exception) -> SpecError:
+    note_internal_error(exc)
     return document.error(f"internal error ({type(exc).__name__}: {str(exc)[:200]}); "
                           "please report it with this spec")
 

@@ -91,8 +91,10 @@ WARNINGS: dict[str, str] = {
        "that runs both ways needs a locating bearing that carries both)"
        for name in _bearing_names() for way in ("away_from", "toward")},
 }
-#: Bearing types that carry thrust one way only in a single row.
+#: Bearing types that carry thrust one way only in a single row, and the arrangements
+#: in which they still do (a back-to-back or face-to-face pair carries it both ways).
 ONE_WAY_TYPES = ("angular-contact", "tapered-roller")
+ONE_WAY_ARRANGEMENTS = ("single", "tandem")
 
 #: The drive's own status codes: the pair's (1-8), then a shaft's coinciding bearings.
 COINCIDING_BEARINGS = {"pinion": 20, "gear": 21}
@@ -279,10 +281,13 @@ def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -
         for i, (bearing, radial, axial) in enumerate(zip(bearings, loads, axial_loads,
                                                          strict=True), 1):
             name = f"{shaft}_bearing_{i}"
-            if (bearing.get("locating") == "locating" and bearing.get("rows", 1) == 1
-                    and bearing["bearing_type"] in ONE_WAY_TYPES):
-                warnings[f"one_way_{name}_away_from"] = axial_force >= 0
-                warnings[f"one_way_{name}_toward"] = axial_force < 0
+            if (bearing.get("locating") == "locating" and bearing["bearing_type"] in ONE_WAY_TYPES
+                    and bearing.get("arrangement", "single") in ONE_WAY_ARRANGEMENTS):
+                # rows, like every number, may vary along a duty cycle's bins or a study
+                single_row = np.asarray(1.0 if bearing.get("rows") is None
+                                        else bearing["rows"], dtype=float) == 1
+                warnings[f"one_way_{name}_away_from"] = single_row & (axial_force >= 0)
+                warnings[f"one_way_{name}_toward"] = single_row & (axial_force < 0)
             solved = rolling_bearing.evaluate({
                 **bearing, "radial_load": radial, "axial_load": axial, "speed": speed,
                 "inner_speed": speed, "outer_speed": 0.0, "min_rating_life": None})

@@ -14,7 +14,13 @@ from pydantic import BeforeValidator, Field, StringConstraints, WithJsonSchema
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.ball_bearing_rules import GeometryRules, OperatingRules
 from bearingcalc.models.base import Spec, SpecModel
-from bearingcalc.models.duty import DutyCycleRules, bin_model
+from bearingcalc.models.duty import (
+    OIL_BIN_FIELDS,
+    OIL_BIN_PATHS,
+    BinOilRules,
+    DutyCycleRules,
+    bin_model,
+)
 from bearingcalc.models.lubrication import Lubrication
 from bearingcalc.models.materials import ElasticMaterial
 from bearingcalc.models.plain_numbers import (
@@ -34,11 +40,9 @@ from bearingcalc.models.quantities import (
     PositiveLength,
     PositiveStress,
     PositiveTime,
-    PositiveViscosity,
-    Temperature,
 )
 from bearingcalc.models.roller_bearing_rules import ROLLER_TYPES, RollerRules
-from bearingcalc.models.rules import rule, whole_spec_rule
+from bearingcalc.models.rules import rule
 
 RELIABILITY_RANGE = (0.90, 0.9995)
 #: ISO 76:2006 6.1: the contact pressure at C0 of a ball bearing and of a roller bearing.
@@ -165,21 +169,17 @@ BearingBin = bin_model("BearingBin", {
     "radial_load": (Force, "Fr"), "axial_load": (Force, "Fa"),
     "speed": (AngularSpeed, "the rotating ring relative to the other; 0: at rest"),
     "inner_speed": (AngularSpeed, "inner ring, fixed frame"),
-    "outer_speed": (AngularSpeed, "outer ring, fixed frame"),
-    "temperature": (Temperature, "operating temperature (with the oil's grade)"),
-    "viscosity": (PositiveViscosity, "operating viscosity ν"),
-})
+    "outer_speed": (AngularSpeed, "outer ring, fixed frame"), **OIL_BIN_FIELDS})
 
 
-class BallBearingSpec(DutyCycleRules, RollerRules, OperatingRules, GeometryRules,
+class BallBearingSpec(BinOilRules, DutyCycleRules, RollerRules, OperatingRules, GeometryRules,
                       BearingFields, Spec):
     """A rolling bearing sized by ISO 281 (life) and ISO 76 (static safety), at one
     operating point or over a duty cycle."""
 
     BIN_FIELDS: ClassVar[Mapping[str, str]] = {
         "radial_load": "radial_load", "axial_load": "axial_load", "speed": "speed",
-        "inner_speed": "inner_speed", "outer_speed": "outer_speed",
-        "temperature": "lubrication.temperature", "viscosity": "lubrication.viscosity"}
+        "inner_speed": "inner_speed", "outer_speed": "outer_speed", **OIL_BIN_PATHS}
 
     CATALOGUE_PLACES: ClassVar[tuple[str, ...]] = ("",)
 
@@ -212,21 +212,6 @@ class BallBearingSpec(DutyCycleRules, RollerRules, OperatingRules, GeometryRules
         """The bearing with its inner ring at ``speed`` and its outer ring fixed."""
         return self.model_copy(update={"speed": speed, "inner_speed": None,
                                        "outer_speed": None})
-
-    @whole_spec_rule
-    def _bins_and_oil(self) -> SpecFieldError | None:
-        """A bin's temperature needs the oil's grade, a bin's viscosity the oil given by
-        its viscosity: the spec's lubrication says which."""
-        lubrication = self.lubrication
-        for k, item in enumerate(self.duty_cycle or [], 1):
-            for field, needed in (("temperature", "viscosity_40"), ("viscosity", "viscosity")):
-                if getattr(item, field) is not None and (
-                        lubrication is None or getattr(lubrication, needed) is None):
-                    return SpecFieldError(
-                        f"duty_cycle.{k}.{field}", f"bin {self.bin_label(k)}: a bin's {field} "
-                        f"needs lubrication: {{{needed}: ...}} in the spec itself"
-                        + (", with viscosity_100" if needed == "viscosity_40" else ""))
-        return None
 
     @property
     def angle(self) -> float:

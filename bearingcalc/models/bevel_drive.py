@@ -18,7 +18,13 @@ from bearingcalc.models.ball_bearing import (
     UnitFraction,
 )
 from bearingcalc.models.bevel_gears import BevelGearsLimits, BevelPair
-from bearingcalc.models.duty import DutyCycleRules, bin_model
+from bearingcalc.models.duty import (
+    OIL_BIN_FIELDS,
+    OIL_BIN_PATHS,
+    BinOilRules,
+    DutyCycleRules,
+    bin_model,
+)
 from bearingcalc.models.lubrication import Lubrication
 from bearingcalc.models.plain_numbers import Ratio
 from bearingcalc.models.quantities import (
@@ -75,10 +81,10 @@ class BevelDriveLimits(BevelGearsLimits):
 
 DriveBin = bin_model("DriveBin", {
     "torque": (Torque, "on the pinion"), "power": (PositivePower, "through the pinion"),
-    "input_speed": (AngularSpeed, "the pinion shaft's speed; 0: at rest")})
+    "input_speed": (AngularSpeed, "the pinion shaft's speed; 0: at rest"), **OIL_BIN_FIELDS})
 
 
-class BevelDriveSpec(DutyCycleRules, BevelPair):
+class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
     """A right-angle (or any-angle) bevel drive: the pair, its two shafts and their
     bearings, from the input torque to every bearing's life, at one operating point or
     over a duty cycle."""
@@ -86,7 +92,7 @@ class BevelDriveSpec(DutyCycleRules, BevelPair):
     ALTERNATIVES: ClassVar[Mapping[str, str]] = {"torque": "power", "power": "torque"}
     POWER_FIELD: ClassVar[str | None] = "power"
     BIN_FIELDS: ClassVar[Mapping[str, str]] = {
-        field: field for field in ("torque", "power", "input_speed")}
+        **{field: field for field in ("torque", "power", "input_speed")}, **OIL_BIN_PATHS}
 
     CATALOGUE_PLACES: ClassVar[tuple[str, ...]] = ("pinion_bearings", "gear_bearings")
 
@@ -166,18 +172,31 @@ class BevelDriveSpec(DutyCycleRules, BevelPair):
                     problems.append(SpecFieldError(
                         f"{field}.{i}.type", "a thrust bearing takes no radial load, and "
                         "the gear forces load every bearing of the shaft radially"))
-                if bearing.arrangement != "single":
+                if bearing.arrangement != "single" and arrangement != "locating-floating":
+                    # A matched pair is one position of a locating-floating shaft, rated
+                    # as the pair; adjusted shafts pair their own two bearings.
                     problems.append(SpecFieldError(
-                        f"{field}.{i}.arrangement", "a drive's bearing is one bearing: give "
-                        f"{shaft}_arrangement for two bearings adjusted against each other"))
+                        f"{field}.{i}.arrangement", f"a {arrangement} shaft adjusts its two "
+                        "bearings against each other, each one bearing: leave arrangement "
+                        f"out, or give {shaft}_arrangement: locating-floating for a matched "
+                        "pair as one position"))
         return problems
 
     @staticmethod
     def _one_locating(field: str, bearings: list[DriveBearing]) -> list[SpecFieldError]:
+        # R is the share of an adjusted pair's preload; a locating bearing takes the whole
+        # force whatever R is, so a given R would change no number.
+        problems = [SpecFieldError(
+            f"{field}.{i}.induced_axial_factor", "not used in a locating-floating "
+            "arrangement: the locating bearing takes the whole axial force; leave it out, "
+            f"or give {field.removesuffix('_bearings')}_arrangement: back-to-back or "
+            "face-to-face for two bearings adjusted against each other")
+            for i, bearing in enumerate(bearings, 1)
+            if "induced_axial_factor" in bearing.model_fields_set]
         locating = [i for i, bearing in enumerate(bearings, 1) if bearing.locating]
         if len(locating) == 1:
-            return []
-        return [SpecFieldError(
+            return problems
+        return [*problems, SpecFieldError(
             f"{field}.1.locating" if not locating else f"{field}.{locating[1]}.locating",
             "exactly one bearing of a shaft is locating: it takes the whole axial force "
             f"(got {len(locating)})")]

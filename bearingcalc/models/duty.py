@@ -23,6 +23,7 @@ from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import SpecModel
 from bearingcalc.models.field_path import FieldPath, replaced
 from bearingcalc.models.plain_numbers import percentage
+from bearingcalc.models.quantities import PositiveViscosity, Temperature
 from bearingcalc.models.rules import whole_spec_problems, whole_spec_rule
 
 #: How far the time shares may add up from 100 %.
@@ -45,6 +46,41 @@ def bin_model(name: str, fields: Mapping[str, tuple[Any, str]]) -> type[DutyBin]
     return create_model(name, __base__=DutyBin,  # type: ignore[call-overload, no-any-return]
                         **{field: (annotation | None, Field(None, description=description))
                            for field, (annotation, description) in fields.items()})
+
+
+#: The oil a bin of a kind with rolling bearings may set (bin field -> annotation and
+#: description), and the spec's field each sets: a cold start, a hot peak.
+OIL_BIN_FIELDS: dict[str, tuple[Any, str]] = {
+    "temperature": (Temperature, "operating temperature of the bearings' oil (with its "
+                    "grade)"),
+    "viscosity": (PositiveViscosity, "operating viscosity ν of the bearings' oil")}
+OIL_BIN_PATHS = {"temperature": "lubrication.temperature",
+                 "viscosity": "lubrication.viscosity"}
+
+
+class BinOilRules:
+    """The rule of a spec whose bins may set its oil (:data:`OIL_BIN_FIELDS`)."""
+
+    if TYPE_CHECKING:
+        duty_cycle: list[Any] | None
+        lubrication: Any
+
+        def bin_label(self, k: int) -> str: ...
+
+    @whole_spec_rule
+    def _bins_and_oil(self) -> SpecFieldError | None:
+        """A bin's temperature needs the oil's grade, a bin's viscosity the oil given by
+        its viscosity: the spec's lubrication says which."""
+        lubrication = self.lubrication
+        for k, item in enumerate(self.duty_cycle or [], 1):
+            for field, needed in (("temperature", "viscosity_40"), ("viscosity", "viscosity")):
+                if getattr(item, field) is not None and (
+                        lubrication is None or getattr(lubrication, needed) is None):
+                    return SpecFieldError(
+                        f"duty_cycle.{k}.{field}", f"bin {self.bin_label(k)}: a bin's {field} "
+                        f"needs lubrication: {{{needed}: ...}} in the spec itself"
+                        + (", with viscosity_100" if needed == "viscosity_40" else ""))
+        return None
 
 
 class DutyCycleRules:

@@ -108,6 +108,8 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
                 to_display(effect, units[lead], lead)[0]))
         out.print(shares)
 
+    _print_sobol_indices(out, record, report.governing)
+
     if "yield" in record:
         out.print(f"Monte Carlo: {record['samples']} samples ({record['sampler']}, seed "
                   f"{record['seed']}): yield {_yield(record['yield'])}, "
@@ -131,6 +133,33 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
         out.print(f"[yellow]warning[/]: {safe_text(warning)}")
     if lead and lead in report.histograms:
         _terminal_histogram(out, lead, report, units[lead])
+
+
+def _print_sobol_indices(out: Any, record: dict[str, Any], governing: list[str]) -> None:
+    """The Sobol' indices of every result that has them (the studied results first): a
+    row per input, the results under their names, the inputs by total index."""
+    from rich.table import Table
+
+    results = record["results"]
+    keys = [*governing, *(key for key in results if key not in governing)]
+    indexed = [key for key in keys if "sobol" in results[key]]
+    if not indexed:
+        return
+    table = Table(title="Sobol' indices: each input's share of a result's variance, alone "
+                  "(first order) and with its interactions (total order)",
+                  title_justify="left")
+    for column in ("result", "input", "first order", "total order"):
+        table.add_column(column, justify="left" if column in ("result", "input") else "right",
+                         no_wrap=column != "result", overflow="fold")
+    for key in indexed:
+        first, total = (results[key]["sobol"][order] for order in ("first_order",
+                                                                    "total_order"))
+        for row, name in enumerate(sorted(total, key=lambda name: -total[name])):
+            # an estimate a hair below 0 reads 0.000, not -0.000
+            table.add_row(key if row == 0 else "", name, f"{round(first[name], 3) + 0.0:.3f}",
+                          f"{round(total[name], 3) + 0.0:.3f}",
+                          end_section=row == len(total) - 1)
+    out.print(table)
 
 
 def _as_solve_shows(report: StudyReport, value: float, si_unit: str,

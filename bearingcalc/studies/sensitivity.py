@@ -48,8 +48,9 @@ def sobol_indices(study: Study, samples: int, seed: int = 0,
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # rows without indices are reported below
         result = stats.sobol_indices(func=func, n=n, dists=dists, rng=seed)
-    first = np.asarray(result.first_order)
-    total = np.asarray(result.total_order)
+    # scipy drops the results' axis when there is one result: a row per result always
+    first = np.asarray(result.first_order).reshape(len(keys), len(study.inputs))
+    total = np.asarray(result.total_order).reshape(len(keys), len(study.inputs))
     out: dict[str, dict[str, dict[str, float]] | str] = {}
     for row, key in enumerate(keys):
         if impossible[row]:
