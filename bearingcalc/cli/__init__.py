@@ -193,7 +193,7 @@ def check(
             CheckFormat.json: lambda stream: reports.write_check_json_lines(records, stream),
             CheckFormat.junit: lambda stream: reports.write_junit(records, stream),
         }
-        with StagedFiles() as files:
+        with StagedFiles("check") as files:
             emit(writers[output_format], report, files)
         raise typer.Exit(batch.exit_status(records))
 
