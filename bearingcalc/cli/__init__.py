@@ -59,7 +59,7 @@ DebugOption = Annotated[bool, typer.Option("--debug", help="Show tracebacks of i
 OutputOption = Annotated[Path | None, typer.Option(
     "--output", "-o", metavar="FILE",
     help="Write to this file instead of stdout (atomically: a failed run leaves "
-    "an existing file as it was; never one of the specs the run reads).")]
+    "an existing file as it was; never a file the run reads, a spec or a catalogue).")]
 PlotOption = Annotated[Path | None, typer.Option(
     "--plot", metavar="FILE", help="Draw a chart to this .png or .svg file.")]
 
