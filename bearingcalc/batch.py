@@ -14,6 +14,7 @@ from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from bearingcalc import reads
 from bearingcalc.errors import SpecError
 from bearingcalc.evaluation import (
     Evaluation,
@@ -222,11 +223,20 @@ def check_files(files: Sequence[Path], jobs: int = 1,
                              initializer=set_default_catalogue,
                              initargs=(default_catalogue(),)) as pool:
         chunks = list(_chunks(files, chunk_size))
-        for chunk, result in zip(chunks, pool.map(check_chunk, chunks), strict=True):
+        for chunk, (result, read) in zip(chunks, pool.map(_check_chunk_noting_reads, chunks),
+                                         strict=True):
             records.extend(result)
+            reads.note_all(read)  # a worker's catalogues are files this run reads too
             if progress:
                 progress(len(chunk))
     return records
+
+
+def _check_chunk_noting_reads(files: Sequence[Path]
+                              ) -> tuple[list[list[CheckRecord]], dict[str, str]]:
+    """:func:`check_chunk` in a worker process, with the files it read."""
+    with reads.tracking() as read:
+        return check_chunk(files), read
 
 
 def check_chunk(files: Sequence[Path]) -> list[list[CheckRecord]]:

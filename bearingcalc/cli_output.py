@@ -18,6 +18,7 @@ from typing import IO, TYPE_CHECKING, Any, BinaryIO, TypeVar
 import typer
 from typer.core import TyperCommand, TyperGroup
 
+from bearingcalc import reads
 from bearingcalc.errors import SpecError
 from bearingcalc.output import StagedFiles, Target, check_targets, reason
 from bearingcalc.wording import printable
@@ -70,9 +71,20 @@ def plot_target(plot: Path | None) -> Target | None:
     return None if plot is None else Target(plot, "--plot", "plot", plot.suffix.lower())
 
 
-def refuse_unwritable(command: str, inputs: Iterable[Path], *targets: Target | None) -> None:
-    """Refuse, before any work, an output that cannot be written or would replace an input."""
-    check_targets([target for target in targets if target is not None], inputs, command)
+def refuse_unwritable(command: str, specs: Iterable[Path], *targets: Target | None) -> None:
+    """Refuse, before any work, an output that cannot be written or would replace an input:
+    one of ``specs``, or the catalogue ``--catalogue`` or ``BEARINGCALC_CATALOGUE`` names
+    (an input of every spec that names none, whether or not one does). A file found only
+    in the work (a catalogue a spec names) is refused by ``StagedFiles`` once it is read.
+    """
+    from bearingcalc.catalogue.fill import default_catalogue
+
+    for spec in specs:
+        reads.note(spec, "spec")
+    catalogue = default_catalogue()
+    if catalogue is not None:
+        reads.note(catalogue, "catalogue")
+    check_targets([target for target in targets if target is not None], command)
 
 
 def stage_plot(files: StagedFiles, plot: Target, draw: Callable[[BinaryIO, str], None]
@@ -162,13 +174,17 @@ def _interrupted(exc: BaseException) -> bool:
 
 
 class errors_as_exit:
-    """Turns any unexpected exception into one line on stderr and exit status 2; an
-    interruption and a closed output pipe get the shell's statuses for them."""
+    """A command's run: turns any unexpected exception into one line on stderr and exit
+    status 2 (an interruption and a closed output pipe get the shell's statuses for
+    them), and keeps the files the run reads (:mod:`bearingcalc.reads`), which no
+    output may replace."""
 
     def __init__(self, debug: bool) -> None:
         self.debug = debug
+        self._reads = reads.tracking()
 
     def __enter__(self) -> None:
+        self._reads.__enter__()
         if self.debug:  # also the errors that specs' runs catch and go on after
             from bearingcalc.evaluation import show_tracebacks
 
@@ -176,6 +192,7 @@ class errors_as_exit:
 
     def __exit__(self, exc_type: type[BaseException] | None, exc: BaseException | None,
                  tb: object) -> bool:
+        self._reads.__exit__(None, None, None)
         if self.debug:
             from bearingcalc.evaluation import show_tracebacks
 

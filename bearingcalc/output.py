@@ -2,7 +2,9 @@
 
 ``check_targets`` decides, before any work, whether each file a run will write can
 be written; ``StagedFiles`` writes them so that a failed run leaves every one of
-them as it was.
+them as it was. Both refuse a file the run reads, as :mod:`bearingcalc.reads` has
+noted them: the specs before any work, and whatever else the run read (a catalogue a
+spec names, the environment's catalogue) once the work is done.
 """
 
 from __future__ import annotations
@@ -11,11 +13,12 @@ import contextlib
 import os
 import stat
 import tempfile
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import IO, Any
 
+from bearingcalc import reads
 from bearingcalc.errors import SpecError
 
 
@@ -43,14 +46,15 @@ def reason(error: OSError) -> str:
     return (error.strerror or str(error)).lower()
 
 
-def check_targets(targets: Sequence[Target], inputs: Iterable[str | Path], command: str) -> None:
-    """Refuse, before any work, a target that cannot be written or would replace an input.
+def check_targets(targets: Sequence[Target], command: str) -> None:
+    """Refuse a target that cannot be written or would replace a file the run reads.
 
-    ``inputs`` are the files the run reads. A target is the same file as an input, or
-    as another target, when both resolve to the same real path or the same device
-    and inode (``..``, symbolic links, hard links); a target that does not exist yet
-    replaces nothing. Devices and FIFOs are written directly and never replace a
-    file. ``command`` names the suggested file (``drive-sweep.csv``). Raises SpecError.
+    The files read are those noted in :mod:`bearingcalc.reads` so far. A target is the
+    same file as one of them, or as another target, when both resolve to the same real
+    path or the same device and inode (``..``, symbolic links, hard links); a target
+    that does not exist yet replaces nothing. Devices and FIFOs are written directly
+    and never replace a file. ``command`` names the suggested file
+    (``drive-sweep.csv``). Raises SpecError.
     """
     files = [_FileId.of(target.path) for target in targets]
     for index, (target, file) in enumerate(zip(targets, files, strict=True)):
@@ -63,11 +67,17 @@ def check_targets(targets: Sequence[Target], inputs: Iterable[str | Path], comma
             if file.same_as(earlier_file):
                 raise target.error(f"names the same file as {earlier.option}; give each "
                                    "its own file")
-    existing = [(target, file) for target, file in zip(targets, files, strict=True)
+    refuse_replacing_reads(list(zip(targets, files, strict=True)), command)
+
+
+def refuse_replacing_reads(targets: Sequence[tuple[Target, _FileId]], command: str) -> None:
+    """Refuse any of ``targets`` (each with where it leads) that is a file the run has
+    read (:func:`bearingcalc.reads.noted`): a spec, a catalogue, any file at all."""
+    existing = [(target, file) for target, file in targets
                 if file.replaceable and file.key is not None]
     if not existing:
         return
-    for path in inputs:
+    for path, holds in reads.noted().items():
         # The same inode is the same file, and one stat per input finds it; the real path
         # costs a stat per folder of the path, so it is compared only without an inode.
         try:
@@ -78,8 +88,9 @@ def check_targets(targets: Sequence[Target], inputs: Iterable[str | Path], comma
         for target, file in existing:
             if file.same_as(read):
                 instead = f"{Path(path).stem}-{command}{target.suffix}"
-                raise target.error(f"would replace the spec {path} that this run reads; "
-                                   f"write the {target.holds} to another file, like {instead}")
+                raise target.error(f"would replace the {holds} {path} that this run "
+                                   f"reads; write the {target.holds} to another file, "
+                                   f"like {instead}")
 
 
 @dataclass(frozen=True)
@@ -138,10 +149,14 @@ class StagedFiles:
     while renaming) every temporary file is removed and every target is left as it
     was. A link is written through: the file it names is replaced and the link stays.
     Devices and FIFOs (/dev/null, /dev/stdout, a pipe) have nothing to protect or to
-    rename over: they are written directly, once every file has been staged.
+    rename over: they are written directly, once every file has been staged. Before
+    anything is renamed or written, a target that is a file the run has read (noted
+    in :mod:`bearingcalc.reads`, however late the run read it) is refused, and the
+    file is left as it was; ``command`` names the file suggested instead.
     """
 
-    def __init__(self) -> None:
+    def __init__(self, command: str) -> None:
+        self.command = command
         self._staged: list[tuple[Target, str, Path]] = []
         self._direct: list[tuple[Target, Path, Callable[[IO[Any]], None], bool]] = []
 
@@ -171,6 +186,8 @@ class StagedFiles:
 
     def _commit(self) -> None:
         try:
+            refuse_replacing_reads([(target, _FileId.of(real))
+                                    for target, _, real in self._staged], self.command)
             for target, real, write, binary in self._direct:
                 mode, encoding, newline = _mode(binary)
                 try:

@@ -70,8 +70,8 @@ def _inputs(data: Any, spec: Any) -> Iterator[tuple[str, str, str]]:
             yield name, shown, ""
             continue
         value = found.value
-        if isinstance(value, Measured):
-            value = value.nominal
+        if isinstance(value, Measured):  # a toleranced input: its nominal value
+            value = float(value)
         parsed = field_parser(found.info) if found.info is not None else None
         unit = "" if parsed is None or parsed[2] == "1" else f" {parsed[2]}"
         if isinstance(value, bool):
@@ -115,8 +115,7 @@ def _required_life(evaluation: Any) -> float | None:
 def _life_against_load(kind: Any, spec: Any, evaluation: Any) -> tuple[str, str] | None:
     from bearingcalc.sweeps import parse_axis, run_sweep
 
-    load = float(spec.radial_load) if not isinstance(spec.radial_load, Measured) else float(
-        spec.radial_load.nominal)
+    load = float(spec.radial_load)  # a toleranced load's nominal value
     life = evaluation.results.get("modified_rating_life")
     if not load > 0 or life is None:
         return None

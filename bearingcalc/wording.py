@@ -38,8 +38,10 @@ def spreadsheet_text(text: str) -> str:
     >>> spreadsheet_text("=cmd|' /c calc'!A1")
     "'=cmd|' /c calc'!A1"
     """
+    # The first character as written: a tab or a return is escaped by printable, but
+    # the cell is marked as text all the same.
     shown = printable(text)
-    return "'" + shown if shown[:1] in ("=", "+", "-", "@", "\t", "\r") else shown
+    return "'" + shown if text[:1] in ("=", "+", "-", "@", "\t", "\r") else shown
 
 
 def did_you_mean(word: str, choices: Iterable[str]) -> str:

@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
+from bearingcalc import reads
 from bearingcalc.catalogue.columns import COLUMNS, NUMERIC
 from bearingcalc.catalogue.designation import Designation, parse_designation
 from bearingcalc.catalogue.iso import iso_series, iso_table
@@ -140,8 +141,10 @@ _KEEP = 8
 
 def load_catalogue(path: str | Path) -> Catalogue:
     """The catalogue at ``path``, read once per version of the file (however the path is
-    written); raises SpecError."""
+    written); raises SpecError. Every call notes the file as read by the run (even when
+    its rows come from memory), so that no output of the run replaces it."""
     target = Path(path)
+    reads.note(target, "catalogue")
     try:
         status = target.stat()
         key = (str(target.resolve()), status.st_mtime, status.st_size)

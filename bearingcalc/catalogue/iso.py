@@ -7,9 +7,11 @@ from __future__ import annotations
 import csv
 import functools
 import io
+import os
 from dataclasses import dataclass
 from importlib import resources
 
+from bearingcalc import reads
 from bearingcalc.core.common import MM
 
 TABLE = "iso_boundary_dimensions.csv"
@@ -29,9 +31,16 @@ class IsoDimensions:
     iso355_series: str | None
 
 
-@functools.cache
 def iso_table() -> dict[str, IsoDimensions]:
     """Basic designation -> its ISO boundary dimensions."""
+    table = resources.files("bearingcalc.data").joinpath(TABLE)
+    if isinstance(table, os.PathLike):  # a file of its own, not inside a zip archive
+        reads.note(table, "ISO table")
+    return _iso_table()
+
+
+@functools.cache
+def _iso_table() -> dict[str, IsoDimensions]:
     text = resources.files("bearingcalc.data").joinpath(TABLE).read_text("utf-8")
     lines = (line for line in io.StringIO(text) if not line.startswith("#"))
     table: dict[str, IsoDimensions] = {}

@@ -59,7 +59,7 @@ DebugOption = Annotated[bool, typer.Option("--debug", help="Show tracebacks of i
 OutputOption = Annotated[Path | None, typer.Option(
     "--output", "-o", metavar="FILE",
     help="Write to this file instead of stdout (atomically: a failed run leaves "
-    "an existing file as it was; never one of the specs the run reads).")]
+    "an existing file as it was; never a file the run reads, a spec or a catalogue).")]
 PlotOption = Annotated[Path | None, typer.Option(
     "--plot", metavar="FILE", help="Draw a chart to this .png or .svg file.")]
 
@@ -193,7 +193,7 @@ def check(
             CheckFormat.json: lambda stream: reports.write_check_json_lines(records, stream),
             CheckFormat.junit: lambda stream: reports.write_junit(records, stream),
         }
-        with StagedFiles() as files:
+        with StagedFiles("check") as files:
             emit(writers[output_format], report, files)
         raise typer.Exit(batch.exit_status(records))
 

@@ -41,5 +41,5 @@ def report_command(
         target = output_target(output, "report", ".html")
         refuse_unwritable("report", [batch.spec_file(spec_path)], target)
         page = report_of(spec_path)
-        with StagedFiles() as files:
+        with StagedFiles("report") as files:
             emit(lambda stream: stream.write(page), target, files)

@@ -102,7 +102,7 @@ def select_command(
             SelectFormat.json: lambda stream: write_select_json_lines(selection, stream),
             SelectFormat.csv: lambda stream: write_select_csv(selection, stream),
         }
-        with StagedFiles() as files:
+        with StagedFiles("select") as files:
             emit(writers[output_format], target, files)
         if not selection.found:
             raise typer.Exit(EXIT_LIMIT)

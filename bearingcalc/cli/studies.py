@@ -130,7 +130,7 @@ def tolerance(
             StudyFormat.table: lambda stream: reports.print_tolerance_table(report, stream),
             StudyFormat.json: lambda stream: reports.write_tolerance_json(report, stream),
         }
-        with StagedFiles() as files:
+        with StagedFiles("tolerance") as files:
             plotted = result[0] if result else report.plotted
             if histogram is not None and plotted is not None:
                 from bearingcalc.plots import tolerance_histogram
@@ -192,10 +192,6 @@ def sweep(
         refuse_unwritable("sweep", [batch.spec_file(spec_path)], results_file, chart)
         kind, spec, document = load_one_spec(spec_path)
         solved = sweeps.sweep_spec(kind, spec, document, vary)
-        for note in solved.warnings:  # on stderr: the results may be a CSV or JSON stream
-            print(f"warning: {note}", file=sys.stderr)
-        for cited in solved.sources:
-            print(cited, file=sys.stderr)
         keys = sweeps.shown_results(solved, result)
 
         writers: dict[SweepFormat, Writer] = {
@@ -204,7 +200,7 @@ def sweep(
             SweepFormat.json: lambda stream: reports.write_sweep_json_lines(solved, stream),
             SweepFormat.parquet: lambda stream: reports.write_sweep_parquet(solved, stream),
         }
-        with StagedFiles() as files:
+        with StagedFiles("sweep") as files:
             if chart is not None:
                 from bearingcalc.plots import sweep_plot
 
@@ -212,6 +208,12 @@ def sweep(
                                                                    chosen=bool(result)))
             # Parquet is refused without --output (check_parquet_output): never stdout.
             emit(writers[chosen], results_file, files, binary=chosen is SweepFormat.parquet)
+        # On stderr, the results may be a CSV or JSON stream; once they are written, so
+        # that a refused output is the run's one line.
+        for note in solved.warnings:
+            print(f"warning: {note}", file=sys.stderr)
+        for cited in solved.sources:
+            print(cited, file=sys.stderr)
 
 
 

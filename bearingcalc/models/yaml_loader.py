@@ -20,6 +20,7 @@ from typing import Any, ClassVar
 
 import yaml
 
+from bearingcalc import reads
 from bearingcalc.errors import SpecError
 from bearingcalc.models.field_path import FieldPath
 from bearingcalc.number_grammar import NUMBER
@@ -94,6 +95,7 @@ class Document:
 def read_spec_text(path: str | os.PathLike[str]) -> str:
     """The text of a spec file, or a SpecError saying why it cannot be read."""
     label = str(path)
+    reads.note(path, "spec")
     try:
         # A FIFO or device named *.yaml would block or never end: refuse before opening.
         mode = os.stat(path).st_mode

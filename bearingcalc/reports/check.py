@@ -82,9 +82,14 @@ def print_check_table(records: Sequence[CheckRecord], *, show_all: bool,
             table.add_row(*row)
         out.print(table)
     else:  # a narrow terminal: a spec per paragraph, the verdict on its own line
+        from rich.padding import Padding
+
         for status, spec, name, kind, detail in rows:
-            out.print(f"{status}  {spec}  {name} ({kind})" if kind else f"{status}  {spec}")
-            out.print(f"      {detail}")
+            # The file name is never broken by a line end, however long its path: the
+            # line is left whole (a terminal folds it), to be read and copied as it is.
+            out.print(f"{status}  {spec}  {name} ({kind})" if kind else f"{status}  {spec}",
+                      soft_wrap=True)
+            out.print(Padding(detail, (0, 0, 0, 6), expand=False))
     counts = {status: sum(r.status == status for r in records)
               for status in ("pass", "fail", "invalid")}
     hidden = len(records) - len(shown)

@@ -28,9 +28,65 @@ def console(stream: IO[str] | None = None) -> Any:
             # rich would exit with status 1 here; the CLI keeps the run's own status.
             raise BrokenPipeError
 
+        def render_str(self, text: str, **options: Any) -> Any:
+            # Every text printed or put in a table: its numbers kept whole.
+            return numbers_whole(super().render_str(text, **options))
+
+        def print(self, *objects: Any, **options: Any) -> None:
+            # rich joins the texts of one print into a plain Text, which would break at
+            # a no-break space: a text holding one is printed as a renderable instead.
+            super().print(*(self._whole(item, options) for item in objects), **options)
+
+        def _whole(self, item: Any, options: dict[str, Any]) -> Any:
+            if not isinstance(item, str) or not any(space in item for space in _HELD):
+                return item
+            from rich.containers import Renderables
+
+            return Renderables([self.render_str(
+                item, markup=options.get("markup"), emoji=options.get("emoji"),
+                highlight=options.get("highlight"))])
+
     target = stream if stream is not None else sys.stdout
     is_terminal = getattr(target, "isatty", lambda: False)()
     return _Console(file=stream, highlight=False, width=None if is_terminal else PIPE_WIDTH)
+
+
+#: No-break spaces (a number's thousands separators among them) -> letters of the
+#: Private Use Area, each one cell wide as they are, that hold them while rich finds
+#: where to break a line: rich breaks at every Unicode space, no-break ones too.
+_HELD = {"\u00a0": "\ue000", "\u2007": "\ue001", "\u202f": "\ue002"}
+_HOLD = str.maketrans(_HELD)
+_RELEASE = str.maketrans({held: space for space, held in _HELD.items()})
+
+
+def numbers_whole(text: Any) -> Any:
+    """A rich Text that never breaks a line at a no-break space ("20\u202f000 h" stays
+    on one line, in a table's cell and in a printed line), or ``text`` itself where it
+    holds none."""
+    if not any(space in text.plain for space in _HELD):
+        return text
+    from rich.measure import Measurement
+    from rich.text import Text
+
+    class _Whole(Text):
+        def __rich_measure__(self, console: Any, options: Any) -> Measurement:
+            # the narrowest a table may make it: its longest run between breakable spaces
+            held = Text(self.plain.translate(_HOLD))
+            return held.__rich_measure__(console, options)
+
+        def wrap(self, console: Any, width: int, **options: Any) -> Any:
+            held = self.copy()
+            held.plain = self.plain.translate(_HOLD)
+            lines = Text.wrap(held, console, width, **options)
+            for line in lines:
+                line.plain = line.plain.translate(_RELEASE)
+            return lines
+
+    whole = _Whole(text.plain, style=text.style, justify=text.justify,
+                   overflow=text.overflow, no_wrap=text.no_wrap, end=text.end,
+                   tab_size=text.tab_size)
+    whole.spans[:] = text.spans
+    return whole
 
 
 def safe_text(text: str) -> str:
@@ -47,12 +103,18 @@ def format_number(value: float) -> str:
     return f"{value:.7g}"
 
 
+#: Between a number's groups of three digits: a narrow no-break space (SI brochure).
+THOUSANDS = "\u202f"
+#: Between a number and its unit: a no-break space, so that "20 000 h" is read whole.
+BEFORE_UNIT = "\u00a0"
+
+
 def verdict_line(verdict: Verdict) -> str:
     """"modified rating life 5 981 h < required 20 000 h (margin −70 %)": the value and
-    limit in display units."""
+    limit in display units, each number whole with its unit (no-break spaces)."""
     value, unit = to_display(verdict.value, verdict.unit)
     limit, _ = to_display(verdict.limit, verdict.unit)
-    unit = f" {unit}" if unit else ""
+    unit = f"{BEFORE_UNIT}{unit}" if unit else ""
     word = verdict.limit_word
     if verdict.passed:
         sign = "≥" if verdict.at_least else "≤"
@@ -60,11 +122,11 @@ def verdict_line(verdict: Verdict) -> str:
         sign = "<" if verdict.at_least else ">"
     return (f"{verdict.name} {_engineering(value)}{unit} {sign} {word} "
             f"{_engineering(limit)}{unit} (margin "
-            f"{f'{100 * verdict.margin:+.3g}'.replace('-', '−')} %)")
+            f"{f'{100 * verdict.margin:+.3g}'.replace('-', '−')}{BEFORE_UNIT}%)")
 
 
 def _engineering(value: float) -> str:
     """A number as an engineer writes it: 5 981, 20 000, 1.018, 0.0012."""
     if abs(value) >= 1000:
-        return f"{value:,.0f}".replace(",", "\u202f")
+        return f"{value:,.0f}".replace(",", THOUSANDS)
     return f"{value:.4g}"

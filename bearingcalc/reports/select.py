@@ -4,15 +4,14 @@ limit and the nearest that do not, as a table (engineering units), JSON Lines or
 
 from __future__ import annotations
 
-import csv
-import io
 import json
 from typing import IO, TYPE_CHECKING, Any
 
 from bearingcalc.core.common import MM
+from bearingcalc.reports.csv_cells import Cell, write_csv_rows
 from bearingcalc.reports.formatting import console, format_number, safe_text, verdict_line
 from bearingcalc.reports.solve import verdict_record
-from bearingcalc.wording import plural, printable, spreadsheet_text
+from bearingcalc.wording import plural, printable
 
 if TYPE_CHECKING:
     from bearingcalc.selection import Candidate, PositionChoice, Selection
@@ -61,27 +60,24 @@ def write_select_json_lines(selection: Selection, stream: IO[str]) -> None:
 
 def write_select_csv(selection: Selection, stream: IO[str]) -> None:
     """One row per listed bearing, the qualifying first (ranked), SI units."""
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(["spec", "position", "rank", "qualifies", "designation", "maker", "type",
-                     "bore_diameter [m]", "outside_diameter [m]", "width [m]", "mass [kg]",
-                     "governing", "governing_margin", "verdict", "catalogue_source"])
+    rows: list[list[Cell]] = [[
+        "spec", "position", "rank", "qualifies", "designation", "maker", "type",
+        "bore_diameter [m]", "outside_diameter [m]", "width [m]", "mass [kg]",
+        "governing", "governing_margin", "verdict", "catalogue_source"]]
     for choice in selection.choices:
         listed = [*choice.qualifying, *choice.failing]
         for rank, candidate in enumerate(listed, 1):
             row = candidate.row
             governing = candidate.verdicts[0] if candidate.verdicts else None
-            mass = row.values.get("mass")
-            writer.writerow([
-                spreadsheet_text(selection.source), choice.position,
-                rank if candidate.qualifies else "", str(candidate.qualifies).lower(),
-                spreadsheet_text(row.designation), spreadsheet_text(row.maker), row.type,
-                repr(row.values["bore_diameter"]), repr(row.values["outside_diameter"]),
-                repr(row.values["width"]), "" if mass is None else repr(mass),
-                governing.key if governing else "",
-                "" if governing is None else repr(governing.margin),
-                spreadsheet_text(_verdict(candidate)), spreadsheet_text(row.cited)])
-    stream.write(buffer.getvalue())
+            rows.append([
+                selection.source, choice.position, rank if candidate.qualifies else None,
+                candidate.qualifies, row.designation, row.maker, row.type,
+                row.values["bore_diameter"], row.values["outside_diameter"],
+                row.values["width"], row.values.get("mass"),
+                governing.key if governing else None,
+                None if governing is None else governing.margin,
+                _verdict(candidate), row.cited])
+    write_csv_rows(stream, rows)
 
 
 def print_select_table(selection: Selection, stream: IO[str] | None = None) -> None:

@@ -3,15 +3,13 @@ CSV (SI)."""
 
 from __future__ import annotations
 
-import csv
-import io
 import json
 from collections.abc import Iterable, Mapping, Sequence
 from typing import IO, TYPE_CHECKING, Any
 
+from bearingcalc.reports.csv_cells import write_csv_rows
 from bearingcalc.reports.formatting import console, format_number, safe_text, verdict_line
 from bearingcalc.units import to_display
-from bearingcalc.wording import printable, spreadsheet_text
 
 if TYPE_CHECKING:  # the report types only; their modules load with their commands
     from bearingcalc.evaluation import Evaluation
@@ -59,18 +57,13 @@ def write_csv(evaluations: Sequence[Evaluation], stream: IO[str]) -> None:
         for key, unit in evaluation.units.items():
             columns.setdefault(key, unit)
         sources.update(dict.fromkeys(evaluation.sources))
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(["spec", "kind", "name", *sources, "within_limits",
-                     *(f"{key} [{unit}]" for key, unit in columns.items())])
-    for evaluation in evaluations:
-        values = [evaluation.results.get(key) for key in columns]
-        writer.writerow([printable(evaluation.source), evaluation.kind,
-                         printable(evaluation.name),
-                         *(spreadsheet_text(evaluation.sources.get(key, "")) for key in sources),
-                         str(evaluation.within_limits).lower(),
-                         *("" if value is None else repr(value) for value in values)])
-    stream.write(buffer.getvalue())
+    header = ["spec", "kind", "name", *sources, "within_limits",
+              *(f"{key} [{unit}]" for key, unit in columns.items())]
+    write_csv_rows(stream, [header, *(
+        [evaluation.source, evaluation.kind, evaluation.name,
+         *(evaluation.sources.get(key, "") for key in sources), evaluation.within_limits,
+         *(evaluation.results.get(key) for key in columns)]
+        for evaluation in evaluations)])
 
 
 def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],

@@ -47,6 +47,8 @@ from typing import IO, TYPE_CHECKING
 import numpy as np
 from numpy.typing import NDArray
 
+from bearingcalc.reports.csv_cells import csv_text_field
+
 if TYPE_CHECKING:  # the report type only; its module loads with the command
     from bearingcalc.sweeps import Sweep
 
@@ -69,9 +71,10 @@ def write_sweep_csv(sweep: Sweep, stream: IO[str]) -> None:
     """The sweep as CSV on ``stream``: a header line, then a line per point (see the
     module's docstring)."""
     columns = sweep_columns(sweep)
-    stream.write(",".join([*(name for name, _ in columns), "reason"]) + "\n")
+    stream.write(",".join(csv_text_field(name) for name in [*(name for name, _ in columns),
+                                                             "reason"]) + "\n")
     integer_axes = [axis.integer for axis in sweep.axes]
-    reasons = {code: ("," + _csv_text(sweep.reason(code))).encode() for code in
+    reasons = {code: ("," + csv_text_field(sweep.reason(code))).encode() for code in
                np.unique(sweep.status).tolist() if code}
     for start in range(0, len(sweep.status), BLOCK_ROWS):
         stop = min(start + BLOCK_ROWS, len(sweep.status))
@@ -170,8 +173,5 @@ def _integer_fields(line: bytes, integer_axes: list[bool]) -> bytes:
     return b",".join(fields)
 
 
-def _csv_text(text: str) -> str:
-    """``text`` as one CSV field: quoted, its quotes doubled, when it needs it."""
-    return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n') else text
-
-
+#: The reference line writer of the tests quotes a reason as this writer does.
+_csv_text = csv_text_field
