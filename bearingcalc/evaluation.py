@@ -19,6 +19,7 @@ import numpy as np
 from pydantic import BaseModel, ValidationError
 
 from bearingcalc.catalogue.fill import fill as fill_from_catalogue
+from bearingcalc.core.common import DerivedTest
 from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind, bin_column, unknown_kind
 from bearingcalc.models.base import Spec, nested_model
@@ -278,7 +279,9 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
         name, reason = kind.status_reasons[code]
         name = spec.field_as_written(name)
         written = FieldPath.parse(name).get(document.data)
-        got = f", got {written}" if isinstance(written, (str, int, float)) else ""
+        # A test of a quantity found from several fields: the field's value is not it.
+        quoted = isinstance(written, (str, int, float)) and not isinstance(reason, DerivedTest)
+        got = f", got {written}" if quoted else ""
         raise document.error(f"{reason}{got}", field=name)
     results: dict[str, float | None] = {}
     warnings: list[str] = [*spec.catalogue_notes(), *spec.warnings(), *raised]

@@ -15,6 +15,7 @@ from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.ball_bearing_rules import GeometryRules, OperatingRules
 from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.duty import DutyCycleRules, bin_model
+from bearingcalc.models.element_fit_rules import ElementFitRules
 from bearingcalc.models.lubrication import Lubrication
 from bearingcalc.models.materials import ElasticMaterial
 from bearingcalc.models.plain_numbers import (
@@ -171,8 +172,8 @@ BearingBin = bin_model("BearingBin", {
 })
 
 
-class BallBearingSpec(DutyCycleRules, RollerRules, OperatingRules, GeometryRules,
-                      BearingFields, Spec):
+class BallBearingSpec(DutyCycleRules, ElementFitRules, RollerRules, OperatingRules,
+                      GeometryRules, BearingFields, Spec):
     """A rolling bearing sized by ISO 281 (life) and ISO 76 (static safety), at one
     operating point or over a duty cycle."""
 
@@ -289,6 +290,7 @@ class BallBearingSpec(DutyCycleRules, RollerRules, OperatingRules, GeometryRules
         if static is not None:
             notes.append(static)
         notes += self.roller_notes()
+        notes += self.element_notes()
         envelope = self._envelope_mm()
         if envelope is not None:
             middle = (envelope[0] + envelope[1]) / 2
