@@ -21,6 +21,7 @@ import numpy as np
 from pydantic import BaseModel, ValidationError
 
 from bearingcalc.catalogue.fill import fill as fill_from_catalogue
+from bearingcalc.core.common import DerivedTest
 from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind, bin_column, unknown_kind
 from bearingcalc.models.base import Spec, nested_model
@@ -31,7 +32,7 @@ from bearingcalc.models.yaml_loader import (
     load_documents,
 )
 from bearingcalc.verdicts import Verdict, judge
-from bearingcalc.wording import did_you_mean, plural
+from bearingcalc.wording import closest, did_you_mean, plural
 
 
 @dataclass
@@ -88,7 +89,7 @@ def parse_document(document: Document, *, rules: bool = True) -> tuple[Kind, Spe
         spec = kind.model.model_validate(data, context=None if rules else {"rules": False})
     except ValidationError as exc:
         errors = [_one_problem(document, kind.model, problem)
-                  for problem in exc.errors(include_url=False)]
+                  for problem in _typos_for_missing(kind.model, exc.errors(include_url=False))]
         # A hinted unknown key (bevel-gears' 'speed') already says what its rule would.
         said = {field for key, (_, fields) in getattr(kind.model, "UNKNOWN_KEY_HINTS",
                                                       {}).items() if key in data
@@ -135,6 +136,10 @@ def _rule_problems_despite(model: type[Spec], data: dict[str, Any],
     them are not run. When no stand-in serves, no rule runs: the field errors come first.
     """
     invalid = {str(error["loc"][0]) for error in exc.errors() if error["loc"]}
+    # A field that an unknown key is a typo of: the spec gives it, under another name.
+    invalid |= {meant for error in exc.errors() if error["type"] == "extra_forbidden"
+                and len(error["loc"]) == 1
+                and (meant := closest(str(error["loc"][0]), model.model_fields))}
     stand_in = {key: value for key, value in data.items() if key not in invalid}
     for name in invalid & set(model.model_fields):
         info = model.model_fields[name]
@@ -147,6 +152,21 @@ def _rule_problems_despite(model: type[Spec], data: dict[str, Any],
     except (ValidationError, SpecFieldError):
         return []
     return problems_despite(partial, invalid)
+
+
+def _typos_for_missing(model: type[Spec], errors: list[Any]) -> list[Any]:
+    """pydantic's errors, less a required key's 'missing' where an unknown key beside it
+    is a typo of it: the typo is the one cause, said at its line."""
+    meant = set()
+    for error in errors:
+        loc = tuple(error["loc"])
+        if error["type"] == "extra_forbidden" and loc:
+            parent = _model_at(model, tuple(str(part) for part in loc[:-1]))
+            close = closest(str(loc[-1]), parent.model_fields) if parent else None
+            if close is not None:
+                meant.add((*loc[:-1], close))
+    return [error for error in errors
+            if not (error["type"] == "missing" and tuple(error["loc"]) in meant)]
 
 
 def evaluate_documents(documents: Sequence[Document]) -> list[Evaluation | SpecError]:
@@ -298,7 +318,9 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
         name, reason = kind.status_reasons[code]
         name = spec.field_as_written(name)
         written = FieldPath.parse(name).get(document.data)
-        got = f", got {written}" if isinstance(written, (str, int, float)) else ""
+        # A test of a quantity found from several fields: the field's value is not it.
+        quoted = isinstance(written, (str, int, float)) and not isinstance(reason, DerivedTest)
+        got = f", got {written}" if quoted else ""
         raise document.error(f"{reason}{got}", field=name)
     results: dict[str, float | None] = {}
     warnings: list[str] = [*spec.catalogue_notes(), *spec.warnings(), *raised]

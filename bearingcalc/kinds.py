@@ -204,7 +204,7 @@ class Kind:
                     # The composite's own field (a drive's torque) at fault: say which
                     # member it fails.
                     reasons[offset + code] = (where, why if where.startswith(name)
-                                              else f"at {name}, {why}")
+                                              else type(why)(f"at {name}, {why}"))
         reasons[OUT_OF_RANGE] = OUT_OF_RANGE_REASON
         return reasons
 

@@ -50,5 +50,15 @@ def did_you_mean(word: str, choices: Iterable[str]) -> str:
     >>> did_you_mean("ball-bearings", ["ball-bearing", "bevel-gears"])
     " (did you mean 'ball-bearing'?)"
     """
+    close = closest(word, choices)
+    return f" (did you mean '{close}'?)" if close else ""
+
+
+def closest(word: str, choices: Iterable[str]) -> str | None:
+    """The closest of ``choices`` to a mistyped word, or None where none is close.
+
+    >>> closest("radial_lod", ["radial_load", "axial_load"])
+    'radial_load'
+    """
     close = difflib.get_close_matches(word, list(choices), n=1, cutoff=0.6)
-    return f" (did you mean '{close[0]}'?)" if close else ""
+    return close[0] if close else None

@@ -25,7 +25,7 @@ from bearingcalc.core.arrangements import (
 from bearingcalc.core.ball_bearing_contacts import ball_contacts
 from bearingcalc.core.ball_bearing_kinematics import ball_kinematics
 from bearingcalc.core.bearing_life import operating_point, rating_life
-from bearingcalc.core.common import Family, balls_fit, packed
+from bearingcalc.core.common import DerivedTest, Family, balls_fit, packed
 from bearingcalc.core.iso76 import static_equivalent_load, static_load_rating, static_safety_factor
 from bearingcalc.core.iso281 import dynamic_load_rating, equivalent_dynamic_load
 from bearingcalc.core.solver import Solution, Solver
@@ -140,11 +140,13 @@ _CONTACT_TOO_LARGE = ("the most heavily loaded ball's contact ellipse is not sma
                       "ellipse grows long)")
 STATUS_REASONS: dict[int, tuple[str, str]] = {
     1: ("ball_diameter", "the ball must be smaller than the pitch diameter (Dw < Dpw)"),
-    2: ("ball_count", "the balls do not fit on the pitch circle: Z·asin(Dw/Dpw) must be "
-                      "<= π"),
-    3: ("ball_diameter", "γ = Dw·cosα/Dpw is outside ISO 281's fc table (0.01 to 0.40 for "
-                         "radial, 0.01 to 0.35 for thrust bearings)"),
-    4: ("ball_diameter", "γ = Dw·cosα/Dpw is outside ISO 76's f0 table (0 to 0.40)"),
+    2: ("ball_count", DerivedTest("the balls do not fit on the pitch circle: Z·asin(Dw/Dpw) "
+                                  "must be <= π")),
+    3: ("ball_diameter", DerivedTest("γ = Dw·cosα/Dpw is outside ISO 281's fc table (0.01 "
+                                     "to 0.40 for radial, 0.01 to 0.35 for thrust "
+                                     "bearings)")),
+    4: ("ball_diameter", DerivedTest("γ = Dw·cosα/Dpw is outside ISO 76's f0 table (0 to "
+                                     "0.40)")),
     5: ("lubrication", "the viscosity ratio κ = ν/ν1 is below 0.1, outside ISO 281; use a "
                        "more viscous oil or give no lubrication"),
     6: ("contact_angle", "the contact angle must be from 0 deg to below 90 deg for a radial "

@@ -27,6 +27,14 @@ Family = Literal["ball", "roller"]
 FAMILIES: tuple[str, ...] = ("ball", "roller")
 
 
+class DerivedTest(str):
+    """A status reason whose test is on a quantity found from several inputs (the fill
+    Z·asin(Dw/Dpw), γ, a contact ellipse), not on its field's value alone: a message
+    quotes no value of the field as if that value were what failed."""
+
+    __slots__ = ()
+
+
 def first_failure(checks: Sequence[tuple[int, ArrayLike]], shape: tuple[int, ...]) -> NDArray:
     """Status code per element: the code of the first failed check, 0 where all pass.
 

@@ -19,7 +19,7 @@ from numpy.typing import ArrayLike, NDArray
 from bearingcalc.core import ball_bearing
 from bearingcalc.core.arrangements import DOUBLE_ROW_PAIRS, PAIRS, pair_ratings_used
 from bearingcalc.core.bearing_life import operating_point, rating_life
-from bearingcalc.core.common import Family, balls_fit, packed
+from bearingcalc.core.common import DerivedTest, Family, balls_fit, packed
 from bearingcalc.core.iso76 import static_safety_factor
 from bearingcalc.core.roller_bearing_contacts import (
     max_roller_load,
@@ -98,10 +98,10 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
     **{code: ball_bearing.STATUS_REASONS[code] for code in (5, 7, 8, 9, 12, 13)},
     16: ("roller_diameter", "the roller must be smaller than the pitch diameter "
                             "(Dwe < Dpw)"),
-    17: ("roller_count", "the rollers do not fit on the pitch circle: Z·asin(Dwe/Dpw) must "
-                         "be <= π"),
-    18: ("roller_diameter", "γ = Dwe·cosα/Dpw is outside ISO 281's fc table of roller "
-                            "bearings"),
+    17: ("roller_count", DerivedTest("the rollers do not fit on the pitch circle: "
+                                     "Z·asin(Dwe/Dpw) must be <= π")),
+    18: ("roller_diameter", DerivedTest("γ = Dwe·cosα/Dpw is outside ISO 281's fc table of "
+                                        "roller bearings")),
     19: ("contact_angle", "must be from 0 deg to 45 deg for a radial roller bearing, and "
                           "above 45 deg up to 90 deg for a thrust roller bearing"),
     20: ("axial_load", "a thrust roller bearing with α < 90° needs Fa/Fr > e = 1.5·tanα "
@@ -109,6 +109,11 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
     21: ("radial_load", "a thrust roller bearing with α = 90° carries no radial load"),
     22: ("radial_load", _CONTACT_TOO_WIDE),
     23: ("axial_load", _CONTACT_TOO_WIDE),
+    24: ("raceway_radius", DerivedTest(
+        "the most heavily loaded roller's contact ellipse is longer than the roller (its "
+        "semi-major axis exceeds Lwe/2), so the crowned point contact of Hertz does not "
+        "hold: raceway_radius is too close to roller_profile_radius (a spherical roller "
+        "bearing's raceway radius is a few per cent larger), or the load too high")),
 }
 
 
@@ -208,6 +213,10 @@ def _contacts(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str, t
                         contacts["outer_contact_half_width"])
     bad.append((23 if thrust else 22,
                 ~(widest <= np.asarray(inputs["roller_diameter"], dtype=float) / 4.0)))
+    if "inner_contact_semi_major" in contacts:  # a crowned roller's ellipse within its length
+        longest = np.maximum(contacts["inner_contact_semi_major"],
+                             contacts["outer_contact_semi_major"])
+        bad.append((24, ~(longest <= np.asarray(inputs["roller_length"], dtype=float) / 2.0)))
 
 
 def _given(value: ArrayLike | None) -> NDArray | None:

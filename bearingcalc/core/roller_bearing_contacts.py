@@ -98,7 +98,8 @@ def roller_contacts(roller_diameter: ArrayLike, roller_length: ArrayLike,
     Returns
     -------
     dict of each contact's peak pressure [Pa] and half-width [m], the larger pressure
-    [Pa] and its margin to the limit [1].
+    [Pa] and its margin to the limit [1]; for a crowned roller also each contact
+    ellipse's semi-major axis a, along the roller (``inner_contact_semi_major``). [m]
 
     Source: Harris & Kotzalas, *Essential Concepts of Bearing Technology*, 5th ed.,
     ch. 2 (curvatures) and ch. 6 (contact stress).
@@ -118,6 +119,7 @@ def roller_contacts(roller_diameter: ArrayLike, roller_length: ArrayLike,
                 1.0 / radius - roller, -1.0 / np.asarray(raceway_radius, dtype=float),
                 elastic_modulus, poisson_ratio, elastic_modulus, poisson_ratio)
             pressure, half_width = contact["max_pressure"], contact["semi_minor"]
+            out[f"{race}_contact_semi_major"] = contact["semi_major"]
         else:
             pressure, half_width = line_contact(load, roller_length, radius,
                                                 elastic_modulus, poisson_ratio)

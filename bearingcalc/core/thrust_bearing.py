@@ -25,7 +25,13 @@ from collections.abc import Collection, Mapping
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core.common import STATUS_DTYPE, balls_fit, broadcast_all, first_failure
+from bearingcalc.core.common import (
+    STATUS_DTYPE,
+    DerivedTest,
+    balls_fit,
+    broadcast_all,
+    first_failure,
+)
 from bearingcalc.core.solver import Solution, Solver
 from bearingcalc.core.thrust_bearing_contacts import ball_contact_loads
 from bearingcalc.core.thrust_bearing_geometry import (
@@ -97,7 +103,8 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
     2: ("pitch_radius", "the pitch radius must be positive"),
     3: ("contact_angle", "pure rolling needs 0 deg < θ < 45 deg"),
     4: ("pitch_radius", "the shaft contact radius d = b − r·cosθ must be positive"),
-    5: ("ball_count", "the balls do not fit on the pitch circle: Z·asin(r/b) must be <= π"),
+    5: ("ball_count", DerivedTest("the balls do not fit on the pitch circle: Z·asin(r/b) "
+                                  "must be <= π")),
     6: ("pitch_radius", "a pure-rolling contact angle exists only for b > r"),
     7: ("axial_load", "a ball's contact ellipse is not small against the ball (its "
                       "semi-major axis exceeds the ball radius), so Hertz theory does not hold: "

@@ -21,6 +21,7 @@ from bearingcalc.models.duty import (
     DutyCycleRules,
     bin_model,
 )
+from bearingcalc.models.element_fit_rules import ElementFitRules
 from bearingcalc.models.lubrication import Lubrication
 from bearingcalc.models.materials import ElasticMaterial
 from bearingcalc.models.plain_numbers import (
@@ -172,8 +173,8 @@ BearingBin = bin_model("BearingBin", {
     "outer_speed": (AngularSpeed, "outer ring, fixed frame"), **OIL_BIN_FIELDS})
 
 
-class BallBearingSpec(BinOilRules, DutyCycleRules, RollerRules, OperatingRules, GeometryRules,
-                      BearingFields, Spec):
+class BallBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, RollerRules,
+                      OperatingRules, GeometryRules, BearingFields, Spec):
     """A rolling bearing sized by ISO 281 (life) and ISO 76 (static safety), at one
     operating point or over a duty cycle."""
 
@@ -274,6 +275,7 @@ class BallBearingSpec(BinOilRules, DutyCycleRules, RollerRules, OperatingRules, 
         if static is not None:
             notes.append(static)
         notes += self.roller_notes()
+        notes += self.element_notes()
         envelope = self._envelope_mm()
         if envelope is not None:
             middle = (envelope[0] + envelope[1]) / 2

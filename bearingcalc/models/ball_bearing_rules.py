@@ -7,12 +7,17 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
+from bearingcalc.core.roller_ratings import THRUST_ROLLER_TYPES
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.rules import rule
 
 #: Bearing types whose rolling elements are balls; thrust ball bearings by both names.
 BALL_TYPES = ("deep-groove", "angular-contact", "self-aligning-ball", "thrust", "thrust-ball")
 THRUST_BALL = ("thrust", "thrust-ball")
+#: Every thrust type, ball and roller: their e of ISO 281 has no bound.
+THRUST_TYPES = (*THRUST_BALL, *THRUST_ROLLER_TYPES)
+#: ISO 281's largest e of a radial bearing: 1.5·tanα at α = 45° (7.2.1).
+LARGEST_RADIAL_E = 1.5
 
 
 class _ReadsBallBearing:
@@ -105,11 +110,37 @@ class OperatingRules(_ReadsBallBearing):
 
     @rule
     def _axial_load_counts(self) -> SpecFieldError | None:
+        """Above e, P = X·Fr + Y·Fa (Y2 of a double row): a zero factor drops a load the
+        bearing carries."""
         factors = self.load_factors
-        if factors is None or not (factors.y == 0 and self.axial_load > 0):
+        if factors is None:
             return None
-        return SpecFieldError("load_factors.y", "Y = 0 leaves the axial load out of the "
-                              "equivalent load P = X·Fr + Y·Fa: give the catalogue's Y, above 0")
+        for name in ("y", "y2"):
+            if getattr(factors, name) == 0 and self.axial_load > 0:
+                return SpecFieldError(f"load_factors.{name}", f"{name.upper()} = 0 leaves the "
+                                      "axial load out of the equivalent load P = X·Fr + Y·Fa: "
+                                      f"give the catalogue's {name.upper()}, above 0")
+        if factors.x == 0 and self.radial_load > 0 and self.type not in THRUST_BALL:
+            return SpecFieldError("load_factors.x", "X = 0 leaves the radial load out of the "
+                                  "equivalent load P = X·Fr + Y·Fa above e: give the "
+                                  "catalogue's X, above 0 (0.4 to 0.76 in ISO 281's tables)")
+        return None
+
+    @rule
+    def _limit_e_of_a_radial_bearing(self) -> SpecFieldError | None:
+        """A radial bearing's e within ISO 281's: e = 1.5·tanα of the radial roller
+        bearings (7.2.1) is at most 1.5, at α = 45°, and Table 4 gives angular-contact
+        ball bearings at most 1.34, at 45° (makers' catalogues stop near 1.14, at 40°,
+        and 0.87, steep tapered rollers at 30°). A thrust bearing's e grows without bound
+        as α nears 90°."""
+        factors = self.load_factors
+        if factors is None or factors.e is None or self.type in THRUST_TYPES or (
+                factors.e <= LARGEST_RADIAL_E):
+            return None
+        return SpecFieldError("load_factors.e", f"{factors.e:g} is above {LARGEST_RADIAL_E:g}, "
+                              "the largest e of a radial bearing (ISO 281: 1.5·tanα at "
+                              "α = 45°; catalogues: 1.14 for angular-contact balls at 40°, "
+                              "about 0.87 for tapered rollers at 30°): give the catalogue's e")
 
     @rule
     def _contact_angle(self) -> SpecFieldError | None:

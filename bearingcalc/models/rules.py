@@ -86,11 +86,66 @@ def _problems(model: BaseModel, invalid: frozenset[str]) -> Iterator[SpecFieldEr
         for problem in _problems(value, frozenset()):
             yield _within(name, problem)
     subjects = _subjects(model, invalid)
-    for check in rules_of(type(model)):
-        if subjects is None or getattr(check, _WHOLE_MARK, False):
-            yield from _checked(check, model, invalid)
-        else:
-            yield from _checked_in_each(check, subjects, invalid)
+    checks = rules_of(type(model))
+    if subjects is None:
+        yield from _without_consequences(model, [(check, _checked(check, model, invalid))
+                                                 for check in checks])
+        return
+    whole = [check for check in checks if getattr(check, _WHOLE_MARK, False)]
+    yield from _without_consequences(model, [(check, _checked(check, model, invalid))
+                                             for check in whole])
+    yield from _checked_in_each([check for check in checks if check not in whole], subjects,
+                                invalid)
+
+
+def _without_consequences(model: BaseModel, found: Sequence[tuple[Rule, list[SpecFieldError]]]
+                          ) -> list[SpecFieldError]:
+    """The problems rules found in ``model``, less those that follow from another's.
+
+    A problem of a field given that should not be (a number of rows for a ball bearing, a
+    pair of a type that does not pair, an angle out of range) causes every problem that
+    goes away when that field is left out: another rule's demand for the double row's
+    factors, the tables' factors of that angle. One cause, one line. Where two problems
+    each go away without the other's field, both stay: neither is the cause.
+    """
+    problems = [(check, problem) for check, each in found for problem in each]
+    if len(problems) < 2:
+        return [problem for _, problem in problems]
+    causes = {problem.field for _, problem in problems
+              if "." not in problem.field and problem.field in _left_out_values(model)}
+    follows: dict[int, set[str]] = {}
+    for index, (check, problem) in enumerate(problems):
+        follows[index] = {cause for cause in causes if cause != problem.field
+                          and not _persists(check, model, problem, cause)}
+    kept = []
+    for index, (_, problem) in enumerate(problems):
+        caused = any(problem.field not in follows[other] for other, (_, cause) in
+                     enumerate(problems) if cause.field in follows[index])
+        if not caused:
+            kept.append(problem)
+    return kept or [problem for _, problem in problems]
+
+
+def _left_out_values(model: BaseModel) -> dict[str, Any]:
+    """Each field of ``model`` that the spec gives and may leave out -> its value when left
+    out."""
+    fields = type(model).model_fields
+    return {name: fields[name].get_default(call_default_factory=True)
+            for name in model.model_fields_set if name in fields
+            and not fields[name].is_required()}
+
+
+def _persists(check: Rule, model: BaseModel, problem: SpecFieldError, field: str) -> bool:
+    """Whether ``check`` still finds ``problem`` in ``model`` with ``field`` left out."""
+    default = _left_out_values(model)[field]
+    without = model.model_copy(update={field: default})
+    object.__setattr__(without, "__pydantic_fields_set__", model.model_fields_set - {field})
+    try:
+        again = _as_list(check(without))
+    except (TypeError, ValueError, AttributeError, ArithmeticError):
+        return False  # the rule needs the field: its problem came of it
+    return any((other.field, other.message) == (problem.field, problem.message)
+               for other in again)
 
 
 def _subjects(model: BaseModel, invalid: frozenset[str]
@@ -124,11 +179,13 @@ def _checked(check: Rule, model: BaseModel, invalid: frozenset[str]
     return [] if reads & invalid else _as_list(problem)
 
 
-def _checked_in_each(check: Rule, subjects: Sequence[tuple[BaseModel, Renamer]],
+def _checked_in_each(checks: Sequence[Rule], subjects: Sequence[tuple[BaseModel, Renamer]],
                      invalid: frozenset[str]) -> Iterator[SpecFieldError]:
-    """A rule's problems in each of a spec's subjects (the bins of a duty cycle): those
+    """The rules' problems in each of a spec's subjects (the bins of a duty cycle): those
     every subject has once, as the spec's, the others each as its subject's."""
-    found = [(rename, _checked(check, subject, invalid)) for subject, rename in subjects]
+    found = [(rename, _without_consequences(
+        subject, [(check, _checked(check, subject, invalid)) for check in checks]))
+        for subject, rename in subjects]
     keys = [{(problem.field, problem.message) for problem in problems} for _, problems in found]
     common = set.intersection(*keys) if keys else set()
     said: set[tuple[str, str]] = set()
@@ -153,8 +210,10 @@ def _held_models(model: BaseModel) -> Iterator[tuple[str, BaseModel]]:
 
 
 def own_problems(model: BaseModel) -> list[SpecFieldError]:
-    """The problems of ``model``'s own rules, without those of the models it holds."""
-    return [problem for check in rules_of(type(model)) for problem in _as_list(check(model))]
+    """The problems of ``model``'s own rules, without those of the models it holds (nor
+    those that follow from another, see :func:`_without_consequences`)."""
+    return _without_consequences(model, [(check, _as_list(check(model)))
+                                         for check in rules_of(type(model))])
 
 
 def _as_list(found: SpecFieldError | list[SpecFieldError] | None) -> list[SpecFieldError]:
