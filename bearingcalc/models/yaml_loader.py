@@ -313,6 +313,16 @@ class _Builder:
                              event) from None
 
 
+def plain_scalar(text: str) -> Any:
+    """The value of ``text`` written as a plain (unquoted) YAML scalar in a spec: None,
+    true or false, an int, a float, or the text itself (``'90 %'``, ``'1 kN'``)."""
+    stripped = text.strip()
+    for tag, (pattern, _) in _CORE_SCHEMA.items():
+        if re.match(pattern, stripped) and stripped:
+            return _core_value(tag, stripped)
+    return stripped
+
+
 def _core_value(tag: str, text: str) -> Any:
     """The value of a scalar by the YAML 1.2 core schema (explicit tags included)."""
     if tag.endswith(":str"):
