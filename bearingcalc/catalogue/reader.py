@@ -21,6 +21,7 @@ from pathlib import Path
 from bearingcalc.catalogue.columns import COLUMNS, REQUIRED, Column
 from bearingcalc.core.rolling_bearing import TYPES
 from bearingcalc.errors import SpecError
+from bearingcalc.models.yaml_loader import wide_encoding
 from bearingcalc.number_grammar import NUMBER
 from bearingcalc.units import DIMENSIONLESS, UnitError, parse_quantity
 from bearingcalc.wording import did_you_mean
@@ -156,6 +157,10 @@ def _text(path: Path, source: str) -> str:
         raise SpecError(f"cannot read the catalogue: {error.strerror}", source=source) from None
     if len(raw) > MAX_FILE_BYTES:
         raise SpecError(f"file too large: catalogues are at most {MAX_FILE_BYTES // 2**20} MiB",
+                        source=source)
+    encoding = wide_encoding(raw)
+    if encoding is not None:
+        raise SpecError(f"the file is {encoding} text: save the catalogue as UTF-8 (CSV UTF-8)",
                         source=source)
     try:
         return raw.decode("utf-8-sig")

@@ -136,8 +136,9 @@ def field_parser(info: FieldInfo) -> tuple[str, Any, str] | None:
 
 
 def _validated(text: str, validator: Any) -> float:
-    """A bound of a sweep as the field's own validator reads the spec's value: the text
-    as YAML reads a plain value (a number, or text such as '90 %')."""
+    """A bound of a sweep read as the spec reads the field's value: the text as YAML
+    reads a plain value, a number as it is (the spec's rules judge it at each end of the
+    range), a text such as '90 %' by the field's own validator."""
     from bearingcalc.models.yaml_loader import plain_scalar  # which reads field paths
 
     value = plain_scalar(text)
@@ -145,6 +146,8 @@ def _validated(text: str, validator: Any) -> float:
         raise ValueError(f"'{text}' is not a number")
     if isinstance(value, float) and not math.isfinite(value):
         raise ValueError(f"'{text}' is not a finite number")
+    if not isinstance(value, str):
+        return float(value)
     number = validator(value)
     if not math.isfinite(number):
         raise ValueError(f"'{text}' is not a finite number")
