@@ -185,3 +185,168 @@ def test_binary_and_latin1_files_keep_their_messages(tmp_path, cli):
     latin.write_bytes("kind: thrust-bearing\nname: Lösung\n".encode("latin-1"))
     assert "binary file" in cli("solve", binary).err
     assert "not UTF-8" in cli("solve", latin).err
+
+
+# --- catalogues written the European way ---------------------------------------------
+
+
+def _example_rows(separator: str = ",", decimal: str = ".") -> str:
+    """The example catalogue without its comments, with ``separator`` between cells and
+    ``decimal`` as the decimal point of its numbers."""
+    import csv
+    import io
+
+    rows = [row for row in csv.reader(io.StringIO(EXAMPLE_CATALOGUE.read_text(
+        encoding="utf-8"))) if row and not row[0].startswith("#")]
+    out = io.StringIO()
+    writer = csv.writer(out, delimiter=separator, lineterminator="\n")
+    for row in rows:
+        writer.writerow([cell.replace(".", decimal) if cell.replace(".", "", 1).isdigit()
+                         else cell for cell in row])
+    return out.getvalue()
+
+
+@pytest.mark.parametrize(("separator", "named"), [(";", "';'"), ("\t", "tabs")])
+def test_a_catalogue_separated_by_semicolons_or_tabs_gets_a_hint(separator, named, tmp_path,
+                                                                  cli):
+    run = cli("solve", catalogue_spec(tmp_path, _example_rows(separator, ",")))
+    assert run.code == 2 and len(run.err.splitlines()) == 1
+    assert f"bearings.csv:1: the columns are separated by {named}: a catalogue separates " \
+           "them by commas and writes the decimal point as '.'" in run.err
+
+
+def test_a_row_separated_by_semicolons_under_a_comma_header_gets_a_hint(tmp_path, cli):
+    header, first, *rest = _example_rows().splitlines()
+    text = "\n".join([header, first.replace(",", ";"), *rest]) + "\n"
+    run = cli("solve", catalogue_spec(tmp_path, text))
+    assert run.code == 2 and "bearings.csv:2: " in run.err
+    assert "the row's cells are separated by ';': write commas" in run.err
+
+
+def test_a_decimal_comma_gets_the_decimal_point_hint(tmp_path, cli):
+    run = cli("solve", catalogue_spec(tmp_path, _example_rows(",", ",")))
+    assert run.code == 2
+    assert "bearings.csv:2: dynamic_load_rating: '13,5' is not a number: write the decimal " \
+           "point as '.', like '13.5' (the unit, kN, is the column's)" in run.err
+
+
+def test_a_comma_before_three_digits_may_be_a_thousands_separator(tmp_path, cli):
+    text = _example_rows().replace(",32000,20000,", ',"32,000",20000,', 1)
+    run = cli("solve", catalogue_spec(tmp_path, text))
+    assert run.code == 2 and "reference_speed: '32,000' is not a number: write the decimal " \
+        "point as '.', like '32.000', or leave the thousands separator out, like '32000'" \
+        in run.err
+
+
+# --- the catalogue keyword is a whole value --------------------------------------------
+
+
+def test_a_catalogue_file_named_catalogue_is_a_path(tmp_path, cli):
+    spec = catalogue_spec(tmp_path, EXAMPLE_CATALOGUE.read_bytes(), name="catalogue.csv")
+    assert cli("solve", spec).code == 0
+    shaft = tmp_path / "shaft.yaml"
+    shaft.write_text("kind: rolling-bearing\nname: catalogue check\ncatalogue: catalogue.csv\n"
+                     "bore_diameter: 25 mm\nradial_load: 3 kN\naxial_load: 0.5 kN\n"
+                     "speed: 1500 rpm\nlubrication: {viscosity: 68 mm^2/s}\n"
+                     "contamination_factor: 0.5\nlimits: {min_rating_life: 2000 h}\n")
+    run = cli("select", shaft)
+    assert run.code == 0, run.err
+
+
+@pytest.mark.parametrize("written", ["catalogue", "Catalogue", "catalogue ± 5 %",
+                                     "catalogue +/- 5 %", "catalogue +- 5 %",
+                                     "catalogue ± 0.5 kN"])
+def test_the_keyword_stands_for_the_catalogues_value(written, tmp_path, cli):
+    spec = catalogue_spec(tmp_path, EXAMPLE_CATALOGUE.read_bytes())
+    spec.write_text(spec.read_text().replace("radial_load", f"dynamic_load_rating: {written}\n"
+                                             "radial_load", 1))
+    run = cli("solve", spec, "--format", "json")
+    assert run.code == 0, run.err
+    assert "overrides" not in run.out
+
+
+@pytest.mark.parametrize(("field", "written", "said"), [
+    ("pitch_diameter", "catalogue", "gives no pitch_diameter: write its value"),
+    ("pitch_diameter", "catalogue ± 1 mm", "gives no pitch_diameter: write its value"),
+])
+def test_a_keyword_the_row_cannot_fill_is_refused(field, written, said, tmp_path, cli):
+    spec = catalogue_spec(tmp_path, EXAMPLE_CATALOGUE.read_bytes())
+    spec.write_text(spec.read_text().replace("radial_load", f"{field}: {written}\nradial_load",
+                                             1))
+    run = cli("solve", spec)
+    assert run.code == 2 and f"{field}: the catalogue's" in run.err and said in run.err
+
+
+@pytest.mark.parametrize("written", ["catalogue.csv", "catalogued", "catalogue_2024",
+                                     "catalogue-2024 kN", "my catalogue"])
+def test_the_word_inside_a_longer_value_is_not_the_keyword(written, tmp_path, cli):
+    spec = catalogue_spec(tmp_path, EXAMPLE_CATALOGUE.read_bytes())
+    spec.write_text(spec.read_text().replace("radial_load", f"pitch_diameter: {written}\n"
+                                             "radial_load", 1))
+    run = cli("solve", spec)
+    assert run.code == 2 and "gives no pitch_diameter" not in run.err
+    assert "pitch_diameter:" in run.err  # refused as the length it is not
+    named = catalogue_spec(tmp_path, EXAMPLE_CATALOGUE.read_bytes())
+    named.write_text(named.read_text().replace("name: 30206 on the pinion shaft",
+                                               f"name: {written}"))
+    assert cli("solve", named).code == 0
+
+
+def test_an_unreadable_number_says_not_finite_only_where_the_number_stands(cli, tmp_path):
+    from bearingcalc.units import LENGTH, UnitError, parse_quantity
+
+    for text, finite in [("nan mm", False), ("-inf mm", False), ("Infinity", False),
+                         ("bearing inf", True), ("info mm", True)]:
+        with pytest.raises(UnitError) as raised:
+            parse_quantity(text, LENGTH)
+        assert ("not a finite number" not in str(raised.value)) == finite, text
+
+
+# --- designations in full-width digits, and select's warnings ---------------------------
+
+
+FULL_WIDTH = "６３０５"
+
+
+def test_a_full_width_designation_is_the_bearing_it_reads_as(tmp_path, cli):
+    spec = catalogue_spec(tmp_path, EXAMPLE_CATALOGUE.read_bytes(), designation=FULL_WIDTH)
+    run = cli("solve", spec, "--format", "json")
+    assert run.code in (0, 1), run.err  # solved; its limits are the 30206's
+    assert '"catalogue_source": "6305, SKF' in run.out
+
+
+def test_a_full_width_row_is_checked_against_iso(tmp_path, cli):
+    header = _example_rows().splitlines()[0]
+    row = next(line for line in _example_rows().splitlines() if line.startswith("6305,SKF"))
+    wrong = row.replace("6305,SKF", f"{FULL_WIDTH},ACME").replace(",62,17,", ",63,17,")
+    run = cli("solve", catalogue_spec(tmp_path, f"{header}\n{wrong}\n", designation="6305"))
+    assert run.code == 2
+    assert "outside_diameter 63 mm where ISO's boundary dimensions give 62 mm" in run.err
+    both = f"{header}\n{row}\n{row.replace('6305,SKF', f'{FULL_WIDTH},SKF')}\n"
+    run = cli("solve", catalogue_spec(tmp_path, both))
+    assert run.code == 2 and f"{FULL_WIDTH} (SKF) is given twice" in run.err
+
+
+def test_select_gives_the_warnings_solve_gives_for_the_rows_it_lists(tmp_path, cli):
+    import json
+
+    header, *rows = _example_rows().splitlines()
+    special = next(line for line in rows if line.startswith("6305,SKF")).replace(
+        "6305,SKF", "X6305,ACME")
+    spec = catalogue_spec(tmp_path, "\n".join([header, *rows, special]) + "\n",
+                          designation="X6305")
+    spec.write_text(spec.read_text().replace("maker: SKF", "maker: ACME"))
+    solved = json.loads(cli("solve", spec, "--format", "json").out)
+    (unchecked,) = [w for w in solved["warnings"] if "taken unchecked" in w]
+    assert "X6305" in unchecked
+    shaft = tmp_path / "shaft.yaml"
+    shaft.write_text("kind: rolling-bearing\nname: idler\ncatalogue: bearings.csv\n"
+                     "bore_diameter: 25 mm\nradial_load: 3 kN\naxial_load: 0.5 kN\n"
+                     "speed: 1500 rpm\nlubrication: {viscosity: 68 mm^2/s}\n"
+                     "contamination_factor: 0.5\nlimits: {min_rating_life: 2000 h}\n")
+    run = cli("select", shaft, "--top", "20", "--format", "json")
+    selection = json.loads(run.out)
+    assert "X6305" in [row["designation"] for row in selection["qualifying"]]
+    assert unchecked in selection["notes"]
+    table = " ".join(cli("select", shaft, "--top", "20").out.split())
+    assert " ".join(f"note: {unchecked}".split()) in table
