@@ -141,9 +141,10 @@ def solve(spec: SpecInput) -> list[Result]:
     'm'
     """
     outcomes = evaluate_documents(arguments.spec_documents(spec, "solve"))
-    for outcome in outcomes:
-        if isinstance(outcome, SpecError):
-            raise outcome
+    errors = [outcome for outcome in outcomes if isinstance(outcome, SpecError)]
+    if errors:  # every document's problems, in the file's order
+        errors[0].more = [*errors[0].more, *errors[1:]]
+        raise errors[0]
     return [Result(outcome) for outcome in outcomes]  # type: ignore[arg-type]
 
 
@@ -323,7 +324,7 @@ def sweep(spec: SpecInput, vary: Mapping[str, str]) -> Sweep:
     """``bearingcalc sweep`` of the one spec in ``spec``: ``vary`` maps a field to its
     ``START:STOP:N`` (``{"contact_angle": "5deg:40deg:36"}``); one for a line, two for a
     grid."""
-    from bearingcalc.sweeps import sweep_spec
+    from bearingcalc.sweeps import SweepError, sweep_axes
 
     example = '{"contact_angle": "5deg:40deg:36"}'
     if not isinstance(vary, Mapping):
@@ -339,10 +340,17 @@ def sweep(spec: SpecInput, vary: Mapping[str, str]) -> Sweep:
         if not isinstance(name, str) or not isinstance(span, str):
             raise ArgumentError("sweep", "vary", f"each field's name and its START:STOP:N are "
                                 f"texts, like {example}, got {name!r}: {span!r}")
+        if span.count(":") != 2:
+            raise ArgumentError("sweep", "vary", f"{name}: {span!r}: write START:STOP:N, like "
+                                "'5deg:40deg:36'")
     document = _one(spec, "sweep")
     kind, parsed = parse_document(document)
-    return Sweep(sweep_spec(kind, parsed, document,
-                            [f"{name}={span}" for name, span in vary.items()]))
+    try:
+        return Sweep(sweep_axes(kind, parsed, document,
+                                [f"{name}={span}" for name, span in vary.items()]))
+    except SweepError as error:  # worded for --vary: the argument here is vary
+        raise ArgumentError("sweep", "vary", str(error).removeprefix("--vary").lstrip(": ")
+                            ) from None
 
 
 def _one(spec: SpecInput, function: str) -> Document:

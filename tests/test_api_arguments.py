@@ -228,3 +228,25 @@ def test_a_problem_of_a_whole_file_has_no_line_or_field(tmp_path):
     (problem,) = raised.value.problems
     assert (problem.line, problem.field) == (None, None)
     assert str(problem) == str(raised.value)
+
+
+def test_a_bad_range_of_a_sweep_is_a_bad_vary():
+    for vary, said in [({"contact_angle": "10deg:40deg:1"}, "contact_angle: N must be at least 2"),
+                       ({"contact_angle": "10:40deg:3"}, "contact_angle: '10' has no unit"),
+                       ({"contact_angel": "10deg:40deg:3"}, "contact_angel: "),
+                       ({"contact_angle": "10deg"}, "contact_angle: '10deg': write START:STOP:N")]:
+        with pytest.raises(ArgumentError) as raised:
+            bearingcalc.sweep(SPEC, vary)
+        assert str(raised.value).startswith(f"sweep(): vary: {said}"), str(raised.value)
+        assert "--vary" not in str(raised.value)
+
+
+def test_every_documents_problems_are_raised_together():
+    text = SPEC.read_text()
+    several = "---\n".join([text.replace("12.7 mm", "12.7"), text,
+                            text.replace("30 deg", "30")])
+    with pytest.raises(SpecError) as raised:
+        bearingcalc.solve(several)
+    problems = raised.value.problems
+    assert [(p.file, p.field) for p in problems] == [("<string>#1", "ball_diameter"),
+                                                      ("<string>#3", "contact_angle")]
