@@ -22,7 +22,8 @@ __version__ = "0.1.0"
 
 #: The Python API (:mod:`bearingcalc.api`), loaded on first use so that the command
 #: line's start pays nothing for it.
-_API = ("solve", "tolerance", "sweep", "Result", "Study", "Sweep", "SpecError")
+_API = ("solve", "tolerance", "sweep", "Result", "Study", "Sweep", "SpecError",
+        "ArgumentError", "Problem")
 
 
 def __getattr__(name: str) -> object:
@@ -33,6 +34,8 @@ def __getattr__(name: str) -> object:
     raise AttributeError(f"module 'bearingcalc' has no attribute {name!r}")
 
 __all__ = [
+    "ArgumentError",
+    "Problem",
     "Result",
     "SpecError",
     "Study",

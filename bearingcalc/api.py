@@ -3,7 +3,9 @@
 ``solve`` takes a spec file's path, a spec's YAML text or a mapping, and returns one
 :class:`Result` per document; ``tolerance`` and ``sweep`` return what their commands
 print, as objects. Bad input raises :class:`~bearingcalc.errors.SpecError`, whose text
-is the one line the command line prints. Units are SI throughout, as in JSON.
+is the lines the command line prints (``.problems`` gives them as data); an argument of
+the wrong type or value raises its subclass :class:`~bearingcalc.errors.ArgumentError`
+(a ValueError too), which names the argument. Units are SI throughout, as in JSON.
 """
 
 from __future__ import annotations
@@ -16,28 +18,14 @@ from html import escape
 from pathlib import Path
 from typing import Any
 
-from bearingcalc.errors import SpecError
+from bearingcalc import api_arguments as arguments
+from bearingcalc.errors import ArgumentError, Problem, SpecError
 from bearingcalc.evaluation import Evaluation, evaluate_document, evaluate_documents, parse_document
-from bearingcalc.models.yaml_loader import Document, load_documents
+from bearingcalc.models.yaml_loader import Document
 
 SpecInput = str | os.PathLike[str] | Mapping[str, Any]
-
-
-def _documents(spec: SpecInput) -> list[Document]:
-    """The documents of a path, a YAML text (anything with a line break or a colon that
-    names no file) or a mapping."""
-    if isinstance(spec, Mapping):
-        import yaml
-
-        return load_documents("<mapping>", yaml.safe_dump(dict(spec), sort_keys=False,
-                                                          allow_unicode=True))
-    if isinstance(spec, os.PathLike) or ("\n" not in spec and Path(spec).exists()):
-        from bearingcalc.evaluation import load_selected
-
-        return load_selected(spec)
-    if "\n" in spec or ":" in spec:
-        return load_documents("<string>", spec)
-    raise SpecError("no such file, and not a spec's YAML text", source=str(spec))
+__all__ = ["ArgumentError", "Problem", "Result", "SpecError", "Study", "Sweep", "solve",
+           "sweep", "tolerance"]
 
 
 @dataclass(frozen=True)
@@ -82,6 +70,8 @@ class Result:
     def quantity(self, key: str) -> Any:
         """The result ``key`` as a pint quantity in its SI unit (an unbounded result is
         infinite)."""
+        if not isinstance(key, str) or key not in self.results:
+            raise _unknown_result("Result.quantity", "key", key, self.kind, self.results)
         value = self.results[key]
         unit = self.units[key]
         return _registry().Quantity(float("inf") if value is None else value,
@@ -150,10 +140,11 @@ def solve(spec: SpecInput) -> list[Result]:
     >>> result.units["pitch_radius"]
     'm'
     """
-    outcomes = evaluate_documents(_documents(spec))
-    for outcome in outcomes:
-        if isinstance(outcome, SpecError):
-            raise outcome
+    outcomes = evaluate_documents(arguments.spec_documents(spec, "solve"))
+    errors = [outcome for outcome in outcomes if isinstance(outcome, SpecError)]
+    if errors:  # every document's problems, in the file's order
+        errors[0].more = [*errors[0].more, *errors[1:]]
+        raise errors[0]
     return [Result(outcome) for outcome in outcomes]  # type: ignore[arg-type]
 
 
@@ -203,33 +194,74 @@ class Study:
         return (f"<Study {record['name'] or record['spec']!r} ({record['kind']}): "
                 f"{len(record['results'])} results by {', '.join(methods)}, {verdict}>")
 
-    def plot(self, path: str | Path | None = None, key: str | None = None) -> Any:
+    def plot(self, path: str | os.PathLike[str] | None = None, key: str | None = None
+             ) -> Any:
         """The Monte Carlo histogram of ``key`` (default: the margin nearest its limit), written
         to ``path`` (.png or .svg), or returned as SVG for a notebook."""
         from bearingcalc.plots import tolerance_histogram
 
+        sampled = self.report.histograms
+        if not sampled:
+            raise ArgumentError("Study.plot", "key", "the study ran no Monte Carlo, whose "
+                                "samples a histogram shows: add 'monte-carlo' to methods")
+        if key is not None and (not isinstance(key, str) or key not in sampled):
+            raise _unknown_result("Study.plot", "key", key, self.record["kind"], sampled)
         chosen = key or self.report.plotted
         return _drawn(lambda target, fmt: tolerance_histogram(self.report, chosen, target,
-                                                              fmt=fmt), path)
+                                                              fmt=fmt), path, "Study.plot")
 
 
-def tolerance(spec: SpecInput, *, methods: Sequence[str] = ("worst-case", "rss",
-                                                              "monte-carlo"),
+def tolerance(spec: SpecInput, *, methods: str | Sequence[str] = ("worst-case", "rss",
+                                                                    "monte-carlo"),
               samples: int = 100_000, seed: int = 0, sampler: str = "sobol",
-              results: Sequence[str] = ()) -> Study:
-    """``bearingcalc tolerance`` of the one spec in ``spec``."""
-    from bearingcalc.studies import StudyError, check_band_ends, run_study
+              results: str | Sequence[str] = ()) -> Study:
+    """``bearingcalc tolerance`` of the one spec in ``spec``: ``methods`` (a list, or
+    names separated by commas) of worst-case, rss and monte-carlo; Monte Carlo's
+    ``samples`` (2 to 1e10; 2^30 with the sobol sampler), ``seed`` (0 or more) and
+    ``sampler`` (sobol or random); ``results`` narrows Monte Carlo to those results."""
+    from bearingcalc.studies import METHODS, StudyError, check_band_ends, run_study
+    from bearingcalc.studies.sampling import MAX_SAMPLES, SAMPLERS, SOBOL_MAX_SAMPLES
 
-    document = _one(spec)
+    chosen = arguments.names(methods, "tolerance", "methods", "methods",
+                             "['worst-case', 'rss']")
+    if not chosen:
+        raise ArgumentError("tolerance", "methods", f"names no method; give one or more of "
+                            f"{', '.join(METHODS)}")
+    for method in chosen:
+        arguments.choice(method, "tolerance", "methods", METHODS)
+    sampler = arguments.choice(sampler, "tolerance", "sampler", SAMPLERS)
+    sobol = sampler == "sobol" and "monte-carlo" in chosen
+    samples = arguments.whole_number(
+        samples, "tolerance", "samples", 2, SOBOL_MAX_SAMPLES if sobol else MAX_SAMPLES,
+        "100_000", " (the distinct Sobol' points of 30 bits; sampler='random' takes more)"
+        if sobol else "")
+    seed = arguments.whole_number(seed, "tolerance", "seed", 0)
+    asked = arguments.names(results, "tolerance", "results", "result keys",
+                            "['slip_margin']")
+    document = _one(spec, "tolerance")
     kind, parsed = parse_document(document)
-    evaluate_document(document)
+    nominal = evaluate_document(document)
+    for key in asked:
+        if key not in nominal.results:
+            raise _unknown_result("tolerance", "results", key, kind.name, nominal.results)
     check_band_ends(document, parsed)
     try:
-        return Study(run_study(kind, parsed, document.source, methods=list(methods),
+        return Study(run_study(kind, parsed, document.source, methods=chosen,
                                samples=samples, seed=seed, sampler=sampler,
-                               results=results, threads=os.cpu_count() or 1))
+                               results=asked, threads=os.cpu_count() or 1))
     except StudyError as error:
         raise SpecError(str(error), source=document.source) from None
+
+
+def _unknown_result(function: str, argument: str, key: Any, kind: str,
+                    known: Mapping[str, Any]) -> ArgumentError:
+    from bearingcalc.wording import did_you_mean
+
+    if not isinstance(key, str):
+        return ArgumentError(function, argument, f"a result's key is a text, like "
+                             f"{next(iter(known))!r}, got {key!r}")
+    return ArgumentError(function, argument, f"{key!r} is not a result of this {kind} spec"
+                         f"{did_you_mean(key, known)}; choose from {', '.join(known)}")
 
 
 @dataclass(frozen=True)
@@ -270,31 +302,59 @@ class Sweep:
         return (f"<Sweep {solved.name!r} ({solved.kind.name}): {axes}, "
                 f"{len(solved.results)} results, {impossible} impossible>")
 
-    def plot(self, path: str | Path | None = None, results: Sequence[str] = ()) -> Any:
+    def plot(self, path: str | os.PathLike[str] | None = None,
+             results: str | Sequence[str] = ()) -> Any:
         """The results against the swept input (contours over a grid), written to
         ``path`` (.png or .svg), or returned as SVG for a notebook."""
         from bearingcalc.plots import sweep_plot
         from bearingcalc.sweeps import shown_results
 
-        keys = shown_results(self.solved, list(results) or None)
+        asked = arguments.names(results, "Sweep.plot", "results", "result keys",
+                                "['slip_margin']")
+        for key in asked:
+            if key not in self.results:
+                raise _unknown_result("Sweep.plot", "results", key, self.solved.kind.name,
+                                      self.results)
+        keys = shown_results(self.solved, asked or None)
         return _drawn(lambda target, fmt: sweep_plot(self.solved, keys, target, fmt=fmt,
-                                                     chosen=bool(results)), path)
+                                                     chosen=bool(asked)), path, "Sweep.plot")
 
 
 def sweep(spec: SpecInput, vary: Mapping[str, str]) -> Sweep:
     """``bearingcalc sweep`` of the one spec in ``spec``: ``vary`` maps a field to its
     ``START:STOP:N`` (``{"contact_angle": "5deg:40deg:36"}``); one for a line, two for a
     grid."""
-    from bearingcalc.sweeps import sweep_spec
+    from bearingcalc.sweeps import SweepError, sweep_axes
 
-    document = _one(spec)
+    example = '{"contact_angle": "5deg:40deg:36"}'
+    if not isinstance(vary, Mapping):
+        written = vary.partition("=") if isinstance(vary, str) else None
+        like = (f'{{"{written[0].strip()}": "{written[2].strip()}"}}'
+                if written is not None and written[1] else example)
+        raise ArgumentError("sweep", "vary", f"a mapping of a field to its START:STOP:N, like "
+                            f"{like}, got {arguments.describe(vary)}")
+    if not 1 <= len(vary) <= 2:
+        raise ArgumentError("sweep", "vary", f"one field for a line or two for a grid, like "
+                            f"{example}, got {len(vary)}")
+    for name, span in vary.items():
+        if not isinstance(name, str) or not isinstance(span, str):
+            raise ArgumentError("sweep", "vary", f"each field's name and its START:STOP:N are "
+                                f"texts, like {example}, got {name!r}: {span!r}")
+        if span.count(":") != 2:
+            raise ArgumentError("sweep", "vary", f"{name}: {span!r}: write START:STOP:N, like "
+                                "'5deg:40deg:36'")
+    document = _one(spec, "sweep")
     kind, parsed = parse_document(document)
-    return Sweep(sweep_spec(kind, parsed, document,
-                            [f"{name}={span}" for name, span in vary.items()]))
+    try:
+        return Sweep(sweep_axes(kind, parsed, document,
+                                [f"{name}={span}" for name, span in vary.items()]))
+    except SweepError as error:  # worded for --vary: the argument here is vary
+        raise ArgumentError("sweep", "vary", str(error).removeprefix("--vary").lstrip(": ")
+                            ) from None
 
 
-def _one(spec: SpecInput) -> Document:
-    documents = _documents(spec)
+def _one(spec: SpecInput, function: str) -> Document:
+    documents = arguments.spec_documents(spec, function)
     if len(documents) > 1:
         raise SpecError(f"{len(documents)} specs: a study takes one", source=documents[0].source)
     return documents[0]
@@ -310,11 +370,26 @@ class _Svg:
         return self.text
 
 
-def _drawn(draw: Any, path: str | Path | None) -> Any:
+#: The formats a chart is drawn in, by the file's suffix.
+_CHART_SUFFIXES = (".png", ".svg")
+
+
+def _drawn(draw: Any, path: str | os.PathLike[str] | None, function: str) -> Any:
     if path is not None:
+        if not isinstance(path, (str, os.PathLike)):
+            raise ArgumentError(function, "path", f"a file's path ending in .png or .svg, or "
+                                f"None for the SVG a notebook shows, got "
+                                f"{arguments.describe(path)}")
         target = Path(path)
+        if target.suffix.lower() not in _CHART_SUFFIXES:
+            raise ArgumentError(function, "path", f"{str(path)!r}: a chart is a .png or .svg "
+                                "file; end the name in one of them")
+        if target.is_dir() or not target.parent.is_dir():
+            what = "is a folder" if target.is_dir() else "is in no folder that exists"
+            raise ArgumentError(function, "path", f"{str(path)!r} {what}; give a file in an "
+                                "existing folder")
         with target.open("wb") as stream:
-            draw(stream, target.suffix[1:].lower() or "png")
+            draw(stream, target.suffix[1:].lower())
         return target
     buffer = io.BytesIO()
     draw(buffer, "svg")

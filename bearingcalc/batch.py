@@ -246,7 +246,7 @@ def check_chunk(files: Sequence[Path]) -> list[list[CheckRecord]]:
         try:
             loaded.append(load_selected(path))
         except SpecError as error:
-            loaded.append(_invalid(str(path), str(error)))
+            loaded.append(CheckRecord(str(path), None, None, INVALID, error.lines()))
         except Exception as exc:  # one file's surprise never stops the batch
             note_internal_error(exc)
             loaded.append(_invalid(str(path), f"{path}: internal error ({type(exc).__name__}); "

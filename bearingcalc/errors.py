@@ -2,15 +2,37 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 
 class BearingcalcError(Exception):
     """Base of every error bearingcalc reports to the user."""
 
 
-class SpecError(BearingcalcError):
-    """A spec that cannot be read or is invalid.
+@dataclass(frozen=True)
+class Problem:
+    """One problem of a spec, as data: the file, its line (None where the problem is
+    the file's as a whole), the field (None where no field is at fault) and the message.
+    ``str()`` of it is the line the command line prints."""
 
-    Renders as one line: ``path:line: field: what is wrong, what would be right``.
+    file: str
+    line: int | None
+    field: str | None
+    message: str
+
+    def __str__(self) -> str:
+        where = self.file if self.line is None else f"{self.file}:{self.line}"
+        what = f"{self.field}: {self.message}" if self.field else self.message
+        return f"{where}: {what}"
+
+
+class SpecError(BearingcalcError):
+    """A spec that cannot be read or is invalid: every problem found, the first of them
+    in ``message``, ``source``, ``line`` and ``field``, the others in ``more``.
+
+    Each problem renders as one line, ``path:line: field: what is wrong, what would be
+    right``; ``str()`` is every line, ``lines()`` the lines as a list and ``problems``
+    the problems as data (:class:`Problem`).
     """
 
     def __init__(self, message: str, *, source: str = "<spec>", line: int | None = None,
@@ -23,14 +45,31 @@ class SpecError(BearingcalcError):
         #: Further problems of the same spec, each a line of its own.
         self.more: list[SpecError] = []
 
+    @property
+    def first(self) -> Problem:
+        """The first problem alone (the one ``message``, ``line`` and ``field`` give)."""
+        return Problem(self.source, self.line, self.field, self.message)
+
+    @property
+    def problems(self) -> list[Problem]:
+        """Every problem, this one first, then those of ``more`` (and of theirs)."""
+        return [self.first, *(problem for other in self.more for problem in other.problems)]
+
     def lines(self) -> list[str]:
         """Every problem, one line each: this one first, then ``more``."""
-        return [str(self), *(str(other) for other in self.more)]
+        return [str(problem) for problem in self.problems]
 
     def __str__(self) -> str:
-        where = self.source if self.line is None else f"{self.source}:{self.line}"
-        what = f"{self.field}: {self.message}" if self.field else self.message
-        return f"{where}: {what}"
+        return "\n".join(self.lines())
+
+
+class ArgumentError(SpecError, ValueError):
+    """An argument of a function of :mod:`bearingcalc.api` that is of the wrong type or
+    value: ``source`` is the function (``'tolerance()'``), ``field`` the argument. It is
+    a SpecError, so that one ``except`` catches every bad input, and a ValueError."""
+
+    def __init__(self, function: str, argument: str, message: str) -> None:
+        super().__init__(message, source=f"{function}()", field=argument)
 
 
 class SpecFieldError(Exception):

@@ -27,7 +27,7 @@ from bearingcalc.catalogue.catalogue import Catalogue, CatalogueRow
 from bearingcalc.catalogue.fill import row_fields, spec_catalogue
 from bearingcalc.envelope import Envelope, bearing_at, fitting_rows
 from bearingcalc.errors import SpecError
-from bearingcalc.evaluation import load_selected, parse_document
+from bearingcalc.evaluation import evaluate_document, load_selected, parse_document
 from bearingcalc.kinds import KINDS, Kind, unknown_kind
 from bearingcalc.models.yaml_loader import Document
 from bearingcalc.reports.formatting import verdict_line
@@ -307,17 +307,30 @@ def _ranked(document: Document, base: dict[str, Any], position: str,
     qualifying = sorted((c for c in candidates if c.qualifies), key=lambda c: c.size)
     failing = sorted((c for c in candidates if not c.qualifies), key=lambda c: -c.closeness)
     listed: list[Candidate] = []
+    warned: dict[str, list[CatalogueRow]] = {}
     refused = 0
     for candidate in qualifying:
         if len(listed) == top:
             break
         try:
-            parse_document(_with_row(document, base, position, candidate.row))
+            solved = evaluate_document(_with_row(document, base, position, candidate.row))
         except SpecError as error:
             failing.insert(0, Candidate(candidate.row, False, problem=_reason(error),
                                         error=error))
             refused += 1
             continue
+        for warning in solved.warnings:
+            warned.setdefault(warning, []).append(candidate.row)
         listed.append(candidate)
     return PositionChoice(position, considered, listed, failing[:top],
-                          len(qualifying) - refused, notes)
+                          len(qualifying) - refused, notes + _row_warnings(warned, listed))
+
+
+def _row_warnings(warned: dict[str, list[CatalogueRow]], listed: list[Candidate]
+                  ) -> list[str]:
+    """The warnings ``solve`` gives each listed row: once where every listed row has it,
+    else after the rows' designations."""
+    every = len(listed)
+    return [warning if len(rows) == every else
+            f"{', '.join(row.label for row in rows)}: {warning}"
+            for warning, rows in warned.items()]

@@ -196,13 +196,18 @@ def run_sweep(kind: Kind, spec: Spec, source: str, axes: list[Axis]) -> Sweep:
                  spec.study_notes([axis.name for axis in axes]), cited)
 
 
+def sweep_axes(kind: Kind, spec: Spec, document: Document, vary: list[str]) -> Sweep:
+    """The sweep of a loaded spec over the axes written as ``--vary`` gives them; raises
+    SweepError for a bad axis."""
+    axes = [parse_axis(text, spec) for text in vary]
+    check_axes(document, axes)
+    return run_sweep(kind, spec, document.source, axes)
+
+
 def sweep_spec(kind: Kind, spec: Spec, document: Document, vary: list[str]) -> Sweep:
-    """The sweep of a loaded spec over the axes written as ``--vary`` gives them; a bad
-    axis is a :class:`SpecError` of the spec."""
+    """:func:`sweep_axes`, a bad axis a :class:`SpecError` of the spec."""
     try:
-        axes = [parse_axis(text, spec) for text in vary]
-        check_axes(document, axes)
-        return run_sweep(kind, spec, document.source, axes)
+        return sweep_axes(kind, spec, document, vary)
     except SweepError as error:
         raise SpecError(str(error), source=document.source) from None
 

@@ -212,7 +212,8 @@ def parse_quantity(text: Any, dimension: Dimension) -> float:
                         f"{MAX_QUANTITY_CHARS} characters); write it like '{dimension.example}'")
     match = _QUANTITY.match(text)
     if match is None:
-        if re.search(r"\b(nan|inf|infinity)\b", text, re.IGNORECASE):
+        # the number's place holds it (not a word of the unit's or of a longer text)
+        if re.match(r"\s*[-+]?\.?(nan|inf|infinity)(?![A-Za-z])", text, re.IGNORECASE):
             raise UnitError(f"'{text}' is not a finite number; give {what} like "
                             f"'{dimension.example}'")
         raise UnitError(f"cannot read '{text}' as {what}; write a number and a unit, "

@@ -13,7 +13,7 @@ from numpy.typing import NDArray
 
 from bearingcalc import reads
 from bearingcalc.catalogue.columns import COLUMNS, NUMERIC
-from bearingcalc.catalogue.designation import Designation, parse_designation
+from bearingcalc.catalogue.designation import Designation, normal_form, parse_designation
 from bearingcalc.catalogue.iso import iso_series, iso_table
 from bearingcalc.catalogue.reader import RawCatalogue, read_csv
 from bearingcalc.errors import SpecError
@@ -91,7 +91,8 @@ class Catalogue:
         if self._by_basic is None:
             index: dict[str, list[CatalogueRow]] = {}
             for row in self.rows:
-                key = row.parsed.basic if row.parsed is not None else _normal(row.designation)
+                key = (row.parsed.basic if row.parsed is not None
+                       else normal_designation(row.designation))
                 index.setdefault(key, []).append(row)
             self._by_basic = index
         return self._by_basic
@@ -102,11 +103,12 @@ class Catalogue:
         nearest designations where none or several fit."""
         wanted = parse_designation(designation)
         text = str(designation).strip()
-        key = wanted.basic if wanted is not None else _normal(text)
+        key = wanted.basic if wanted is not None else normal_designation(text)
         candidates = [row for row in self._index().get(key, [])
                       if (maker is None or row.maker.casefold() == maker.casefold())
                       and _same_basic(row, wanted, text)]
-        exact = [row for row in candidates if _normal(row.designation) == _normal(text)]
+        exact = [row for row in candidates
+                 if normal_designation(row.designation) == normal_designation(text)]
         found = exact or candidates
         if len(found) == 1:
             return found[0]
@@ -125,13 +127,16 @@ class Catalogue:
                           "write the designation whole")
 
 
-def _normal(text: str) -> str:
-    return "".join(text.split()).casefold()
+def normal_designation(text: str | int) -> str:
+    """A designation as looked up: its compatibility form (:func:`normal_form`), without
+    spaces, case-folded (``'6205 2rs'`` and ``'６２０５-2RS'`` are ``'62052rs'`` and
+    ``'6205-2rs'``)."""
+    return "".join(normal_form(text).split()).casefold()
 
 
 def _same_basic(row: CatalogueRow, wanted: Designation | None, text: str) -> bool:
     if wanted is None or row.parsed is None:
-        return _normal(row.designation) == _normal(text)
+        return normal_designation(row.designation) == normal_designation(text)
     return row.parsed.basic == wanted.basic
 
 
@@ -175,7 +180,7 @@ def build(raw: RawCatalogue) -> Catalogue:
         values = {name: value for name, value in zip(names, numbers_of_row, strict=True)
                   if not math.isnan(value)}
         row = CatalogueRow(raw_row.cells, raw_row.line, values, units)
-        key = (_normal(row.designation), row.maker.casefold())
+        key = (normal_designation(row.designation), row.maker.casefold())
         if key in seen:
             raise SpecError(f"{row.label} is given twice (first at line {seen[key]})",
                             source=raw.path, line=row.line, field="designation")

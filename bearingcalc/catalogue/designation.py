@@ -7,12 +7,14 @@ last two digits (``05``; a miniature bearing's three digits end in its bore in m
 ``608``). ISO 15's rule reads the bore code: 00 = 10 mm, 01 = 12 mm,
 02 = 15 mm, 03 = 17 mm, and from 04 to 96 the code times 5 mm. Whatever follows (``-2RS``,
 ``2Z``, ``C3``, ``E``, ``J2/Q``, ``BECBP``) changes no dimension: it is kept, and not used
-to look a bearing up.
+to look a bearing up. A designation is read in Unicode's compatibility form, so that
+full-width digits (``６２０５``) are the bearing they read as, checked against ISO.
 """
 
 from __future__ import annotations
 
 import re
+import unicodedata
 from dataclasses import dataclass
 
 #: The bores of the first four codes; from 04 on, the code times 5 mm. [mm]
@@ -54,14 +56,23 @@ def bore_from_code(code: int) -> float | None:
     return 5.0 * code if 4 <= code <= 96 else None
 
 
+def normal_form(text: str | int) -> str:
+    """A designation in Unicode's compatibility form (NFKC), stripped: full-width digits
+    and letters (``６３０５``, typed with an East Asian input method) are the ASCII ones,
+    a no-break space a space, so that the bearing is the one its characters read as."""
+    return unicodedata.normalize("NFKC", str(text)).strip()
+
+
 def parse_designation(text: str | int) -> Designation | None:
-    """The parts of a designation (``'6205-2RS C3'``, ``6205``, ``'NU 206 ECP'``); None
-    where it does not start with a basic designation (a special bearing's own name)."""
+    """The parts of a designation (``'6205-2RS C3'``, ``6205``, ``'NU 206 ECP'``, the
+    full-width ``'６２０５'``, read in :func:`normal_form`); None where it does not start
+    with a basic designation (a special bearing's own name)."""
     written = str(text).strip()
-    match = _BASIC.match(written)
+    normal = normal_form(written)
+    match = _BASIC.match(normal)
     if match is None:
         return None
     prefix, digits = (match["prefix"] or "").upper(), match["digits"]
-    rest = written[match.end():]
+    rest = normal[match.end():]
     suffixes = tuple(part for part in _SEPARATORS.split(rest) if part) if rest else ()
     return Designation(written, prefix + digits, suffixes, "NU" + digits if prefix else digits)

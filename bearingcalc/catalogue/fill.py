@@ -18,7 +18,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from bearingcalc.catalogue.catalogue import Catalogue, CatalogueRow, load_catalogue
+from bearingcalc.catalogue.catalogue import (
+    Catalogue,
+    CatalogueRow,
+    load_catalogue,
+    normal_designation,
+)
 from bearingcalc.catalogue.columns import COLUMNS
 from bearingcalc.core.roller_ratings import RADIAL_ROLLER_TYPES, THRUST_ROLLER_TYPES
 from bearingcalc.errors import SpecError
@@ -42,8 +47,12 @@ TYPE_ALIASES = {"thrust": "thrust-ball"}
 ANGLED_ROLLER_TYPES = ("tapered-roller", "spherical-roller")
 #: Load-factor columns -> the field of a bearing's ``load_factors``: single row, double.
 FACTOR_FIELDS = {"e": ("e", "e"), "y1": (None, "y1"), "y2": ("y", "y2"), "y0": ("y0", "y0")}
-_WORD = re.compile(r"\s*catalogue\b", re.IGNORECASE)
-_PERCENT_TOLERANCE = re.compile(rf"^\s*(?:±|\+/-)\s*(?P<percent>{UNSIGNED_DECIMAL})\s*%\s*$")
+#: ``catalogue`` as a field's whole value, or before a tolerance (``catalogue ± 5 %``):
+#: never the word inside a longer value (a file ``catalogue.csv``, a name).
+_WORD = re.compile(r"\s*catalogue\s*(?=$|±|\+/-|\+-)", re.IGNORECASE)
+_PERCENT_TOLERANCE = re.compile(rf"^\s*(?:±|\+/-|\+-)\s*(?P<percent>{UNSIGNED_DECIMAL})\s*%\s*$")
+#: A bearing's text fields, which the catalogue keyword never stands in for.
+_TEXT_FIELDS = ("kind", "name", "catalogue", "designation", "maker")
 #: Columns that fill a bearing field of the same level: column -> field.
 _DIRECT = {name: column.field for name, column in COLUMNS.items()
            if column.field is not None and "." not in column.field}
@@ -112,8 +121,7 @@ def fill(data: dict[str, Any], places: tuple[str, ...], spec_path: str,
             row = catalogue.find(designation, maker)
         except LookupError as problem:
             raise error(str(problem), f"{prefix}designation") from None
-        if "".join(row.designation.split()).casefold() != "".join(
-                str(designation).split()).casefold():
+        if normal_designation(row.designation) != normal_designation(designation):
             use.notes.append(f"{prefix}designation: {str(designation).strip()} is taken as the "
                              f"catalogue's {row.designation} ({row.maker}), the same basic "
                              "designation: suffixes do not look a bearing up, so check that "
@@ -230,7 +238,7 @@ def _fill_bearing(bearing: dict[str, Any], row: CatalogueRow, prefix: str, use: 
                          f"for its contact angle, not {row.label}'s own e and Y (a single "
                          "bearing's)")
     for name, value in bearing.items():
-        if isinstance(value, str) and _WORD.match(value):
+        if name not in _TEXT_FIELDS and isinstance(value, str) and _WORD.match(value):
             raise error(f"the catalogue's {row.label} gives no {name}: write its value",
                         f"{prefix}{name}")
 

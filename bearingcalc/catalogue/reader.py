@@ -21,6 +21,7 @@ from pathlib import Path
 from bearingcalc.catalogue.columns import COLUMNS, REQUIRED, Column
 from bearingcalc.core.rolling_bearing import TYPES
 from bearingcalc.errors import SpecError
+from bearingcalc.models.yaml_loader import wide_encoding
 from bearingcalc.number_grammar import NUMBER
 from bearingcalc.units import DIMENSIONLESS, UnitError, parse_quantity
 from bearingcalc.wording import did_you_mean
@@ -82,8 +83,13 @@ def read_csv(path: str | Path) -> RawCatalogue:
             if not any(stripped):
                 continue
             if len(stripped) != len(names):
+                split = [name for separator, name in _OTHER_SEPARATORS.items()
+                         if len(stripped) < len(names)
+                         and len(",".join(cells).split(separator)) >= len(names)]
+                hint = (f"; the row's cells are separated by {split[0]}: write commas, and "
+                        "'.' as the decimal point" if split else "")
                 raise SpecError(f"{len(stripped)} cells where the header has {len(names)} "
-                                "columns", source=source, line=reader.line_num)
+                                f"columns{hint}", source=source, line=reader.line_num)
             if len(body) >= MAX_ROWS:
                 raise SpecError(f"more than {MAX_ROWS} rows: split the catalogue",
                                 source=source, line=reader.line_num)
@@ -129,9 +135,7 @@ def _column_problem(name: str, described: tuple[Column, str], cells: list[str],
             "\n".join(cell for cell in cells if cell)) is None:
         i = next(i for i, cell in enumerate(cells)
                  if cell and _PLAIN_NUMBER.fullmatch(cell) is None)
-        want = "a whole number" if column.whole else "a number"
-        units = f" (the unit, {unit}, is the column's)" if unit else ""
-        first.append((i, f"{cells[i][:40]!r} is not {want}: write {want} alone{units}"))
+        first.append((i, _not_a_number(cells[i], column, unit)))
     if name == "type":
         unknown = set(cells) - set(ROW_TYPES) - {""}
         if unknown:
@@ -142,6 +146,25 @@ def _column_problem(name: str, described: tuple[Column, str], cells: list[str],
         return None
     i, message = min(first)
     return SpecError(message, source=source, line=lines[i], field=name)
+
+
+#: A number written with a decimal comma ('14,8'), maybe with a unit after it.
+_DECIMAL_COMMA = re.compile(r"(?P<whole>[-+]?[0-9]+),(?P<fraction>[0-9]+)(?P<rest>\s*\S.*)?")
+
+
+def _not_a_number(cell: str, column: Column, unit: str) -> str:
+    """Why a number column's cell is not a number, with the likely fix: a decimal point
+    for a decimal comma (a thousands separator where the comma could be one), no unit."""
+    want = "a whole number" if column.whole else "a number"
+    units = f" (the unit, {unit}, is the column's)" if unit else ""
+    comma = _DECIMAL_COMMA.fullmatch(cell)
+    if comma is None:
+        return f"{cell[:40]!r} is not {want}: write {want} alone{units}"
+    point = f"{comma['whole']}.{comma['fraction']}"
+    fix = f"write the decimal point as '.', like '{point}'"
+    if len(comma["fraction"]) == 3:  # '1,500': a decimal comma, or a thousands separator
+        fix += f", or leave the thousands separator out, like '{comma['whole']}{comma['fraction']}'"
+    return f"{cell[:40]!r} is not {want}: {fix}{units}"
 
 
 def _text(path: Path, source: str) -> str:
@@ -156,6 +179,10 @@ def _text(path: Path, source: str) -> str:
         raise SpecError(f"cannot read the catalogue: {error.strerror}", source=source) from None
     if len(raw) > MAX_FILE_BYTES:
         raise SpecError(f"file too large: catalogues are at most {MAX_FILE_BYTES // 2**20} MiB",
+                        source=source)
+    encoding = wide_encoding(raw)
+    if encoding is not None:
+        raise SpecError(f"the file is {encoding} text: save the catalogue as UTF-8 (CSV UTF-8)",
                         source=source)
     try:
         return raw.decode("utf-8-sig")
@@ -181,9 +208,10 @@ def _header(cells: list[str], source: str, line: int
     for cell in cells:
         match = _HEADER_CELL.match(cell)
         if match is None:
-            raise SpecError(f"cannot read the column heading {cell[:60]!r}: write a name and, "
-                            "for a number with a unit, the unit in brackets, like "
-                            "'dynamic_load_rating [kN]'", source=source, line=line)
+            raise SpecError(_separator_hint(cells) or (
+                f"cannot read the column heading {cell[:60]!r}: write a name and, for a "
+                "number with a unit, the unit in brackets, like 'dynamic_load_rating [kN]'"),
+                source=source, line=line)
         name, unit = match["name"], (match["unit"] or "").strip()
         column = COLUMNS.get(name)
         if column is None:
@@ -202,6 +230,22 @@ def _header(cells: list[str], source: str, line: int
                         f"{', '.join(missing)}: every catalogue gives "
                         f"{', '.join(REQUIRED)}", source=source, line=line, field=missing[0])
     return columns, names
+
+
+#: Separators a spreadsheet may write in place of the comma, and their names.
+_OTHER_SEPARATORS = {";": "';'", "\t": "tabs", "|": "'|'"}
+
+
+def _separator_hint(cells: list[str]) -> str | None:
+    """Where the header's columns are separated by another character than the comma (a
+    spreadsheet set to a decimal comma writes ';'), what to do; else None."""
+    for separator, name in _OTHER_SEPARATORS.items():
+        parts = [part for cell in cells for part in cell.split(separator)]
+        if len(parts) > len(cells) and all(_HEADER_CELL.match(part) for part in parts):
+            return (f"the columns are separated by {name}: a catalogue separates them by "
+                    "commas and writes the decimal point as '.' (save it as 'CSV UTF-8 "
+                    "(comma delimited)' with '.' as the decimal symbol)")
+    return None
 
 
 def _check_unit(column: Column, unit: str, source: str, line: int) -> None:

@@ -37,12 +37,11 @@ from bearingcalc.cli_output import (
 from bearingcalc.errors import SpecError
 from bearingcalc.output import StagedFiles
 
-#: Most Monte Carlo samples: 1e10 takes about half an hour on two cores.
-MAX_SAMPLES = 10**10
-
 
 def _sample_count(text: str | int) -> int:
     """``--samples`` as engineers write it: 100000, 1e5 or 100_000."""
+    from bearingcalc.studies.sampling import MAX_SAMPLES
+
     try:
         number = float(str(text).replace("_", ""))
     except ValueError:

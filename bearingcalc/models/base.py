@@ -126,11 +126,32 @@ def field_parser(info: FieldInfo) -> tuple[str, Any, str] | None:
         if isinstance(func, _Count):
             return "integer", _whole_number, "1"
         if func is _plain_number or isinstance(func, (_Percentage, _RangedNumber)):
-            # A number written with a word of its own ('250HB') is read by its validator.
-            return "number", getattr(func, "read", _finite_number), "1"
+            # Read as the spec reads it: '90 %' is a reliability of 0.9, '250HB' a
+            # hardness (a reader of its own, where a bound may leave its word out).
+            return "number", getattr(func, "read", None) or functools.partial(
+                _validated, validator=func), "1"
     if _whole_choices(info.annotation):  # a grade, a number of rows: validated per point
         return "integer", _whole_number, "1"
     return None
+
+
+def _validated(text: str, validator: Any) -> float:
+    """A bound of a sweep read as the spec reads the field's value: the text as YAML
+    reads a plain value, a number as it is (the spec's rules judge it at each end of the
+    range), a text such as '90 %' by the field's own validator."""
+    from bearingcalc.models.yaml_loader import plain_scalar  # which reads field paths
+
+    value = plain_scalar(text)
+    if not isinstance(value, (int, float, str)) or isinstance(value, bool):
+        raise ValueError(f"'{text}' is not a number")
+    if isinstance(value, float) and not math.isfinite(value):
+        raise ValueError(f"'{text}' is not a finite number")
+    if not isinstance(value, str):
+        return float(value)
+    number = validator(value)
+    if not math.isfinite(number):
+        raise ValueError(f"'{text}' is not a finite number")
+    return float(number)
 
 
 def _whole_choices(annotation: Any) -> bool:
@@ -148,17 +169,15 @@ def _parse_as(text: str, dimension: Dimension) -> float:
 
 
 def _whole_number(text: str) -> int:
-    try:
-        return int(text)
-    except ValueError:
-        raise ValueError(f"'{text}' is not a whole number") from None
+    """A count or a choice of whole numbers as YAML reads it (``12``, or ``12.0``, which a
+    spec's count takes too)."""
+    from bearingcalc.models.yaml_loader import plain_scalar
 
-
-def _finite_number(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise ValueError(f"'{text}' is not a number") from None
-    if not math.isfinite(value):
-        raise ValueError(f"'{text}' is not a finite number")
+    value = plain_scalar(text)
+    if isinstance(value, float) and value.is_integer():
+        value = int(value)
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise ValueError(f"'{text}' is not a whole number")
     return value
+
+

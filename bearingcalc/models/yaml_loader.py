@@ -114,6 +114,9 @@ def read_spec_text(path: str | os.PathLike[str]) -> str:
     if len(raw) > MAX_FILE_BYTES:
         raise SpecError(f"file too large: specs are at most {MAX_FILE_BYTES // 1024} KiB",
                         source=label)
+    encoding = wide_encoding(raw)
+    if encoding is not None:
+        raise SpecError(f"the file is {encoding} text; save it as UTF-8", source=label)
     if b"\0" in raw:
         raise SpecError("binary file, not YAML text", source=label)
     try:
@@ -121,6 +124,41 @@ def read_spec_text(path: str | os.PathLike[str]) -> str:
     except UnicodeDecodeError as exc:
         raise SpecError(f"not UTF-8 text (byte 0x{raw[exc.start]:02x} at offset {exc.start}); "
                         "save the file as UTF-8", source=label) from None
+
+
+#: Byte-order marks of the encodings wider than UTF-8, the longer first (UTF-32 LE's
+#: begins with UTF-16 LE's).
+_BOMS = ((b"\xff\xfe\x00\x00", "UTF-32 (little-endian, with a byte-order mark)"),
+         (b"\x00\x00\xfe\xff", "UTF-32 (big-endian, with a byte-order mark)"),
+         (b"\xff\xfe", "UTF-16 (little-endian, with a byte-order mark)"),
+         (b"\xfe\xff", "UTF-16 (big-endian, with a byte-order mark)"))
+_WIDE = (("utf-32-le", "UTF-32 (little-endian)"), ("utf-32-be", "UTF-32 (big-endian)"),
+         ("utf-16-le", "UTF-16 (little-endian)"), ("utf-16-be", "UTF-16 (big-endian)"))
+#: Characters no text file holds (NUL and the other C0 controls but tab and line ends).
+_NOT_TEXT = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f]")
+
+
+def wide_encoding(raw: bytes) -> str | None:
+    """The name of the UTF-16 or UTF-32 encoding ``raw`` is text in (with or without a
+    byte-order mark), or None: a file saved as 'Unicode' by an editor on Windows. Without
+    a mark, the bytes are taken as such text when they decode to text without control
+    characters and hold a NUL (which UTF-8 text never does), in the byte order that
+    reads the most ASCII."""
+    for mark, name in _BOMS:
+        if raw.startswith(mark) and (len(raw) - len(mark)) % (4 if "32" in name else 2) == 0:
+            return name
+    if b"\0" not in raw:
+        return None
+    ascii_share: dict[str, float] = {}
+    for codec, name in _WIDE:
+        try:
+            text = raw.decode(codec)
+        except UnicodeDecodeError:
+            continue
+        if text and not _NOT_TEXT.search(text):
+            ascii_share[name] = sum(char < "\x80" for char in text) / len(text)
+    # A spec is mostly ASCII: the byte order that reads it so is the file's.
+    return max(ascii_share, key=ascii_share.__getitem__) if ascii_share else None
 
 
 _TOO_DEEP = f"nested too deeply: specs nest at most {MAX_DEPTH} levels"
@@ -146,7 +184,7 @@ def load_documents(path: str | os.PathLike[str], text: str | None = None) -> lis
         text = read_spec_text(path)
     loader = _LOADER(text)
     try:
-        documents = _Builder(loader, label).documents()
+        documents = _Builder(loader, label, text).documents()
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         line = mark.line + 1 if mark is not None else None
@@ -171,7 +209,7 @@ def load_documents(path: str | os.PathLike[str], text: str | None = None) -> lis
 class _Container:
     """A mapping or sequence under construction."""
 
-    __slots__ = ("anchor", "first_node", "key_path", "pending_key", "value")
+    __slots__ = ("anchor", "first_node", "key_path", "key_start", "pending_key", "value")
 
     def __init__(self, value: Any, key_path: KeyPath, anchor: str | None, first_node: int) -> None:
         self.value = value
@@ -179,9 +217,26 @@ class _Container:
         self.pending_key: Any = _NO_KEY
         self.anchor = anchor
         self.first_node = first_node
+        #: where it starts, for a list or mapping written as a mapping's key
+        self.key_start: Any = None
 
 
 _NO_KEY = object()
+#: Line breaks as YAML counts them.
+_LINE_BREAKS = re.compile("\r\n|[\r\n\x85\u2028\u2029]")
+
+
+def _kind_of(value: Any) -> str:
+    """What a key that is no name is, for a message."""
+    if value is None:
+        return "null (no name)"
+    if isinstance(value, bool):
+        return "true or false (quote a name that reads so)"
+    if isinstance(value, (int, float)):
+        return "a number"
+    if isinstance(value, list):
+        return "a list"
+    return "a mapping"
 
 
 class _Builder:
@@ -193,9 +248,10 @@ class _Builder:
     alias bomb is refused without being expanded.
     """
 
-    def __init__(self, loader: Any, label: str) -> None:
+    def __init__(self, loader: Any, label: str, text: str = "") -> None:
         self.loader = loader
         self.label = label
+        self.text = text
 
     def _fail(self, message: str, event: yaml.Event) -> SpecError:
         return SpecError(message, source=self.label, line=event.start_mark.line + 1)
@@ -224,6 +280,8 @@ class _Builder:
                 continue
             if isinstance(event, (yaml.MappingEndEvent, yaml.SequenceEndEvent)):
                 done = stack.pop()
+                if done.key_start is not None:
+                    raise self._key_error(done.value, done.key_start, event)
                 if done.anchor is not None:
                     anchors[done.anchor] = (done.value, nodes - done.first_node + 1)
                 if not stack:
@@ -253,8 +311,10 @@ class _Builder:
                     raise self._fail(_TOO_DEEP,
                                      event)
                 key_path = self._child_path(stack, parent_path)
-                self._attach(stack, value, event, lines)
+                is_key = self._attach(stack, value, event, lines)
                 stack.append(_Container(value, key_path, event.anchor, nodes))
+                if is_key:  # refused at its end, when the whole key can be shown
+                    stack[-1].key_start = event
                 continue
             if isinstance(event, yaml.ScalarEvent) and event.anchor is not None:
                 anchors[event.anchor] = (value, 1)
@@ -274,26 +334,59 @@ class _Builder:
         return (*parent_path, parent.pending_key)
 
     def _attach(self, stack: list[_Container], value: Any, event: yaml.Event,
-                lines: dict[KeyPath, int]) -> None:
-        """Put a finished value into the container on top of the stack."""
+                lines: dict[KeyPath, int]) -> bool:
+        """Put a value into the container on top of the stack; True where it is a
+        mapping's key that is itself a list or mapping (refused once it is read)."""
         if not stack:
-            return
+            return False
         parent = stack[-1]
         if isinstance(parent.value, list):
             parent.value.append(value)
-            return
+            return False
         if parent.pending_key is _NO_KEY:
+            if isinstance(event, (yaml.MappingStartEvent, yaml.SequenceStartEvent)):
+                return True
             if not isinstance(value, str):
-                raise self._fail(f"keys must be names, got {value!r}", event)
+                raise self._key_error(value, event, event)
             if value == "<<":
                 raise self._fail("YAML merge keys ('<<') are not supported in specs", event)
             if value in parent.value:
                 raise self._fail(f"duplicate key '{value}'", event)
             parent.pending_key = value
             lines[(*parent.key_path, value)] = event.start_mark.line + 1
-            return
+            return False
         parent.value[parent.pending_key] = value
         parent.pending_key = _NO_KEY
+        return False
+
+    def _key_error(self, value: Any, start: yaml.Event, end: yaml.Event) -> SpecError:
+        """A key that is no plain name (null, a number, true or false, a list, a mapping,
+        an alias to one), named as written."""
+        if isinstance(start, yaml.AliasEvent):
+            written = f"*{start.anchor}"
+        elif isinstance(start, yaml.ScalarEvent):
+            written = start.value
+        else:
+            written = " ".join(self._written(start.start_mark, end.end_mark).split())
+            if not written.startswith(("[", "{")):  # a block list or mapping: in one line
+                written = yaml.safe_dump(value, default_flow_style=True, width=10**6).strip()
+        shown = written if len(written) <= 40 else f"{written[:37]}..."
+        what = ("the key is empty" if written == "" and value is None
+                else f"the key '{shown}' is {_kind_of(value)}")
+        return self._fail(f"a key must be a plain name, like speed in 'speed: 1500 rpm'; "
+                          f"{what}", start)
+
+    def _written(self, start: Any, end: Any) -> str:
+        """The text between two marks, found by line and column (counted in characters
+        by every YAML parser)."""
+        lines = _LINE_BREAKS.split(self.text)
+        if start.line >= len(lines):
+            return ""
+        if start.line == end.line:
+            return lines[start.line][start.column:end.column]
+        middle = lines[start.line + 1:end.line]
+        last = lines[end.line][:end.column] if end.line < len(lines) else ""
+        return "\n".join([lines[start.line][start.column:], *middle, last])
 
     def _check_tag(self, event: Any, default_tag: str) -> None:
         if event.tag is not None and event.tag not in (default_tag, "!"):
@@ -313,6 +406,16 @@ class _Builder:
             shown = event.value if len(event.value) <= 40 else f"{event.value[:30]}…"
             raise self._fail(f"'{shown}' is not a valid {tag.rsplit(':', 1)[-1]}",
                              event) from None
+
+
+def plain_scalar(text: str) -> Any:
+    """The value of ``text`` written as a plain (unquoted) YAML scalar in a spec: None,
+    true or false, an int, a float, or the text itself (``'90 %'``, ``'1 kN'``)."""
+    stripped = text.strip()
+    for tag, (pattern, _) in _CORE_SCHEMA.items():
+        if re.match(pattern, stripped) and stripped:
+            return _core_value(tag, stripped)
+    return stripped
 
 
 def _core_value(tag: str, text: str) -> Any:

@@ -16,6 +16,8 @@ from bearingcalc.studies.study import StudyError, StudyInput
 SAMPLERS = ("sobol", "random")
 #: Distinct points of a 30-bit Sobol' sequence (scipy's default, and ours).
 SOBOL_MAX_SAMPLES = 1 << 30
+#: Most Monte Carlo samples: 1e10 takes about half an hour on two cores.
+MAX_SAMPLES = 10**10
 #: Normal draws in a study above which scipy.special.ndtri is worth its import (about
 #: 0.3 s); below it, bearingcalc.studies.normal.ndtri, whose tails run per element in
 #: Python. Both give the same bits, so the choice never shows in a result.
