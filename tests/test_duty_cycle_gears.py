@@ -13,13 +13,11 @@ import re
 
 import pytest
 
+from tests import agma_miner
 from tests.conftest import ROOT, solve_json, study_status
 
 REL, HOUR = 1e-9, 3600.0
 UNIT = {"N*m": 1.0, "W": 1.0, "kW": 1e3, "rpm": 2 * math.pi / 60, "%": 0.01}
-# b of the life factors K_L = 1.683·N^(−0.0323) and C_L = 3.4822·N^(−0.0602): a bin at
-# safety Sᵢ (at the design life N) fails after N·Sᵢ^(1/b) cycles.
-SLOPE = {"bending": 0.0323, "contact": 0.0602}
 
 
 def si(text: str) -> float:
@@ -48,9 +46,19 @@ def own(item: dict) -> dict:  # the operating fields a bin sets
     return {key: value for key, value in item.items() if key not in ("name", "time")}
 
 
-def damage(shares: list[float], safeties: list[float], load: str) -> list[float]:
-    """Uᵢ·Sᵢ^(−1/b): each bin's share of the cycles over its cycles to failure, ÷ N."""
-    return [u * s ** (-1 / SLOPE[load]) for u, s in zip(shares, safeties, strict=True)]
+def design_cycles(text: str) -> float:
+    """The pinion's cycles over the design life: the spec's rating.cycles, 10⁷ unless
+    given."""
+    found = re.search(r"^  cycles: (\S+)", text, flags=re.M)
+    return float(found[1]) if found else 1e7
+
+
+def damage(shares: list[float], safeties: list[float], load: str,
+           cycles: float) -> list[float]:
+    """Uᵢ·N/Nᵢ on AGMA 2003's two-branch curves (tests/agma_miner.py): each bin's
+    cycles over its cycles to failure."""
+    return [agma_miner.miner_sum([u], [s], cycles, load)
+            for u, s in zip(shares, safeties, strict=True)]
 
 
 def solve(cli, spec_file, text: str, name: str) -> dict:
@@ -103,20 +111,23 @@ def gear_shares(case: dict) -> list[float]:
 
 @pytest.mark.parametrize("name", list(GEAR_CASES))
 def test_gear_cycle_is_miner_over_single_point_solves(cli, spec_file, name):
-    """D = ΣUᵢSᵢ^(−1/b), S = D^(−b) in bending and contact; the margins against the
-    limits; the stresses the largest bin's; per bin its stresses and damage shares. The
-    root: with every bin's stress times S (torque × S_F, torque × S_H²) D is 1."""
+    """D = ΣUᵢN/Nᵢ on AGMA's two-branch curves, S by brentq on D(S) = 1 in bending and
+    contact; the margins against the limits; the stresses the largest bin's; per bin its
+    stresses and damage shares. The root: with every bin's stress times S (torque × S_F,
+    torque × S_H²) D is 1."""
     case = GEAR_CASES[name]
     bins = case["bins"]
+    n = design_cycles(case["base"])
     got = solve(cli, spec_file, cycle(case["base"], bins), "cycle.yaml")
     singles = [solve(cli, spec_file, gear_point(case, item), f"bin{k}.yaml")
                for k, item in enumerate(bins, 1)]
     u = gear_shares(case)
     expected = {}
     for load in ("bending", "contact"):
-        per_bin = damage(u, [s[f"{load}_safety"] for s in singles], load)
+        safeties = [s[f"{load}_safety"] for s in singles]
+        per_bin = damage(u, safeties, load, n)
         total = sum(per_bin)
-        safety = total ** -SLOPE[load]
+        safety = agma_miner.spectrum_safety(u, safeties, n, load)
         expected.update({f"{load}_damage": total, f"{load}_safety": safety,
                          f"{load}_safety_margin": safety - case["limits"][load],
                          f"{load}_stress": max(s[f"{load}_stress"] for s in singles)})
@@ -127,7 +138,7 @@ def test_gear_cycle_is_miner_over_single_point_solves(cli, spec_file, name):
         factor = safety if load == "bending" else safety ** 2
         scaled = [solve(cli, spec_file, gear_point(case, item, factor), f"{load}{k}.yaml")
                   for k, item in enumerate(bins, 1)]
-        assert sum(damage(u, [s[f"{load}_safety"] for s in scaled], load)) == pytest.approx(
+        assert sum(damage(u, [s[f"{load}_safety"] for s in scaled], load, n)) == pytest.approx(
             1.0, rel=REL)
     for k, item in enumerate(bins, 1):
         expected[f"duty_{k}_time_share"] = si(item["time"])
@@ -233,10 +244,12 @@ def test_drive_cycle_over_single_point_solves(cli, spec_file, name):
     system = [moving[i] / singles[i]["system_modified_rating_life"] if i in turning else 0.0
               for i in range(4)]
     for load in ("bending", "contact"):
-        per_bin = damage(u, [s[f"{load}_safety"] for s in singles], load)
+        safeties = [s[f"{load}_safety"] for s in singles]
+        per_bin = damage(u, safeties, load, design_cycles(base))
         total = sum(per_bin)
-        expected.update({f"{load}_damage": total, f"{load}_safety": total ** -SLOPE[load],
-                         f"{load}_safety_margin": total ** -SLOPE[load] - 1.0})
+        safety = agma_miner.spectrum_safety(u, safeties, design_cycles(base), load)
+        expected.update({f"{load}_damage": total, f"{load}_safety": safety,
+                         f"{load}_safety_margin": safety - 1.0})
         expected.update({f"duty_{k}_{load}_damage_share": d / total
                          for k, d in enumerate(per_bin, 1)})
     for k, item in enumerate(DRIVE_BINS, 1):

@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from bearingcalc.core import agma_life
 from bearingcalc.core.common import MM
 from bearingcalc.core.gear_materials import THROUGH_HARDENED
 
@@ -26,10 +27,6 @@ STEEL_ELASTIC_COEFFICIENT = 190.0
 #: AGMA 2003's bounds on the lengthwise curvature factor K_x of spiral teeth.
 CURVATURE_FACTOR_BOUNDS = (1.0, 1.15)
 
-#: The slopes b of AGMA 2003's life factors K_L = 1.683·N^(−b) (bending) and
-#: C_L = 3.4822·N^(−b) (contact) for N > 10⁷ cycles, as Budynas & Nisbett give them.
-BENDING_LIFE_SLOPE = 0.0323
-CONTACT_LIFE_SLOPE = 0.0602
 
 
 def lengthwise_curvature_factor(spiral_angle: ArrayLike, cutter_radius: ArrayLike,
@@ -93,9 +90,13 @@ def max_pitch_line_speed(quality_number: ArrayLike) -> NDArray:
 
 
 def life_factors(cycles: ArrayLike) -> tuple[NDArray, NDArray]:
-    r"""AGMA 2003's stress-cycle factors of through-hardened steel beyond 10⁷ cycles.
+    r"""AGMA 2003's stress-cycle factors of steel bevel gears, bending and contact.
 
-    .. math:: K_L = 1.683\,N^{-0.0323}, \qquad C_L = 3.4822\,N^{-0.0602}
+    .. math:: K_L = 6.1514\,N^{-0.1192}\ (10^3 \le N < 3\cdot10^6), \quad
+              1.683\,N^{-0.0323}\ (3\cdot10^6 \le N \le 10^{10})
+
+    .. math:: C_L = 2\ (10^3 \le N < 10^4), \quad
+              3.4822\,N^{-0.0602}\ (10^4 \le N \le 10^{10})
 
     Parameters
     ----------
@@ -103,13 +104,13 @@ def life_factors(cycles: ArrayLike) -> tuple[NDArray, NDArray]:
 
     Returns
     -------
-    (K_L [1], C_L [1]), bending and contact.
+    (K_L [1], C_L [1]), bending and contact (:func:`bearingcalc.core.agma_life.life_factor`).
 
-    Source: Budynas & Nisbett, *Shigley's Mechanical Engineering Design*, 10th ed.,
-    ch. 15, the stress-cycle factors of straight bevel gears.
+    Source: ANSI/AGMA 2003-B97, Figs. 18 and 19; Budynas & Nisbett, *Shigley's
+    Mechanical Engineering Design*, 10th ed., eqs. (15-14) and (15-15).
     """
-    n = np.asarray(cycles, dtype=float)
-    return 1.683 * n ** -BENDING_LIFE_SLOPE, 3.4822 * n ** -CONTACT_LIFE_SLOPE
+    return (agma_life.life_factor(cycles, agma_life.BENDING_LIFE_CURVE),
+            agma_life.life_factor(cycles, agma_life.CONTACT_LIFE_CURVE))
 
 
 def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: ArrayLike,
@@ -132,8 +133,8 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
     Km = Kmb + 5.6e−6·b², Kx from :func:`lengthwise_curvature_factor`;
     s_H = Cp·√(Wt·Ko·Kv·Km·Cs·Cxc/(b·d_e1·I)) with Cp = 190 √MPa,
     Cs = 0.00492·b + 0.4375, Cxc = 2 (1.5 crowned); allowables
-    s_at = 0.30·HB + 14.48 and s_ac = 2.35·HB + 162.89 MPa; K_L = 1.683·N^−0.0323,
-    C_L = 3.4822·N^−0.0602, K_R = 0.50 − 0.25·log10(1 − R) (R ≥ 0.99) else
+    s_at = 0.30·HB + 14.48 and s_ac = 2.35·HB + 162.89 MPa; K_L and C_L of
+    :func:`life_factors` (two branches each), K_R = 0.50 − 0.25·log10(1 − R) (R ≥ 0.99) else
     0.70 − 0.15·log10(1 − R), C_R = √K_R, K_T = C_H = 1;
     S_F = s_at·K_L/(K_T·K_R·s_F), S_H = s_ac·C_L/(K_T·C_R·s_H). The power at which
     S = 1 at the same speed is P·S_F (bending, s_F ∝ Wt) and P·S_H² (contact,

@@ -11,9 +11,15 @@ from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import NDArray
 
-from bearingcalc.core.bevel_rating import BENDING_LIFE_SLOPE, CONTACT_LIFE_SLOPE
+from bearingcalc.core.agma_life import (
+    BENDING_LIFE_CURVE,
+    CONTACT_LIFE_CURVE,
+    Curve,
+    spectrum_damage,
+    spectrum_safety,
+)
 from bearingcalc.core.duty_cycle import (
     LIFE_EXPONENT,
     ROLLER_TYPES,
@@ -53,40 +59,21 @@ DRIVE_CYCLE_RESULTS: dict[str, tuple[str, str]] = {
 GEAR_LARGEST = ("bending_stress", "contact_stress", "gear_b_bending_stress")
 
 
-def spectrum_safety(shares: ArrayLike, safeties: ArrayLike, slope: float,
-                    governing: NDArray) -> NDArray:
-    r"""The safety factor of a load spectrum on a stress-cycle curve N ∝ S^(−1/b).
-
-    Each bin alone, at the design life N, has the safety Sᵢ (its stress against the
-    allowable stress at N cycles); it would fail after Nᵢ = N·Sᵢ^(1/b) cycles. Its
-    share Uᵢ of the N cycles does the damage Uᵢ·N/Nᵢ, so by Miner's rule
-
-    .. math:: D = \sum_i U_i S_i^{-1/b}, \qquad S = D^{-b}
-
-    S is the factor on every bin's stress that makes D = 1 (the curve is one power law,
-    so the root is closed). Written about the governing bin g (the smallest Sᵢ):
-    S = S_g·(Σ Uᵢ·(Sᵢ/S_g)^(−1/b))^(−b).
-
-    Parameters
-    ----------
-    shares : Uᵢ, each bin's share of the pinion's cycles (first axis). [1]
-    safeties : Sᵢ at the design life, stress-based. [1]
-    slope : b of the life factor, K_L or C_L ∝ N^(−b). [1]
-    governing : the index of the governing bin of each design.
-
-    Source: ANSI/AGMA 2003-B97 (the life factors K_L, C_L as the kind uses them) with
-    Miner's rule (ANSI/AGMA 2101-D04, Annex A, load spectra).
-    """
-    safeties = np.asarray(safeties, dtype=float)
-    reference = at_bin(safeties, governing)
-    return reference * np.sum(np.asarray(shares, dtype=float)
-                              * (safeties / reference) ** (-1.0 / slope), axis=0) ** -slope
+def _spectrum(shares: NDArray, safeties: NDArray, cycles: NDArray,
+              curve: Curve) -> tuple[NDArray, NDArray]:
+    """A member's safety over the spectrum, and each bin's damage at the given loads."""
+    return (spectrum_safety(shares, safeties, cycles, curve),
+            spectrum_damage(shares, safeties, cycles, curve))
 
 
-def _spectrum(shares: NDArray, safeties: NDArray, slope: float) -> tuple[NDArray, NDArray]:
-    """A member's safety over the spectrum, and each bin's damage Uᵢ·Sᵢ^(−1/b)."""
-    damage = shares * safeties ** (-1.0 / slope)
-    return spectrum_safety(shares, safeties, slope, np.argmax(damage, axis=0)), damage
+def _member_cycles(inputs: Mapping[str, Any]) -> tuple[NDArray, NDArray]:
+    """The design-life cycles of the pinion and of gear B (N·z_A/z_B)."""
+    def first_bin(key: str) -> NDArray:
+        values = np.asarray(inputs[key], dtype=float)
+        return values[0] if values.ndim else values
+
+    pinion = first_bin("cycles")
+    return pinion, pinion * first_bin("gear_a_teeth") / first_bin("gear_b_teeth")
 
 
 def _gear_cycle(results: Mapping[str, NDArray], shares: NDArray, inputs: Mapping[str, Any],
@@ -95,14 +82,15 @@ def _gear_cycle(results: Mapping[str, NDArray], shares: NDArray, inputs: Mapping
     if "bending_safety" not in results:
         return np.zeros_like(shares), np.zeros_like(shares)
     per_bin = {}
-    for load, slope in (("bending", BENDING_LIFE_SLOPE), ("contact", CONTACT_LIFE_SLOPE)):
-        safety, damage = _spectrum(shares, results[f"{load}_safety"], slope)
+    pinion, gear = _member_cycles(inputs)
+    for load, curve in (("bending", BENDING_LIFE_CURVE), ("contact", CONTACT_LIFE_CURVE)):
+        safety, damage = _spectrum(shares, results[f"{load}_safety"], pinion, curve)
         out[f"{load}_safety"] = safety
         out[f"{load}_damage"] = np.sum(damage, axis=0)
         weaker = safety
         if f"gear_b_{load}_safety" in results:  # gear B's spectrum, at its own cycles
-            out[f"gear_b_{load}_safety"], _ = _spectrum(
-                shares, results[f"gear_b_{load}_safety"], slope)
+            out[f"gear_b_{load}_safety"] = spectrum_safety(
+                shares, results[f"gear_b_{load}_safety"], gear, curve)
             weaker = np.minimum(safety, out[f"gear_b_{load}_safety"])
         out[f"{load}_safety_margin"] = weaker - np.asarray(
             inputs[f"min_{load}_safety"], dtype=float)[0]
@@ -125,7 +113,7 @@ def gear_pair_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
     that of the bin doing the most bending damage."""
     results = per_bin.results
     shares, _ = _shares(inputs)
-    out = _at_governing(results, shares, results.get("bending_safety"), BENDING_LIFE_SLOPE)
+    out = _at_governing(results, shares, inputs)
     bending, contact = _gear_cycle(results, shares, inputs, out)
     turning = _turning(inputs)
 
@@ -216,12 +204,16 @@ def _shares(inputs: Mapping[str, Any]) -> tuple[NDArray, NDArray]:
 
 
 def _at_governing(results: Mapping[str, NDArray], shares: NDArray,
-                  safeties: NDArray | None, slope: float) -> dict[str, NDArray]:
-    """Every result at the bin doing the most damage (the first bin without a rating)."""
+                  inputs: Mapping[str, Any]) -> dict[str, NDArray]:
+    """Every result at the bin doing the most bending damage (the first bin without a
+    rating)."""
+    safeties = results.get("bending_safety")
     if safeties is None:
         governing = np.zeros(np.shape(shares)[1:], dtype=int)
     else:
-        governing = np.argmax(shares * np.asarray(safeties) ** (-1.0 / slope), axis=0)
+        damage = spectrum_damage(shares, safeties, _member_cycles(inputs)[0],
+                                 BENDING_LIFE_CURVE)
+        governing = np.argmax(damage, axis=0)
     return {key: at_bin(values, governing) for key, values in results.items()}
 
 
