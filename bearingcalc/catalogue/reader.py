@@ -21,7 +21,7 @@ from pathlib import Path
 from bearingcalc.catalogue.columns import COLUMNS, REQUIRED, Column
 from bearingcalc.core.rolling_bearing import TYPES
 from bearingcalc.errors import SpecError
-from bearingcalc.models.yaml_loader import wide_encoding
+from bearingcalc.models.spec_files import wide_encoding
 from bearingcalc.number_grammar import NUMBER
 from bearingcalc.units import DIMENSIONLESS, UnitError, parse_quantity
 from bearingcalc.wording import did_you_mean
