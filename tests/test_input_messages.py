@@ -175,7 +175,7 @@ def test_a_utf16_catalogue_is_named_so(tmp_path, cli):
     text = EXAMPLE_CATALOGUE.read_text(encoding="utf-8")
     run = cli("solve", catalogue_spec(tmp_path, text.encode("utf-16")))
     assert run.code == 2 and "bearings.csv: the file is UTF-16 (little-endian, with a " \
-        "byte-order mark) text: save the catalogue as UTF-8" in run.err, run.err
+        "byte-order mark) text; save the catalogue as UTF-8" in run.err, run.err
 
 
 def test_binary_and_latin1_files_keep_their_messages(tmp_path, cli):

@@ -33,9 +33,7 @@ def read_spec_text(path: str | os.PathLike[str]) -> str:
     if len(raw) > MAX_FILE_BYTES:
         raise SpecError(f"file too large: specs are at most {MAX_FILE_BYTES // 1024} KiB",
                         source=label)
-    encoding = wide_encoding(raw)
-    if encoding is not None:
-        raise SpecError(f"the file is {encoding} text; save it as UTF-8", source=label)
+    refuse_wide_text(raw, label, "save it as UTF-8")
     if b"\0" in raw:
         raise SpecError("binary file, not YAML text", source=label)
     try:
@@ -55,6 +53,14 @@ _WIDE = (("utf-32-le", "UTF-32 (little-endian)"), ("utf-32-be", "UTF-32 (big-end
          ("utf-16-le", "UTF-16 (little-endian)"), ("utf-16-be", "UTF-16 (big-endian)"))
 #: Characters no text file holds (NUL and the other C0 controls but tab and line ends).
 _NOT_TEXT = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f]")
+
+
+def refuse_wide_text(raw: bytes, source: str, advice: str) -> None:
+    """A SpecError naming the encoding where ``raw`` is UTF-16 or UTF-32 text, with
+    ``advice`` (how to save it as UTF-8)."""
+    encoding = wide_encoding(raw)
+    if encoding is not None:
+        raise SpecError(f"the file is {encoding} text; {advice}", source=source)
 
 
 def wide_encoding(raw: bytes) -> str | None:
