@@ -15,7 +15,6 @@ import os
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from html import escape
-from pathlib import Path
 from typing import Any
 
 from bearingcalc import api_arguments as arguments
@@ -71,7 +70,7 @@ class Result:
         """The result ``key`` as a pint quantity in its SI unit (an unbounded result is
         infinite)."""
         if not isinstance(key, str) or key not in self.results:
-            raise _unknown_result("Result.quantity", "key", key, self.kind, self.results)
+            raise arguments.unknown_result("Result.quantity", "key", key, self.kind, self.results)
         value = self.results[key]
         unit = self.units[key]
         return _registry().Quantity(float("inf") if value is None else value,
@@ -205,7 +204,7 @@ class Study:
             raise ArgumentError("Study.plot", "key", "the study ran no Monte Carlo, whose "
                                 "samples a histogram shows: add 'monte-carlo' to methods")
         if key is not None and (not isinstance(key, str) or key not in sampled):
-            raise _unknown_result("Study.plot", "key", key, self.record["kind"], sampled)
+            raise arguments.unknown_result("Study.plot", "key", key, self.record["kind"], sampled)
         chosen = key or self.report.plotted
         return _drawn(lambda target, fmt: tolerance_histogram(self.report, chosen, target,
                                                               fmt=fmt), path, "Study.plot")
@@ -243,7 +242,7 @@ def tolerance(spec: SpecInput, *, methods: str | Sequence[str] = ("worst-case", 
     nominal = evaluate_document(document)
     for key in asked:
         if key not in nominal.results:
-            raise _unknown_result("tolerance", "results", key, kind.name, nominal.results)
+            raise arguments.unknown_result("tolerance", "results", key, kind.name, nominal.results)
     check_band_ends(document, parsed)
     try:
         return Study(run_study(kind, parsed, document.source, methods=chosen,
@@ -251,17 +250,6 @@ def tolerance(spec: SpecInput, *, methods: str | Sequence[str] = ("worst-case", 
                                results=asked, threads=os.cpu_count() or 1))
     except StudyError as error:
         raise SpecError(str(error), source=document.source) from None
-
-
-def _unknown_result(function: str, argument: str, key: Any, kind: str,
-                    known: Mapping[str, Any]) -> ArgumentError:
-    from bearingcalc.wording import did_you_mean
-
-    if not isinstance(key, str):
-        return ArgumentError(function, argument, f"a result's key is a text, like "
-                             f"{next(iter(known))!r}, got {key!r}")
-    return ArgumentError(function, argument, f"{key!r} is not a result of this {kind} spec"
-                         f"{did_you_mean(key, known)}; choose from {', '.join(known)}")
 
 
 @dataclass(frozen=True)
@@ -313,7 +301,7 @@ class Sweep:
                                 "['slip_margin']")
         for key in asked:
             if key not in self.results:
-                raise _unknown_result("Sweep.plot", "results", key, self.solved.kind.name,
+                raise arguments.unknown_result("Sweep.plot", "results", key, self.solved.kind.name,
                                       self.results)
         keys = shown_results(self.solved, asked or None)
         return _drawn(lambda target, fmt: sweep_plot(self.solved, keys, target, fmt=fmt,
@@ -370,24 +358,9 @@ class _Svg:
         return self.text
 
 
-#: The formats a chart is drawn in, by the file's suffix.
-_CHART_SUFFIXES = (".png", ".svg")
-
-
 def _drawn(draw: Any, path: str | os.PathLike[str] | None, function: str) -> Any:
     if path is not None:
-        if not isinstance(path, (str, os.PathLike)):
-            raise ArgumentError(function, "path", f"a file's path ending in .png or .svg, or "
-                                f"None for the SVG a notebook shows, got "
-                                f"{arguments.describe(path)}")
-        target = Path(path)
-        if target.suffix.lower() not in _CHART_SUFFIXES:
-            raise ArgumentError(function, "path", f"{str(path)!r}: a chart is a .png or .svg "
-                                "file; end the name in one of them")
-        if target.is_dir() or not target.parent.is_dir():
-            what = "is a folder" if target.is_dir() else "is in no folder that exists"
-            raise ArgumentError(function, "path", f"{str(path)!r} {what}; give a file in an "
-                                "existing folder")
+        target = arguments.chart_path(path, function)
         with target.open("wb") as stream:
             draw(stream, target.suffix[1:].lower())
         return target

@@ -184,3 +184,33 @@ def whole_number(value: Any, function: str, argument: str, low: int,
     if number < low or (high is not None and number > high):
         raise ArgumentError(function, argument, f"{wanted}, got {number:,}")
     return number
+
+
+def unknown_result(function: str, argument: str, key: Any, kind: str,
+                   known: Mapping[str, Any]) -> ArgumentError:
+    """The error of ``key``, which is no result of ``known`` (a spec of ``kind``)."""
+    if not isinstance(key, str):
+        return ArgumentError(function, argument, f"a result's key is a text, like "
+                             f"{next(iter(known))!r}, got {describe(key)}")
+    return ArgumentError(function, argument, f"{key!r} is not a result of this {kind} spec"
+                         f"{did_you_mean(key, known)}; choose from {', '.join(known)}")
+
+
+#: The formats a chart is drawn in, by the file's suffix.
+CHART_SUFFIXES = (".png", ".svg")
+
+
+def chart_path(path: Any, function: str) -> Path:
+    """A chart's ``path``: a .png or .svg file in a folder that exists."""
+    if not isinstance(path, (str, os.PathLike)):
+        raise ArgumentError(function, "path", f"a file's path ending in .png or .svg, or None "
+                            f"for the SVG a notebook shows, got {describe(path)}")
+    target = Path(path)
+    if target.suffix.lower() not in CHART_SUFFIXES:
+        raise ArgumentError(function, "path", f"{str(path)!r}: a chart is a .png or .svg file; "
+                            "end the name in one of them")
+    if target.is_dir() or not target.parent.is_dir():
+        what = "is a folder" if target.is_dir() else "is in no folder that exists"
+        raise ArgumentError(function, "path", f"{str(path)!r} {what}; give a file in an "
+                            "existing folder")
+    return target

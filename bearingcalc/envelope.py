@@ -8,6 +8,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from bearingcalc.catalogue.catalogue import Catalogue, CatalogueRow
+from bearingcalc.catalogue.designation import normal_form
 from bearingcalc.catalogue.fill import TYPE_ALIASES
 from bearingcalc.catalogue.reader import ROW_TYPES
 from bearingcalc.errors import SpecError
@@ -153,4 +154,4 @@ def _in_series(row: CatalogueRow, series: Sequence[str]) -> bool:
     if row.parsed is None:
         return False
     own, filed = row.parsed.basic[:-2].upper(), row.parsed.iso_key[:-2].upper()
-    return any(name.upper() in (own, filed) for name in series)
+    return any(normal_form(name).upper() in (own, filed) for name in series)

@@ -175,7 +175,7 @@ def test_a_utf16_catalogue_is_named_so(tmp_path, cli):
     text = EXAMPLE_CATALOGUE.read_text(encoding="utf-8")
     run = cli("solve", catalogue_spec(tmp_path, text.encode("utf-16")))
     assert run.code == 2 and "bearings.csv: the file is UTF-16 (little-endian, with a " \
-        "byte-order mark) text: save the catalogue as UTF-8" in run.err, run.err
+        "byte-order mark) text; save the catalogue as UTF-8" in run.err, run.err
 
 
 def test_binary_and_latin1_files_keep_their_messages(tmp_path, cli):
@@ -350,3 +350,10 @@ def test_select_gives_the_warnings_solve_gives_for_the_rows_it_lists(tmp_path, c
     assert unchecked in selection["notes"]
     table = " ".join(cli("select", shaft, "--top", "20").out.split())
     assert " ".join(f"note: {unchecked}".split()) in table
+
+
+def test_a_full_width_series_selects_the_series_it_reads_as(cli):
+    ascii_run = cli("select", CATALOGUE_SPEC, "--series", "62", "--format", "json")
+    wide_run = cli("select", CATALOGUE_SPEC, "--series", "６２", "--format", "json")
+    assert ascii_run.code == wide_run.code and '"6206"' in ascii_run.out
+    assert ascii_run.out == wide_run.out

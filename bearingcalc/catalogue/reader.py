@@ -21,7 +21,7 @@ from pathlib import Path
 from bearingcalc.catalogue.columns import COLUMNS, REQUIRED, Column
 from bearingcalc.core.rolling_bearing import TYPES
 from bearingcalc.errors import SpecError
-from bearingcalc.models.yaml_loader import wide_encoding
+from bearingcalc.models.spec_files import refuse_wide_text
 from bearingcalc.number_grammar import NUMBER
 from bearingcalc.units import DIMENSIONLESS, UnitError, parse_quantity
 from bearingcalc.wording import did_you_mean
@@ -180,10 +180,7 @@ def _text(path: Path, source: str) -> str:
     if len(raw) > MAX_FILE_BYTES:
         raise SpecError(f"file too large: catalogues are at most {MAX_FILE_BYTES // 2**20} MiB",
                         source=source)
-    encoding = wide_encoding(raw)
-    if encoding is not None:
-        raise SpecError(f"the file is {encoding} text: save the catalogue as UTF-8 (CSV UTF-8)",
-                        source=source)
+    refuse_wide_text(raw, source, "save the catalogue as UTF-8 (CSV UTF-8)")
     try:
         return raw.decode("utf-8-sig")
     except UnicodeDecodeError as error:
