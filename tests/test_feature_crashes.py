@@ -159,3 +159,14 @@ def test_induced_axial_factor_still_sets_r_on_an_adjusted_shaft(cli, spec_file):
     results = record["results"]
     assert np.isclose(results["pinion_bearing_1_induced_axial_load"],
                       0.25 * results["pinion_bearing_1_radial_load"], rtol=1e-12)
+
+
+def test_a_drive_sweeps_its_static_safety_limit(cli):
+    """The limit is one of the numbers a sweep makes an array: the margin follows it."""
+    run = cli("sweep", ROOT / "specs" / "bevel-drive.yaml", "--vary",
+              "limits.min_static_safety=1:2:3", "--format", "json")
+    assert run.code in (0, 1), run.err
+    points = [json.loads(line) for line in run.out.splitlines()]
+    margins = [point["results"]["static_safety_margin"] for point in points]
+    assert len(margins) == 3
+    assert np.allclose(np.diff(margins), -0.5, rtol=1e-12)
