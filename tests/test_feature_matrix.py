@@ -16,10 +16,16 @@ import math
 import re
 from pathlib import Path
 
+import numpy as np
 import pytest
+from pydantic import BaseModel
 from typer.testing import CliRunner
 
 from bearingcalc.cli import app
+from bearingcalc.errors import SpecError
+from bearingcalc.evaluation import parse_document
+from bearingcalc.models.yaml_loader import load_documents
+from bearingcalc.variation import with_values
 from tests.conftest import Run
 from tests.feature_matrix import (
     ARRANGEMENTS,
@@ -168,3 +174,44 @@ def test_a_sample_through_tolerance_sweep_report_and_select(checked, tmp_path, c
             if run.code in (0, 1) and command != "report":
                 for line in run.out.splitlines():
                     assert _finite(json.loads(line)), (command, case.name, line)
+
+
+#: One case in this many has every number of its spec varied as an array.
+SAMPLE_VARIED = 20
+
+
+def _numbers(model: BaseModel, prefix: str = "") -> list[tuple[str, float]]:
+    """Every number of a spec by its dotted path (list items from 1), as --vary names it."""
+    found = []
+    for name in type(model).model_fields:
+        value = getattr(model, name)
+        items = list(enumerate(value, 1)) if isinstance(value, list) else [(None, value)]
+        for i, item in items:
+            path = f"{prefix}{name}" + ("" if i is None else f".{i}")
+            if isinstance(item, BaseModel):
+                found += _numbers(item, f"{path}.")
+            elif isinstance(item, (int, float)) and not isinstance(item, bool):
+                found.append((path, float(item)))
+    return found
+
+
+def test_every_number_of_a_sample_varies_as_an_array(matrix):
+    """Sweeps and tolerance studies put an array in place of a field and solve all its
+    values at once: no number of any combination may meet a test that takes one value
+    (the solvers' and the models' alike), whatever the result (status codes judge it)."""
+    varied = 0
+    for case in CASES:
+        if not case.sampled(SAMPLE_VARIED):
+            continue
+        (document,) = load_documents(matrix / f"{case.name}.yaml")
+        try:
+            kind, spec = parse_document(document)
+        except SpecError:
+            continue
+        for path, value in _numbers(spec):
+            values = np.array([0.9, 1.0, 1.1]) * value if value else np.array([0.0, 0.1, 0.2])
+            _, status = kind.evaluate(with_values(spec, {path: values}).solver_inputs())
+            # one status per value, or one for all where the field feeds no solver (a width)
+            assert np.size(status) in (1, 3), (case.name, path)
+            varied += 1
+    assert varied > 500

@@ -286,7 +286,9 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
                       kind="rolling-bearing", radial_load=radial, axial_load=axial, speed=speed,
                       reliability=self.reliability, lubrication=self.lubrication,
                       contamination_factor=self.contamination_factor,
-                      limits=BallBearingLimits(min_static_safety=self.limits.min_static_safety))
+                      # unvalidated, as the rest: a study may make the limit an array
+                      limits=BallBearingLimits.model_construct(
+                          min_static_safety=self.limits.min_static_safety))
         return BallBearingSpec.model_construct(**fields)
 
     def _bearing_under_load(self, shaft: str, bearing: DriveBearing) -> BallBearingSpec:

@@ -145,7 +145,9 @@ class DutyCycleRules:
         assert self.duty_cycle is not None
         written = self._as_written()
         inputs = _over_bins([view.solver_inputs() for view in _standing_in(written)])
-        inputs["duty_time"] = np.array([item.time for item in self.duty_cycle])
+        # a study may vary a bin's share as it varies any number: broadcast the bins'
+        inputs["duty_time"] = np.stack(np.broadcast_arrays(
+            *(np.asarray(item.time, dtype=float) for item in self.duty_cycle)))
         inputs["duty_speed"] = np.stack(np.broadcast_arrays(*map(_speed, written)))
         return _bins_first(inputs, _design_rank(inputs))
 
