@@ -311,3 +311,16 @@ def test_the_solver_s_fit_reason_quotes_no_value_of_the_count() -> None:
     reasons = KINDS["rolling-bearing"].status_reasons
     fits = [why for field, why in reasons.values() if "do not fit" in why]
     assert fits and all(isinstance(why, DerivedTest) for why in fits)
+
+
+@pytest.mark.parametrize(("pitch", "fits"), [("31.5 mm", False), ("39.5 mm", True),
+                                              ("46 mm", True), ("52.5 mm", True),
+                                              ("60.5 mm", False)])
+def test_the_rollers_lie_between_the_rings(pitch: str, fits: bool) -> None:
+    # 9 mm rollers in rings of 30 and 62 mm: the pitch circle from 39 to 53 mm.
+    text = with_fields(CYLINDRICAL, pitch_diameter=pitch, bore_diameter="30 mm",
+                       outside_diameter="62 mm")
+    if fits:
+        solved(text)
+    else:
+        assert "pitch circle lies nearer" in refused(text, "pitch_diameter")

@@ -144,6 +144,35 @@ class ElementFitRules(_ReadsElements):
                               at="width")
 
     @rule
+    def _elements_within_the_rings(self) -> SpecFieldError | None:
+        """A radial bearing's elements between bore and outside diameter where they sit:
+        d < Dpw − D·cosα and Dpw + D·cosα < D_outside (D the element's diameter), not
+        merely smaller than the section."""
+        envelope = self._envelope_mm()
+        diameter = self.roller_diameter if self.rollers else self.ball_diameter
+        if envelope is None or diameter is None or self.pitch_diameter is None or (
+                self.type in THRUST_ROLLER_TYPES or self.type in ("thrust", "thrust-ball")):
+            return None
+        bore, outside = envelope
+        pitch = self.pitch_diameter * 1e3
+        across = diameter * 1e3 * (math.cos(self.angle) if self.rollers else 1.0)
+        if not (pitch > across and bore < pitch < outside) or (
+                across >= (outside - bore) / 2):
+            return None  # said by the pitch circle's and the section's rules
+        element = "roller" if self.rollers else "ball"
+        if pitch - across <= bore:
+            return SpecFieldError("pitch_diameter", f"the {element}s on {pitch:g} mm reach "
+                                  f"down to {pitch - across:.4g} mm, into the bore "
+                                  f"({bore:g} mm): the pitch circle lies nearer the rings' "
+                                  f"mean, {(bore + outside) / 2:g} mm")
+        if pitch + across >= outside:
+            return SpecFieldError("pitch_diameter", f"the {element}s on {pitch:g} mm reach "
+                                  f"out to {pitch + across:.4g} mm, past the outside "
+                                  f"diameter ({outside:g} mm): the pitch circle lies nearer "
+                                  f"the rings' mean, {(bore + outside) / 2:g} mm")
+        return None
+
+    @rule
     def _thrust_rollers_in_section(self) -> SpecFieldError | None:
         """A thrust roller's length lies across the washers: Lwe·sinα within the section
         (D − d)/2."""
