@@ -87,7 +87,13 @@ GROUPS: dict[str, tuple[str, ...]] = {
 }
 
 WARNINGS: dict[str, str] = {
-    key: ball_bearing.WARNINGS[key] for key in ("kappa_capped", "aiso_capped")}
+    **{key: ball_bearing.WARNINGS[key] for key in ("kappa_capped", "aiso_capped")},
+    "contact_ellipse_truncated": "the most heavily loaded roller's contact ellipse is longer "
+                                 "than the roller (its semi-major axis exceeds Lwe/2): the "
+                                 "contact reaches the roller's ends, where Hertz's point "
+                                 "contact understates the pressure; check raceway_radius "
+                                 "against roller_profile_radius",
+}
 
 _CONTACT_TOO_WIDE = ("the most heavily loaded roller's contact is not narrow against the "
                      "roller (its half-width exceeds Dwe/4), so Hertz theory does not hold: "
@@ -110,9 +116,9 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
     22: ("radial_load", _CONTACT_TOO_WIDE),
     23: ("axial_load", _CONTACT_TOO_WIDE),
     24: ("raceway_radius", DerivedTest(
-        "the most heavily loaded roller's contact ellipse is longer than the roller (its "
-        "semi-major axis exceeds Lwe/2), so the crowned point contact of Hertz does not "
-        "hold: raceway_radius is too close to roller_profile_radius (a spherical roller "
+        "the most heavily loaded roller's contact ellipse is more than twice the roller's "
+        "length (its semi-major axis exceeds Lwe), so the crowned point contact of Hertz "
+        "does not hold: raceway_radius is too close to roller_profile_radius (a spherical roller "
         "bearing's raceway radius is a few per cent larger), or the load too high")),
 }
 
@@ -168,7 +174,8 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
                    static_safety_factor=s0,
                    static_safety_margin=s0 - np.asarray(inputs["min_static_safety"]))
     if has_geometry:
-        _contacts(inputs, bearing_type, thrust, arrangement, rows, alpha, fa, p0, out, bad)
+        _contacts(inputs, bearing_type, thrust, arrangement, rows, alpha, fa, p0, out, flags,
+                  bad)
         out.update(roller_kinematics(z, dwe, dpw, alpha, inputs["inner_speed"],
                                      inputs["outer_speed"], thrust))
     return Solution(*packed(RESULTS, out, flags, bad))
@@ -196,8 +203,10 @@ def _equivalent_dynamic_load(inputs: Mapping[str, ArrayLike | str | None], beari
 
 def _contacts(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str, thrust: bool,
               arrangement: str, rows: NDArray, alpha: NDArray, fa: NDArray, p0: NDArray,
-              out: dict[str, ArrayLike], bad: list[tuple[int, ArrayLike]]) -> None:
-    """The most heavily loaded roller's line (or, crowned, point) contacts."""
+              out: dict[str, ArrayLike], flags: dict[str, ArrayLike],
+              bad: list[tuple[int, ArrayLike]]) -> None:
+    """The most heavily loaded roller's line (or, crowned, point) contacts; a crowned
+    roller's ellipse on its length: refused past 2·Lwe, a warning past Lwe."""
     sets = rows * (2.0 if arrangement in PAIRS else 1.0)
     load = max_roller_load(fa if thrust else p0, inputs["roller_count"], sets, alpha, thrust)
     spherical = bearing_type in ("spherical-roller", "thrust-spherical-roller")
@@ -213,10 +222,12 @@ def _contacts(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str, t
                         contacts["outer_contact_half_width"])
     bad.append((23 if thrust else 22,
                 ~(widest <= np.asarray(inputs["roller_diameter"], dtype=float) / 4.0)))
-    if "inner_contact_semi_major" in contacts:  # a crowned roller's ellipse within its length
+    if "inner_contact_semi_major" in contacts:  # a crowned roller's ellipse on its length
         longest = np.maximum(contacts["inner_contact_semi_major"],
                              contacts["outer_contact_semi_major"])
-        bad.append((24, ~(longest <= np.asarray(inputs["roller_length"], dtype=float) / 2.0)))
+        length = np.asarray(inputs["roller_length"], dtype=float)
+        bad.append((24, ~(longest <= length)))
+        flags["contact_ellipse_truncated"] = longest > length / 2.0
 
 
 def _given(value: ArrayLike | None) -> NDArray | None:

@@ -225,17 +225,22 @@ class DutyCycleRules:
                 return SpecFieldError(f"duty_cycle.{k}.time", f"bin {self.bin_label(k)} is at "
                                       "rest, where a power gives no torque: give the bin's "
                                       "torque, like 120 N*m")
-        if not _turns(written):
-            return SpecFieldError("duty_cycle", "every bin is at rest: the life needs a bin "
-                                  "that turns (a bin at zero speed counts for the static "
-                                  "safety only)")
+        if not _turns(written, [item.time for item in bins]):
+            at_rest = all(not _turns([view], [1.0]) for view in written)
+            return SpecFieldError("duty_cycle", ("every bin is at rest" if at_rest else
+                                                 "every bin that turns has 0 % of the time")
+                                  + ": the life needs a bin that turns for a share of the "
+                                  "time above 0 (a bin at zero speed, or of 0 %, counts for "
+                                  "the static safety only)")
         return None
 
 
-def _turns(views: list[Any]) -> bool:
-    """Whether a bin turns (or leaves its speed out: the kind's rules judge that)."""
-    return any(view.turning_speed() is None
-               or np.any(np.asarray(view.turning_speed(), dtype=float) != 0) for view in views)
+def _turns(views: list[Any], times: list[float]) -> bool:
+    """Whether a bin turns for a share of the time (or leaves its speed out: the kind's
+    rules judge that)."""
+    return any(time > 0 and (view.turning_speed() is None
+                             or np.any(np.asarray(view.turning_speed(), dtype=float) != 0))
+               for view, time in zip(views, times, strict=True))
 
 
 def _standing_in(views: list[Any]) -> list[Any]:

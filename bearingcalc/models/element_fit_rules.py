@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
+from bearingcalc.core import iso281, roller_ratings
 from bearingcalc.core.common import FIT_SLACK
 from bearingcalc.core.roller_ratings import THRUST_ROLLER_TYPES
 from bearingcalc.errors import SpecFieldError
@@ -71,10 +72,39 @@ class ElementFitRules(_ReadsElements):
             return None
         most = math.floor(math.pi * (1.0 + FIT_SLACK) / half_angle)
         symbol = "Dwe" if self.rollers else "Dw"
-        return SpecFieldError(f"{element}_count", f"{count} {element}s of {diameter * 1e3:g} "
-                              f"mm do not fit on the pitch circle of {pitch * 1e3:g} mm: "  # type: ignore[operator]
-                              f"Z·asin({symbol}/Dpw) = {fill:.4g} must be at most π = "
-                              f"{math.pi:.4g}, so at most {most} {element}s")
+        return SpecFieldError(f"{element}_count", f"the {element}s do not fit on the pitch "
+                              f"circle: {count} of {diameter * 1e3:g} mm on {pitch * 1e3:g} mm "  # type: ignore[operator]
+                              f"give Z·asin({symbol}/Dpw) = {fill:.4g}, above π = "
+                              f"{math.pi:.4g} (at most {most} fit)")
+
+    @rule
+    def _size_ratio_in_tables(self) -> SpecFieldError | None:
+        """γ = D·cosα/Dpw (a thrust ball bearing's Dw/Dpw) within ISO 281's fc table that
+        rates the bearing: of ball bearings whenever their geometry is given, of radial
+        roller bearings where C comes from it."""
+        if self.rollers:
+            if self.type in THRUST_ROLLER_TYPES or self.dynamic_load_rating is not None:
+                return None
+            diameter, field = self.roller_diameter, "roller_diameter"
+            table, what = roller_ratings.RADIAL_FC_GAMMA, "Dwe·cosα/Dpw"
+            which = "of radial roller bearings (Table 7)"
+        else:
+            thrust = self.type in ("thrust", "thrust-ball")
+            diameter, field = self.ball_diameter, "ball_diameter"
+            table = iso281.THRUST_FC_GAMMA if thrust else iso281.RADIAL_FC_GAMMA
+            what = "Dw/Dpw" if thrust else "Dw·cosα/Dpw"
+            which = "of thrust ball bearings" if thrust else "of radial ball bearings"
+        pitch = self.pitch_diameter
+        if diameter is None or pitch is None or not self.has_geometry or not diameter < pitch:
+            return None
+        gamma = diameter * (1.0 if what == "Dw/Dpw" else math.cos(self.angle)) / pitch
+        low, high = float(table[0]), float(table[-1])
+        if low <= gamma <= high:
+            return None
+        return SpecFieldError(field, f"γ = {what} = {gamma:.4g} is outside ISO 281's fc table "
+                              f"{which}, {low:g} to {high:g}: the {field.split('_')[0]} is "
+                              f"too {'small' if gamma < low else 'large'} for the pitch "
+                              f"circle of {pitch * 1e3:g} mm")
 
     @rule
     def _elements_in_width(self) -> SpecFieldError | None:
@@ -112,6 +142,35 @@ class ElementFitRules(_ReadsElements):
                               f"the bearing's width {width * 1e3:g} mm: {rows} within the "
                               f"rings' width, and {what} = {extent * 1e3:.4g} mm",
                               at="width")
+
+    @rule
+    def _elements_within_the_rings(self) -> SpecFieldError | None:
+        """A radial bearing's elements between bore and outside diameter where they sit:
+        d < Dpw − D·cosα and Dpw + D·cosα < D_outside (D the element's diameter), not
+        merely smaller than the section."""
+        envelope = self._envelope_mm()
+        diameter = self.roller_diameter if self.rollers else self.ball_diameter
+        if envelope is None or diameter is None or self.pitch_diameter is None or (
+                self.type in THRUST_ROLLER_TYPES or self.type in ("thrust", "thrust-ball")):
+            return None
+        bore, outside = envelope
+        pitch = self.pitch_diameter * 1e3
+        across = diameter * 1e3 * (math.cos(self.angle) if self.rollers else 1.0)
+        if not (pitch > across and bore < pitch < outside) or (
+                across >= (outside - bore) / 2):
+            return None  # said by the pitch circle's and the section's rules
+        element = "roller" if self.rollers else "ball"
+        if pitch - across <= bore:
+            return SpecFieldError("pitch_diameter", f"the {element}s on {pitch:g} mm reach "
+                                  f"down to {pitch - across:.4g} mm, into the bore "
+                                  f"({bore:g} mm): the pitch circle lies nearer the rings' "
+                                  f"mean, {(bore + outside) / 2:g} mm")
+        if pitch + across >= outside:
+            return SpecFieldError("pitch_diameter", f"the {element}s on {pitch:g} mm reach "
+                                  f"out to {pitch + across:.4g} mm, past the outside "
+                                  f"diameter ({outside:g} mm): the pitch circle lies nearer "
+                                  f"the rings' mean, {(bore + outside) / 2:g} mm")
+        return None
 
     @rule
     def _thrust_rollers_in_section(self) -> SpecFieldError | None:

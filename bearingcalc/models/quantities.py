@@ -142,8 +142,15 @@ _NUMBER_AND_UNIT = re.compile(rf"(?P<number>{NUMBER})\s*(?P<unit>.+)")
 #: below 100 m. Positions may be zero, so they have no lower end.
 PLAUSIBLE_LENGTH = Plausible(1e-6, 100.0, "1 µm to 100 m", ("mm", "m", "µm"))
 PLAUSIBLE_POSITION = Plausible(0.0, 100.0, "up to 100 m", ("mm", "m"))
-#: Loads up to 10⁹ N (10⁶ kN, the largest slewing bearings carry a few 10⁷ N).
-PLAUSIBLE_FORCE = Plausible(0.0, 1e9, "up to 10⁶ kN", ("N", "kN"))
+#: Loads from a micronewton (a hair's weight is some 10 µN; below it the lives' powers of
+#: C/P leave double precision) up to 10⁹ N (10⁶ kN, the largest slewing bearings carry a
+#: few 10⁷ N).
+PLAUSIBLE_FORCE = Plausible(1e-6, 1e9, "1 µN to 10⁶ kN", ("N", "kN"))
+#: Stresses and pressure limits from a kilopascal to 10⁶ MPa (steels' contact limits are
+#: near 4000 MPa).
+PLAUSIBLE_STRESS = Plausible(1e3, 1e12, "1 kPa to 10⁶ MPa", ("MPa", "GPa", "Pa"))
+#: Times from a millisecond to 10⁹ hours (required lives are 10² to 10⁶ h).
+PLAUSIBLE_TIME = Plausible(1e-3, 3.6e12, "1 ms to 10⁹ h", ("h", "s"))
 #: Speeds up to 10⁶ rpm (turbomachinery and dental drills stay well below).
 PLAUSIBLE_SPEED = Plausible(0.0, 1e6 * math.pi / 30.0, "up to 10⁶ rpm", ("rpm",))
 #: Kinematic viscosities up to 10⁶ mm²/s (heavy gear oils are near 10⁴ mm²/s cold).
@@ -311,9 +318,9 @@ AngularSpeed = quantity(ANGULAR_SPEED, plausible=PLAUSIBLE_SPEED)
 AngularAccel = quantity(ANGULAR_ACCEL)
 Force = quantity(FORCE, "non-negative", plausible=PLAUSIBLE_FORCE)
 PositiveForce = quantity(FORCE, "positive", plausible=PLAUSIBLE_FORCE)
-PositiveStress = quantity(STRESS, "positive")
+PositiveStress = quantity(STRESS, "positive", plausible=PLAUSIBLE_STRESS)
 ElasticModulus = quantity(STRESS, "positive", plausible=PLAUSIBLE_MODULUS)
-PositiveTime = quantity(TIME, "positive")
+PositiveTime = quantity(TIME, "positive", plausible=PLAUSIBLE_TIME)
 PositiveViscosity = quantity(KINEMATIC_VISCOSITY, "positive", plausible=PLAUSIBLE_VISCOSITY)
 Temperature = quantity(TEMPERATURE, "positive")
 PositiveDensity = quantity(DENSITY, "positive")

@@ -79,6 +79,17 @@ class RollerRules(_ReadsRollerBearing):
                               at="designation")
 
     @rule
+    def _straight_rollers_loaded_radially(self) -> SpecFieldError | None:
+        """ISO 281 rates a cylindrical or needle roller bearing on P = Fr: its ribs carry
+        an axial load, but not into the life."""
+        if self.type not in STRAIGHT_ROLLER_TYPES or self.radial_load > 0 or not (
+                self.axial_load > 0):
+            return None
+        return SpecFieldError("radial_load", f"a {self.type} bearing's life counts only the "
+                              "radial load (P = Fr), and it is zero: give the radial load, "
+                              "like 5 kN; a thrust bearing carries an axial load alone")
+
+    @rule
     def _family_fields(self) -> list[SpecFieldError]:
         """Each family's fields on its own types only, naming the field that fits."""
         given = self.model_fields_set
