@@ -19,7 +19,7 @@ import typer
 from typer.core import TyperCommand, TyperGroup
 
 from bearingcalc import reads
-from bearingcalc.errors import SpecError
+from bearingcalc.errors import OptionError, SpecError
 from bearingcalc.output import StagedFiles, Target, check_targets, reason
 from bearingcalc.wording import printable
 
@@ -51,15 +51,16 @@ def output_target(output: Path | None, holds: str, suffix: str) -> Target | None
 def check_plot_name(plot: Path | None) -> None:
     """Refuse a ``--plot`` that names neither a PNG nor an SVG file."""
     if plot is not None and plot.suffix.lower() not in (".png", ".svg"):
-        raise SpecError("--plot: give a .png or .svg file name", source=str(plot))
+        raise OptionError("--plot", f"{str(plot)!r}: give a .png or .svg file name",
+                          source=str(plot))
 
 
 def check_parquet_output(spec_path: Path, output: Path | None) -> None:
     """Refuse Parquet output without a file to write or without pyarrow, the optional
     extra that writes it."""
     if output is None:
-        raise SpecError("--format parquet writes a file: give --output grid.parquet",
-                        source=str(spec_path))
+        raise OptionError("--format", "parquet writes a file: give --output grid.parquet",
+                          source=str(spec_path))
     try:
         import pyarrow  # noqa: F401
     except ImportError:
@@ -153,6 +154,34 @@ def with_progress(work: Callable[[Callable[[int], None] | None], T], total: int 
         return work(tick)
 
 
+def bad_option(option: str, message: str) -> Exception:
+    """The usage error of a bad value of the running command's ``option`` (like
+    ``--vary``, or an argument's metavar ``KIND``), said as the parser says its own:
+    ``bearingcalc sweep: Invalid value for '--vary' / '-v': MESSAGE (see 'bearingcalc
+    sweep -h')`` (:class:`OneLineUsageErrors`)."""
+    context = _current_context()
+    params = context.command.params if context is not None else []
+    param = next((p for p in params if option in p.opts or option == p.metavar), None)
+    hint = None if param is not None else f"'{option}'"
+    return typer.BadParameter(message, ctx=context, param=param, param_hint=hint)
+
+
+def _current_context() -> Any:
+    """The running command's context, from the click that typer runs on: its own copy
+    in newer typer, click itself in older."""
+    import importlib
+
+    for name in ("typer._click.globals", "click.globals"):
+        try:
+            module = importlib.import_module(name)
+        except ImportError:
+            continue
+        context = module.get_current_context(silent=True)
+        if context is not None:
+            return context
+    return None
+
+
 def print_error(error: Exception) -> None:
     """``error`` on stderr: a spec's problems one per line, anything else as one line."""
     lines = error.lines() if isinstance(error, SpecError) else [f"error: {error}"]
@@ -208,6 +237,8 @@ class errors_as_exit:
         if isinstance(exc, StdoutError):
             print(f"cannot write the output: {exc}", file=sys.stderr)
             raise typer.Exit(EXIT_INVALID)
+        if isinstance(exc, OptionError):
+            raise bad_option(exc.option, exc.message) from None
         if self.debug:
             traceback.print_exception(exc)
         if isinstance(exc, SpecError):

@@ -11,7 +11,7 @@ from bearingcalc.catalogue.catalogue import Catalogue, CatalogueRow
 from bearingcalc.catalogue.designation import normal_form
 from bearingcalc.catalogue.fill import TYPE_ALIASES
 from bearingcalc.catalogue.reader import ROW_TYPES
-from bearingcalc.errors import SpecError
+from bearingcalc.errors import OptionError, SpecError
 from bearingcalc.models.bevel_drive import THRUST_TYPES
 from bearingcalc.models.field_path import FieldPath
 from bearingcalc.models.yaml_loader import Document
@@ -37,20 +37,20 @@ class Envelope:
 def envelope_from_options(types: Sequence[str], series: Sequence[str],
                           max_outside_diameter: str | None, max_width: str | None
                           ) -> Envelope:
-    """The envelope of ``select``'s options; ValueError naming the option at fault."""
+    """The envelope of ``select``'s options; an OptionError naming the option at fault."""
     for name in types:
         if TYPE_ALIASES.get(name, name) not in ROW_TYPES:
-            raise ValueError(f"--type {name!r}: not a bearing type{did_you_mean(name, ROW_TYPES)};"
-                             f" one of {', '.join(ROW_TYPES)}")
+            raise OptionError("--type", f"{name!r}: not a bearing type"
+                              f"{did_you_mean(name, ROW_TYPES)}; one of {', '.join(ROW_TYPES)}")
     bounds = []
     for option, text in (("--max-outside-diameter", max_outside_diameter),
                          ("--max-width", max_width)):
         try:
             value = None if text is None else parse_quantity(text, LENGTH)
         except UnitError as error:
-            raise ValueError(f"{option}: {error}") from None
+            raise OptionError(option, str(error)) from None
         if value is not None and not value > 0:
-            raise ValueError(f"{option}: must be greater than zero, like '62 mm'")
+            raise OptionError(option, f"{text!r} must be greater than zero, like '62 mm'")
         bounds.append(value)
     return Envelope(tuple(types), tuple(s.strip() for s in series), bounds[0], bounds[1])
 

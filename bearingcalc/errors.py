@@ -88,3 +88,17 @@ class SpecFieldError(Exception):
         self.at = at
         #: Further problems of the same spec, found by other rules.
         self.more: list[SpecFieldError] = []
+
+
+class OptionError(SpecError):
+    """A bad value of a command's option (``--vary``, ``--max-width``), found by
+    bearingcalc rather than by the command line's parser.
+
+    The command line says it as the parser says its own problems, in one line:
+    ``bearingcalc sweep: Invalid value for '--vary' / '-v': MESSAGE (see 'bearingcalc
+    sweep -h')``. Elsewhere it reads as a SpecError: ``source: --vary: MESSAGE``.
+    """
+
+    def __init__(self, option: str, message: str, *, source: str = "<options>") -> None:
+        super().__init__(message, source=source, field=option)
+        self.option = option

@@ -43,4 +43,5 @@ def tracking() -> Iterator[dict[str, str]]:
     try:
         yield files
     finally:
-        _RUNS.remove(files)
+        # by identity: another run's notes may be equal to these
+        del _RUNS[next(i for i, run in enumerate(_RUNS) if run is files)]

@@ -16,7 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 from pydantic import BaseModel
 
-from bearingcalc.errors import BearingcalcError, SpecError
+from bearingcalc.errors import BearingcalcError, OptionError
 from bearingcalc.kinds import Kind
 from bearingcalc.models.base import Spec, field_parser
 from bearingcalc.models.field_path import NOT_INPUTS, FieldPathError, resolve_field
@@ -28,7 +28,8 @@ MAX_POINTS = 4_000_000
 
 
 class SweepError(BearingcalcError):
-    """A sweep that cannot be run as asked."""
+    """A sweep that cannot be run as asked: a bad ``--vary`` (its message says what,
+    after the option's name)."""
 
 
 @dataclass
@@ -86,23 +87,23 @@ def parse_axis(text: str, spec: Spec) -> Axis:
     """An axis from ``NAME=START:STOP:N`` (START and STOP with units where the field has one)."""
     match = _VARY.match(text)
     if match is None:
-        raise SweepError(f"--vary {text!r}: write NAME=START:STOP:N, like "
+        raise SweepError(f"{text!r}: write NAME=START:STOP:N, like "
                          "contact_angle=5deg:40deg:36")
     name, count = match["name"], int(match["count"])
     if count < 2:
-        raise SweepError(f"--vary {name}: N must be at least 2, got {count}")
+        raise SweepError(f"{name}: N must be at least 2, got {count}")
     if count > MAX_POINTS:  # before any array of that size is built
-        raise SweepError(f"--vary {name}: N = {count} is more than the {MAX_POINTS} points "
+        raise SweepError(f"{name}: N = {count} is more than the {MAX_POINTS} points "
                          "a sweep may have; use fewer")
     name, (kind_of_field, converter, unit) = _number_field(spec, name)
     try:
         start, stop = converter(match["start"].strip()), converter(match["stop"].strip())
     except ValueError as exc:
-        raise SweepError(f"--vary {name}: {exc}") from None
+        raise SweepError(f"{name}: {exc}") from None
     if kind_of_field == "integer":
         values = np.unique(np.round(np.linspace(start, stop, count)).astype(np.int64))
         if len(values) < count:
-            raise SweepError(f"--vary {name}: {name} is a whole number; {start}..{stop} holds "
+            raise SweepError(f"{name}: {name} is a whole number; {start}..{stop} holds "
                              f"only {len(values)} distinct values, ask for at most that many")
         return Axis(name, values, unit, integer=True)
     return Axis(name, np.linspace(start, stop, count), unit)
@@ -115,28 +116,28 @@ def _number_field(spec: Spec, path: str) -> tuple[str, tuple[str, Any, str]]:
     try:
         found = resolve_field(spec, path)
     except FieldPathError as error:
-        raise SweepError(f"--vary {path}: {error}") from None
+        raise SweepError(f"{path}: {error}") from None
     name = found.name
     if found.is_list:
         count = "" if found.value is None else f" of {plural(len(found.value), 'item')}"
         example = _example_field(found.group, None)
-        raise SweepError(f"--vary {name}: {name} is a list{count}, not a number: vary a field "
+        raise SweepError(f"{name}: {name} is a list{count}, not a number: vary a field "
                          f"of one item, like {name}.1.{example}")
     if found.group is not None:
         what = (f"an item of {found.parent}" if found.in_list else "a group of fields")
         inputs = [f for f in found.group.model_fields if f not in NOT_INPUTS]
         example = _example_field(found.group, found.value)
-        raise SweepError(f"--vary {name}: {name} is {what}, not a number: vary one of its "
+        raise SweepError(f"{name}: {name} is {what}, not a number: vary one of its "
                          f"fields, like {name}.{example}; its fields are {', '.join(inputs)}")
     parser = field_parser(found.info) if found.info is not None else None
     if parser is None:
-        raise SweepError(f"--vary {name}: {name} is not a number that can be swept")
+        raise SweepError(f"{name}: {name} is not a number that can be swept")
     if found.left_out is not None and found.left_out != name:
-        raise SweepError(f"--vary {name}: the spec leaves {found.left_out} out (it is "
+        raise SweepError(f"{name}: the spec leaves {found.left_out} out (it is "
                          f"optional and not given); give {found.left_out} in the spec to "
                          f"sweep {name}")
     if found.value is None:
-        raise SweepError(f"--vary {name}: the spec leaves {name} out (it is solved, or "
+        raise SweepError(f"{name}: the spec leaves {name} out (it is solved, or "
                          "optional and not given); give it a value in the spec to sweep it")
     return name, parser
 
@@ -163,7 +164,7 @@ def check_axes(document: Document, axes: list[Axis]) -> None:
         if error is not None:
             at = ", ".join(f"{name} = {value}" for name, value in written.items())
             what = f"{error.field}: {error.message}" if error.field else error.message
-            raise SweepError(f"--vary: the spec is invalid at {at}: {what}")
+            raise SweepError(f"the spec is invalid at {at}: {what}")
 
 
 def _as_written(axis: Axis, value: Any) -> Any:
@@ -175,9 +176,9 @@ def _as_written(axis: Axis, value: Any) -> Any:
 def run_sweep(kind: Kind, spec: Spec, source: str, axes: list[Axis]) -> Sweep:
     """Solve every point of the line or grid spanned by ``axes`` in one call."""
     if not 1 <= len(axes) <= 2:
-        raise SweepError("give one --vary for a line or two for a grid")
+        raise SweepError("give it once for a line or twice for a grid")
     if len(axes) == 2 and axes[0].name == axes[1].name:
-        raise SweepError(f"--vary {axes[0].name} is given twice")
+        raise SweepError(f"{axes[0].name} is given twice")
     points = int(np.prod([len(axis.values) for axis in axes]))
     if points > MAX_POINTS:
         raise SweepError(f"{points} points is more than {MAX_POINTS}; use fewer")
@@ -205,18 +206,18 @@ def sweep_axes(kind: Kind, spec: Spec, document: Document, vary: list[str]) -> S
 
 
 def sweep_spec(kind: Kind, spec: Spec, document: Document, vary: list[str]) -> Sweep:
-    """:func:`sweep_axes`, a bad axis a :class:`SpecError` of the spec."""
+    """:func:`sweep_axes`, a bad axis an :class:`OptionError` of ``--vary``."""
     try:
         return sweep_axes(kind, spec, document, vary)
     except SweepError as error:
-        raise SpecError(str(error), source=document.source) from None
+        raise OptionError("--vary", str(error), source=document.source) from None
 
 
 def shown_results(solved: Sweep, asked: list[str] | None) -> list[str]:
     """The results a table or chart shows: those asked for, else the kind's governing
     ones and every other limit the sweep crosses (a drive's gear safety where its lives
     hold), so that each edge of the range within limits is a curve that is shown; one the
-    sweep has not is a :class:`SpecError`."""
+    sweep has not is an :class:`OptionError` of ``--result``."""
     keys = asked or [key for key in solved.kind.governing if key in solved.results]
     if not asked:
         for margin in solved.kind.margins:
@@ -230,6 +231,7 @@ def shown_results(solved: Sweep, asked: list[str] | None) -> list[str]:
                 keys.append(shown)
     unknown = [key for key in keys if key not in solved.results]
     if unknown:
-        raise SpecError(f"--result {unknown[0]!r} is not a result of this {solved.kind.name} "
-                        f"spec; choose from {', '.join(solved.results)}", source=solved.source)
+        raise OptionError("--result", f"{unknown[0]!r} is not a result of this "
+                          f"{solved.kind.name} spec; choose from {', '.join(solved.results)}",
+                          source=solved.source)
     return keys

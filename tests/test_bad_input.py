@@ -261,7 +261,7 @@ def test_a_huge_sweep_is_refused_before_anything_is_built(cli):
 
 def test_jobs_are_bounded(cli):
     run = cli("check", GOOD, "-j", "500")
-    assert run.code == 2 and "--jobs 500 is more than" in run.err
+    assert run.code == 2 and "Invalid value for '--jobs' / '-j': 500 is more than" in run.err
 
 
 #: Runs the CLI with one of its work functions wrapped to say "started" on stderr as the
@@ -456,7 +456,7 @@ def test_more_samples_than_sobol_points_are_refused(cli):
 
 def test_an_empty_method_list_is_refused(cli):
     run = cli("tolerance", ROOT / "specs" / "tolerances" / "thrust-bearing.yaml", "-m", " , ")
-    assert run.code == 2 and "--method names no method" in run.err
+    assert run.code == 2 and "'--method' / '-m': names no method" in run.err
 
 
 # --- 10. messages --------------------------------------------------------------------------

@@ -24,11 +24,14 @@ BARE_DRIVE = re.sub(r"^(lubrication|contamination_factor):.*\n", "", BARE_DRIVE,
 
 
 def refused(cli, spec, vary):
-    """The one line of a refused sweep, checked for exit 2 and the field's name."""
+    """The one line of a refused sweep, checked for exit 2, the usage error's form and
+    the field's name."""
     run = cli("sweep", spec, "--vary", vary)
     assert run.code == 2, run.out
     assert run.err.count("\n") == 1, run.err
-    assert run.err.startswith(f"{spec}: --vary {vary.split('=')[0]}: "), run.err
+    assert run.err.startswith(f"root sweep: Invalid value for '--vary' / '-v': "
+                              f"{vary.split('=')[0]}: "), run.err
+    assert run.err.endswith(" (see 'root sweep -h')\n"), run.err
     assert "Traceback" not in run.err and "internal error" not in run.err
     return run.err
 
@@ -112,7 +115,9 @@ def test_leading_zeros_name_the_same_item_as_without(cli):
     assert padded.out.startswith("input.pinion_bearings.1.position [m],")
     twice = cli("sweep", DRIVE, "--vary", "pinion_bearings.01.position=80mm:100mm:3",
                 "--vary", "pinion_bearings.1.position=80mm:100mm:3")
-    assert twice.code == 2 and "--vary pinion_bearings.1.position is given twice" in twice.err
+    assert twice.code == 2 and (
+        "Invalid value for '--vary' / '-v': pinion_bearings.1.position is given twice"
+        in twice.err)
 
 
 def test_resolve_field_names_items_from_one_and_reports_what_is_left_out(spec_file):
@@ -147,4 +152,5 @@ def test_tolerance_takes_no_field_names_from_the_user(cli):
     run = cli("tolerance", ROOT / "specs" / "tolerances" / "bevel-drive.yaml", "--result",
               "pinion_bearings.2", "--method", "worst-case")
     assert run.code == 2 and run.err.count("\n") == 1
-    assert "--result 'pinion_bearings.2' is not a result of this bevel-drive spec" in run.err
+    assert ("Invalid value for '--result' / '-r': 'pinion_bearings.2' is not a result of "
+            "this bevel-drive spec") in run.err

@@ -142,3 +142,24 @@ def test_the_shipped_specs_by_their_absolute_paths_get_a_whole_line_each(cli, mo
     assert len(heads) == len(list((ROOT / "specs").rglob("*.yaml")))
     for head in heads:
         assert head.split("  ")[1].startswith(str(ROOT / "specs")) and ".yaml" in head
+
+
+@pytest.mark.parametrize("command", [
+    ["solve"], ["sweep", "--vary", "radial_load=8kN:10kN:3"], ["select"],
+    ["tolerance", "-m", "rss"]])
+def test_every_report_names_a_long_spec_path_whole(cli, tmp_path, monkeypatch, command):
+    """The heading that names the spec holds its whole path on one line, on a terminal
+    narrower than the path (the terminal folds it; rich never breaks it)."""
+    deep = tmp_path.joinpath("projects", "mechanical-design", "a-rather-long-folder-name")
+    deep.mkdir(parents=True)
+    shutil.copyfile(ROOT / "specs" / "catalogues" / "example.csv", deep / "bearings.csv")
+    text = (ROOT / "specs" / "rolling-bearing-catalogue.yaml").read_text()
+    text = re.sub(r"(?m)^catalogue: .*$", "catalogue: bearings.csv", text)
+    text = re.sub(r"(?m)^radial_load: (\S+ \S+).*$", r"radial_load: \1 ± 0.5 kN", text)
+    spec = deep / "pinion-shaft-bearing-of-the-conveyor-drive.yaml"
+    spec.write_text(text)
+    monkeypatch.setattr(formatting, "PIPE_WIDTH", 40)
+    run = cli(command[0], spec, *command[1:])
+    assert run.code in (0, 1), run.err
+    assert len(str(spec)) > 40
+    assert any(str(spec) in line for line in run.out.splitlines()), run.out

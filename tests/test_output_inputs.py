@@ -184,3 +184,12 @@ def test_reads_are_kept_only_inside_a_run(tmp_path):
         reads.note(tmp_path / "a.yaml", "catalogue")  # the first word for a file stays
         assert reads.noted() == {str(tmp_path / "a.yaml"): "spec"} == files
     assert reads.noted() == {}
+
+
+def test_nested_runs_keep_their_own_notes(tmp_path):
+    with reads.tracking() as outer:
+        with reads.tracking() as inner:
+            assert inner == outer == {}  # equal, yet each its own
+        reads.note(tmp_path / "b.csv", "catalogue")
+        assert reads.noted() == {str(tmp_path / "b.csv"): "catalogue"} == outer
+    assert reads.noted() == {}

@@ -97,8 +97,9 @@ def test_the_envelope_and_the_types_narrow_the_choice(cli, tmp_path):
 
 
 @pytest.mark.parametrize(("options", "words"), [
-    (["--type", "tapered"], "--type 'tapered': not a bearing type (did you mean"),
-    (["--max-width", "17 kg"], "--max-width: 'kg' is not a unit of length"),
+    (["--type", "tapered"], "Invalid value for '--type' / '-t': 'tapered': not a bearing "
+     "type (did you mean"),
+    (["--max-width", "17 kg"], "Invalid value for '--max-width': 'kg' is not a unit of length"),
 ])
 def test_bad_options_are_one_line(cli, tmp_path, options, words):
     run = cli("select", _spec(tmp_path, SHAFT.format(catalogue=EXAMPLE, life="2000 h")),

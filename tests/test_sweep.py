@@ -142,9 +142,10 @@ def test_three_axes_and_unknown_result_are_refused(cli):
     spec = SPECS / "thrust-bearing.yaml"
     run = cli("sweep", spec, "--vary", "contact_angle=5deg:40deg:3", "--vary",
               "pitch_radius=20mm:30mm:3", "--vary", "shaft_speed=1rpm:2rpm:3")
-    assert run.code == 2 and "one --vary for a line or two for a grid" in run.err
+    assert run.code == 2 and ("Invalid value for '--vary' / '-v': give it once for a line or "
+                              "twice for a grid") in run.err
     run = cli("sweep", spec, "--vary", "contact_angle=5deg:40deg:3", "--result", "spin")
-    assert run.code == 2 and "--result 'spin'" in run.err
+    assert run.code == 2 and "Invalid value for '--result' / '-r': 'spin'" in run.err
 
 
 def test_a_failing_run_leaves_an_existing_output_alone(cli, tmp_path):

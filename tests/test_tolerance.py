@@ -399,7 +399,7 @@ def test_bad_tolerance_input_is_one_line_and_exit_2(cli, spec_file, line, fragme
 @pytest.mark.parametrize(("args", "fragment"), [
     (["--method", "exact"], "unknown method 'exact'"),
     (["--sampler", "halton"], "unknown sampler 'halton'"),
-    (["--result", "speed"], "--result 'speed' is not a result"),
+    (["--result", "speed"], "'--result' / '-r': 'speed' is not a result"),
     (["--plot", "x.pdf"], "give a .png or .svg"),
     (["--plot", "x.png", "--method", "rss"], "add monte-carlo"),
 ])

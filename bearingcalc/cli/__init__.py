@@ -29,6 +29,7 @@ from bearingcalc.cli_output import (
     OneLineUsageErrors,
     WordedHelp,
     Writer,
+    bad_option,
     emit,
     errors_as_exit,
     output_target,
@@ -37,7 +38,7 @@ from bearingcalc.cli_output import (
     with_progress,
     write_stdout,
 )
-from bearingcalc.errors import SpecError
+from bearingcalc.errors import OptionError, SpecError
 from bearingcalc.output import StagedFiles
 
 app = typer.Typer(cls=OneLineUsageErrors, add_completion=False, pretty_exceptions_enable=False,
@@ -214,8 +215,7 @@ def schema(
     from bearingcalc.schema import spec_schema
 
     if kind is not None and kind not in KINDS:
-        print(f"error: --kind: {unknown_kind(kind)}", file=sys.stderr)
-        raise typer.Exit(EXIT_INVALID)
+        raise bad_option("--kind", unknown_kind(kind))
     text = json.dumps(spec_schema(kind), indent=2, ensure_ascii=False) + "\n"
     with errors_as_exit(debug=False):
         write_stdout(lambda stream: stream.write(text))
@@ -241,14 +241,12 @@ def new(
     if list_kinds or kind_name is None:
         text = "".join(f"{name:16} {entry.summary}\n" for name, entry in KINDS.items())
     elif kind_name not in KINDS:
-        print(f"error: {unknown_kind(kind_name)}", file=sys.stderr)
-        raise typer.Exit(EXIT_INVALID)
+        raise bad_option("KIND", unknown_kind(kind_name))
     else:
         try:
             text = template_text(kind_name, bearing_type)
         except LookupError as error:
-            print(f"error: --type: {error}", file=sys.stderr)
-            raise typer.Exit(EXIT_INVALID) from None
+            raise bad_option("--type", str(error)) from None
     with errors_as_exit(debug=False):
         write_stdout(lambda stream: stream.write(text))
     if kind_name is None and not list_kinds:
@@ -264,9 +262,8 @@ def _workers(jobs: int | None) -> int:
     cores = os.cpu_count() or 1
     most = MAX_JOBS_PER_CORE * cores
     if jobs is not None and jobs > most:
-        raise SpecError(f"--jobs {jobs} is more than {most} ({MAX_JOBS_PER_CORE} per core on "
-                        f"this machine's {cores}); leave it out to use every core",
-                        source="--jobs")
+        raise OptionError("--jobs", f"{jobs} is more than {most} ({MAX_JOBS_PER_CORE} per "
+                          f"core on this machine's {cores}); leave it out to use every core")
     return jobs or cores
 
 

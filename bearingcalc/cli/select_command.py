@@ -25,7 +25,6 @@ from bearingcalc.cli_output import (
     output_target,
     refuse_unwritable,
 )
-from bearingcalc.errors import SpecError
 from bearingcalc.output import StagedFiles
 
 MAX_TOP = 100
@@ -91,11 +90,8 @@ def select_command(
             SelectFormat.table: ".txt", SelectFormat.json: ".jsonl",
             SelectFormat.csv: ".csv"}[output_format])
         refuse_unwritable("select", [batch.spec_file(spec_path)], target)
-        try:
-            envelope = envelope_from_options(bearing_type or [], series or [],
-                                             max_outside_diameter, max_width)
-        except ValueError as error:
-            raise SpecError(str(error), source="select") from None
+        envelope = envelope_from_options(bearing_type or [], series or [],
+                                         max_outside_diameter, max_width)
         selection = select_spec(spec_path, envelope, top)
         writers: dict[SelectFormat, Writer] = {
             SelectFormat.table: lambda stream: print_select_table(selection, stream),

@@ -34,7 +34,7 @@ from bearingcalc.cli_output import (
     stage_plot,
     with_progress,
 )
-from bearingcalc.errors import SpecError
+from bearingcalc.errors import OptionError, SpecError
 from bearingcalc.output import StagedFiles
 
 
@@ -106,8 +106,8 @@ def tolerance(
         methods = [m.strip() for m in method.split(",") if m.strip()]
         check_plot_name(plot)
         if plot is not None and "monte-carlo" not in methods:
-            raise SpecError("--plot draws the Monte Carlo histogram: add monte-carlo to "
-                            "--method", source=str(plot))
+            raise OptionError("--plot", "draws the Monte Carlo histogram: add monte-carlo to "
+                              "--method", source=str(plot))
         table_or_json = output_target(
             output, "report", ".json" if output_format is StudyFormat.json else ".txt")
         histogram = plot_target(plot)
@@ -123,6 +123,8 @@ def tolerance(
                 progress=tick), total=samples if "monte-carlo" in methods else None,
                 label="Monte Carlo")
         except StudyError as error:
+            if error.option is not None:
+                raise OptionError(error.option, error.message, source=document.source) from None
             raise SpecError(str(error), source=document.source) from None
 
         writers: dict[StudyFormat, Writer] = {

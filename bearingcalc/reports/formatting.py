@@ -89,6 +89,13 @@ def numbers_whole(text: Any) -> Any:
     return whole
 
 
+def print_whole(out: Any, text: str) -> None:
+    """Print a line that names a file (a report's heading) whole: rich never breaks it,
+    however long the file's path (a terminal folds a line wider than itself), so that
+    the name reads and copies as it is."""
+    out.print(text, soft_wrap=True)
+
+
 def safe_text(text: str) -> str:
     """Spec-supplied text made safe for a rich table: no control characters, no markup."""
     from rich.markup import escape

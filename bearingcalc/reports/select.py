@@ -9,7 +9,13 @@ from typing import IO, TYPE_CHECKING, Any
 
 from bearingcalc.core.common import MM
 from bearingcalc.reports.csv_cells import Cell, write_csv_rows
-from bearingcalc.reports.formatting import console, format_number, safe_text, verdict_line
+from bearingcalc.reports.formatting import (
+    console,
+    format_number,
+    print_whole,
+    safe_text,
+    verdict_line,
+)
 from bearingcalc.reports.solve import verdict_record
 from bearingcalc.wording import plural, printable
 
@@ -91,10 +97,10 @@ def _print_choice(out: Any, selection: Selection, choice: PositionChoice) -> Non
     from rich.table import Table
 
     where = f", {choice.position}" if choice.position else ""
-    out.print(safe_text(f"{selection.name}  (select, {selection.source}{where})"))
-    out.print(safe_text(f"catalogue {selection.catalogue}: {plural(choice.considered, 'bearing')}"
-                        f" fit the shaft and the envelope, {choice.qualifying_count} meet "
-                        "every limit"))
+    print_whole(out, safe_text(f"{selection.name}  (select, {selection.source}{where})"))
+    print_whole(out, safe_text(f"catalogue {selection.catalogue}: "
+                               f"{plural(choice.considered, 'bearing')} fit the shaft and the "
+                               f"envelope, {choice.qualifying_count} meet every limit"))
     for note in choice.notes:
         out.print(f"[yellow]note[/]: {safe_text(note)}")
     if choice.qualifying:

@@ -8,7 +8,13 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import IO, TYPE_CHECKING, Any
 
 from bearingcalc.reports.csv_cells import write_csv_rows
-from bearingcalc.reports.formatting import console, format_number, safe_text, verdict_line
+from bearingcalc.reports.formatting import (
+    console,
+    format_number,
+    print_whole,
+    safe_text,
+    verdict_line,
+)
 from bearingcalc.units import to_display
 
 if TYPE_CHECKING:  # the report types only; their modules load with their commands
@@ -79,11 +85,13 @@ def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
     out = console(stream)
     for evaluation in evaluations:
         kind = kinds[evaluation.kind]
-        cited = "".join(f"\n{key}: {safe_text(value)}"
-                        for key, value in evaluation.sources.items())
-        table = Table(title=safe_text(f"{evaluation.name}  ({evaluation.kind}, "
-                                      f"{evaluation.source})") + cited,
-                      title_justify="left")
+        # The heading names the spec's file: above the table, whole (not its title,
+        # which wraps to the table's width); the catalogue rows cited wrap as prose.
+        print_whole(out, safe_text(f"{evaluation.name}  ({evaluation.kind}, "
+                                   f"{evaluation.source})"))
+        for key, value in evaluation.sources.items():
+            out.print(f"{key}: {safe_text(value)}")
+        table = Table()
         # Narrow terminals take their room from the meaning, which wraps; a key, a
         # number and a unit are read whole.
         table.add_column("result", no_wrap=True)

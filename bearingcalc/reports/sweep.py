@@ -8,7 +8,7 @@ from typing import IO, TYPE_CHECKING, Any
 
 import numpy as np
 
-from bearingcalc.reports.formatting import console
+from bearingcalc.reports.formatting import console, print_whole
 from bearingcalc.reports.sweep_csv import BLOCK_ROWS, sweep_columns
 from bearingcalc.units import to_display
 from bearingcalc.wording import printable
@@ -84,10 +84,11 @@ def print_sweep_table(sweep: Sweep, keys: Sequence[str], stream: IO[str] | None 
         unit = to_display(0.0, si_unit)[1]
         return escape(f"{name} [{unit}]") if unit else name
 
-    title = printable(f"{sweep.name} ({sweep.kind.name}, {sweep.source})")
+    # The heading names the spec's file: whole, above the table (see print_whole).
+    print_whole(out, escape(printable(f"{sweep.name} ({sweep.kind.name}, {sweep.source})")))
     if len(sweep.axes) == 1:
         axis = sweep.axes[0]
-        table = Table(title=escape(title), title_justify="left")
+        table = Table()
         for header in (label(axis.name, axis.unit), *(label(k, units[k]) for k in keys)):
             table.add_column(header, justify="right")
         gaps = bool(np.any(sweep.status != 0))
@@ -105,7 +106,7 @@ def print_sweep_table(sweep: Sweep, keys: Sequence[str], stream: IO[str] | None 
     values = sweep.results[key].reshape(sweep.shape)
     rows = np.unique(np.linspace(0, len(first.values) - 1, grid_rows).round().astype(int))
     cols = np.unique(np.linspace(0, len(second.values) - 1, grid_columns).round().astype(int))
-    table = Table(title=f"{escape(title)}\n{label(key, units[key])} by "
+    table = Table(title=f"{label(key, units[key])} by "
                   f"{label(first.name, first.unit)} (rows) and {label(second.name, second.unit)}"
                   " (columns); —: impossible design", title_justify="left")
     table.add_column("")

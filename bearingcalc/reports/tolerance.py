@@ -8,7 +8,13 @@ import math
 import re
 from typing import IO, TYPE_CHECKING, Any
 
-from bearingcalc.reports.formatting import console, format_number, safe_text, verdict_line
+from bearingcalc.reports.formatting import (
+    console,
+    format_number,
+    print_whole,
+    safe_text,
+    verdict_line,
+)
 from bearingcalc.units import DIMENSIONS, TEMPERATURE_UNITS, UnitError, unit_scale
 from bearingcalc.units import to_display as si_display
 from bearingcalc.verdicts import Verdict
@@ -36,8 +42,8 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
     def to_display(value: float, si_unit: str, key: str | None = None) -> tuple[float, str]:
         return _as_solve_shows(report, value, si_unit, key)
 
-    out.print(f"[bold]{safe_text(record['name'] or record['spec'])}[/] ({record['kind']}, "
-              f"{safe_text(record['spec'])})")
+    print_whole(out, f"[bold]{safe_text(record['name'] or record['spec'])}[/] "
+                     f"({record['kind']}, {safe_text(record['spec'])})")
     for key, value in record.items():
         if key.endswith("catalogue_source"):
             out.print(f"{key}: {safe_text(value)}")

@@ -57,7 +57,7 @@ def monte_carlo(study: Study, samples: int, seed: int = 0, sampler: str = "sobol
     numpy and scipy.special release the GIL, so the workers run in parallel.
     """
     if samples < 2:
-        raise StudyError("--samples must be at least 2")
+        raise StudyError("must be at least 2", "--samples")
     if chunk % BLOCK:
         raise StudyError(f"the chunk size must be a multiple of {BLOCK}")
     keys = list(keys or study.keys)

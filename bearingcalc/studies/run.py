@@ -94,20 +94,23 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
     governing results); worst case and RSS always cover every result.
     """
     if not methods:
-        raise StudyError(f"--method names no method; use one or more of {', '.join(METHODS)}")
+        raise StudyError(f"names no method; use one or more of {', '.join(METHODS)}",
+                         "--method")
     unknown = [m for m in methods if m not in METHODS]
     if unknown:
-        raise StudyError(f"unknown method {unknown[0]!r}; use {', '.join(METHODS)}")
+        raise StudyError(f"unknown method {unknown[0]!r}; use {', '.join(METHODS)}",
+                         "--method")
     if sampler not in SAMPLERS:
-        raise StudyError(f"unknown sampler {sampler!r}; use {' or '.join(SAMPLERS)}")
+        raise StudyError(f"unknown sampler {sampler!r}; use {' or '.join(SAMPLERS)}",
+                         "--sampler")
     if sampler == "sobol" and "monte-carlo" in methods and samples > SOBOL_MAX_SAMPLES:
-        raise StudyError(f"--samples {samples} is more than the {SOBOL_MAX_SAMPLES} distinct "
-                         "Sobol' points of 30 bits; use --sampler random for more")
+        raise StudyError(f"{samples} is more than the {SOBOL_MAX_SAMPLES} distinct Sobol' "
+                         "points of 30 bits; use --sampler random for more", "--samples")
     study = Study(kind, spec)
     missing = [key for key in results if key not in study.keys]
     if missing:
-        raise StudyError(f"--result {missing[0]!r} is not a result of this {kind.name} spec; "
-                         f"choose from {', '.join(study.keys)}")
+        raise StudyError(f"{missing[0]!r} is not a result of this {kind.name} spec; "
+                         f"choose from {', '.join(study.keys)}", "--result")
     governing = list(results) or [key for key in kind.governing if key in study.keys]
     focus = list(results) or study.keys
     record: dict[str, Any] = {

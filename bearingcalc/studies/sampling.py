@@ -43,7 +43,7 @@ class SampleStream:
             bits.advance(start * d)  # one 64-bit draw per double
             self.generator = np.random.Generator(bits)
         else:
-            raise StudyError(f"unknown sampler {sampler!r}; use sobol or random")
+            raise StudyError(f"unknown sampler {sampler!r}; use sobol or random", "--sampler")
 
     def next(self, count: int) -> NDArray:
         if self.generator is not None:

@@ -29,7 +29,7 @@ def sobol_indices(study: Study, samples: int, seed: int = 0,
     from scipy import stats
 
     if len(study.inputs) < 2:
-        raise StudyError("--sobol needs at least two toleranced inputs")
+        raise StudyError("needs at least two toleranced inputs", "--sobol")
     n = 1 << max(10, min(16, int(math.log2(max(samples, 2)))))
     dists = [_frozen(item.tolerance, stats) for item in study.inputs]
     keys = list(keys or study.keys)

@@ -27,7 +27,14 @@ MAX_CORNER_INPUTS = 14
 
 
 class StudyError(BearingcalcError):
-    """A tolerance study that cannot be run as asked (no tolerances, bad options)."""
+    """A tolerance study that cannot be run as asked (no tolerances, bad options):
+    ``option`` names the option at fault, if one is (``--method``), and ``message`` says
+    what is wrong with its value."""
+
+    def __init__(self, message: str, option: str | None = None) -> None:
+        super().__init__(f"{option}: {message}" if option else message)
+        self.message = message
+        self.option = option
 
 
 def check_band_ends(document: Document, spec: SpecModel) -> None:
