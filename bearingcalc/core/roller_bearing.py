@@ -137,8 +137,10 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
     if has_geometry:
         z_a, dwe_a, lwe_a, dpw_a = (np.asarray(v, dtype=float) for v in (z, dwe, lwe, dpw))
         bad += [(16, ~(dwe_a < dpw_a)), (17, ~balls_fit(z_a, dwe_a / dpw_a))]
+        drawn_cup = inputs.get("drawn_cup")
         c_iso, fc = roller_dynamic_load_rating(z_a, dwe_a, lwe_a, dpw_a, alpha, rows,
-                                               bearing_type=bearing_type)
+                                               bearing_type=bearing_type,
+                                               drawn_cup=drawn_cup is not None and drawn_cup)
         c0_iso = roller_static_load_rating(z_a, dwe_a, lwe_a, dpw_a, alpha, rows,
                                            thrust=thrust)
         if c is None:

@@ -29,6 +29,8 @@ MATERIAL_FACTOR = {
     "spherical-roller": 1.15, "thrust-cylindrical-roller": 1.0,
     "thrust-tapered-roller": 1.1, "thrust-spherical-roller": 1.15,
 }
+#: ISO 281:2007 Table 1: bm of a drawn-cup needle roller bearing (a sheet-metal outer ring).
+DRAWN_CUP_MATERIAL_FACTOR = 1.0
 
 #: ISO 281:2007 Table 7: fc of radial roller bearings against γ = Dwe·cosα/Dpw, at every
 #: hundredth from 0.01 to 0.30 as the standard prints it (linear between rows).
@@ -64,7 +66,8 @@ E_PER_TAN_ALPHA = 1.5
 def roller_dynamic_load_rating(roller_count: ArrayLike, roller_diameter: ArrayLike,
                                roller_length: ArrayLike, pitch_diameter: ArrayLike,
                                contact_angle: ArrayLike, rows: ArrayLike = 1, *,
-                               bearing_type: str) -> tuple[NDArray, NDArray]:
+                               bearing_type: str, drawn_cup: ArrayLike = False
+                               ) -> tuple[NDArray, NDArray]:
     r"""Basic dynamic load rating C of a roller bearing, and its fc.
 
     .. math:: C_r = b_m f_c (i L_{we} \cos\alpha)^{7/9} Z^{3/4} D_{we}^{29/27}
@@ -91,6 +94,7 @@ def roller_dynamic_load_rating(roller_count: ArrayLike, roller_diameter: ArrayLi
     contact_angle : α. [rad]
     rows : i, the rows of rollers (of a thrust bearing: loaded in one direction). [1]
     bearing_type : one of :data:`RADIAL_ROLLER_TYPES` or :data:`THRUST_ROLLER_TYPES`.
+    drawn_cup : a drawn-cup needle roller bearing, bm = 1.0 (Table 1). [bool]
 
     Returns
     -------
@@ -109,7 +113,8 @@ def roller_dynamic_load_rating(roller_count: ArrayLike, roller_diameter: ArrayLi
     lwe = np.asarray(roller_length, dtype=float) * MM
     dpw = np.asarray(pitch_diameter, dtype=float) * MM
     alpha = np.asarray(contact_angle, dtype=float)
-    bm = MATERIAL_FACTOR[bearing_type]
+    bm = np.where(np.asarray(drawn_cup, dtype=bool) & (bearing_type == "needle-roller"),
+                  DRAWN_CUP_MATERIAL_FACTOR, MATERIAL_FACTOR[bearing_type])
     cos_alpha = np.cos(alpha)
     common = z ** 0.75 * dwe ** (29.0 / 27.0)
     if bearing_type in RADIAL_ROLLER_TYPES:
