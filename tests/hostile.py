@@ -476,9 +476,9 @@ def _roller_cases() -> dict[str, str]:
         "rolling-thrust-radial-90.yaml": thrust.replace("thrust-spherical-roller",
                                                         "thrust-cylindrical-roller")
         .replace("contact_angle: 50 deg", ""),
-        "rolling-thrust-geometry-only.yaml": re.sub(r"(dynamic|static)_load_rating: .*\n", "",
-                                                    thrust)
-        + "roller_count: 20\nroller_diameter: 12 mm\nroller_length: 14 mm\n",
+        "rolling-thrust-beyond-table-10.yaml": re.sub(r"(dynamic|static)_load_rating: .*\n",
+                                                      "", thrust)
+        + "roller_count: 6\nroller_diameter: 40 mm\nroller_length: 14 mm\n",
         "rolling-factors-single-on-pair.yaml": tapered + "arrangement: back-to-back\n"
         + "load_factors: {e: 0.37, y: 1.6}\n",
         "rolling-contact-too-wide.yaml": _mutate(tapered, "radial_load", "5e8 N"),

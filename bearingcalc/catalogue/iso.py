@@ -20,7 +20,7 @@ TABLE = "iso_boundary_dimensions.csv"
 @dataclass(frozen=True)
 class IsoDimensions:
     """One designation's boundary dimensions [m]: width is B (radial), T (tapered) or
-    H (thrust); r_min the smallest chamfer r_s min."""
+    H (thrust); r_min the chamfer r_s min (of a tapered bearing, the cone's)."""
 
     designation: str
     type: str

@@ -47,7 +47,7 @@ RESULTS: dict[str, tuple[str, str]] = {
     "static_load_rating_iso": ("N", "C0 from the geometry (ISO 76)"),
     "pair_dynamic_load_rating": ("N", "C of the matched pair, used for the life"),
     "pair_static_load_rating": ("N", "C0 of the matched pair, used for s0"),
-    "rating_factor": ("1", "fc (ISO 281 Table 2 or 4; roller bearings Table 7)"),
+    "rating_factor": ("1", "fc (ISO 281 Table 2 or 4; roller bearings Table 7, thrust 10)"),
     "static_rating_factor": ("1", "f0 used"),
     "fatigue_load_limit": ("N", "Cu used"),
     "radial_factor": ("1", "X applied"),

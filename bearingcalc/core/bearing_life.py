@@ -31,6 +31,44 @@ def operating_point(inputs: Mapping[str, ArrayLike | str | None]
                  for key in ("contact_angle", "radial_load", "axial_load", "speed"))
 
 
+#: The largest aISO that κ = 1 may give a lubricant with EP additives (ISO 281 9.3.3.3.4).
+EP_ADDITIVES_AISO_CAP = 3.0
+#: The least eC at which the EP additives' κ = 1 may be taken.
+EP_ADDITIVES_MIN_CONTAMINATION = 0.2
+
+
+def with_ep_additives(a_iso: NDArray, ep_additives: ArrayLike, kappa: NDArray,
+                      contamination_factor: ArrayLike, fatigue_load_limit: ArrayLike,
+                      equivalent_load: ArrayLike, thrust: bool, family: Family) -> NDArray:
+    r"""aISO of a lubricant with proven effective EP additives.
+
+    Where κ < 1 and eC >= 0.2, κ = 1 may be used; aISO is then limited to 3, but not
+    below the value with the actual κ:
+
+    .. math:: a_{ISO,EP} = \max\left(\min\left(a_{ISO}(\kappa = 1), 3\right),
+              a_{ISO}(\kappa)\right)
+
+    elsewhere aISO(κ).
+
+    Parameters
+    ----------
+    a_iso : aISO at the actual κ. [1]
+    ep_additives : where the lubricant has them. [bool]
+    kappa : κ, capped. [1]
+    contamination_factor, fatigue_load_limit, equivalent_load : eC [1], Cu, P [N].
+    thrust, family : as :func:`bearingcalc.core.iso281.life_modification_factor`.
+
+    Source: ISO 281:2007, 9.3.3.3.4 (GOST 18855-2013, the same clause).
+    """
+    e_c = np.asarray(contamination_factor, dtype=float)
+    applies = (np.asarray(ep_additives, dtype=bool) & (kappa < 1.0)
+               & (e_c >= EP_ADDITIVES_MIN_CONTAMINATION))
+    at_one = life_modification_factor(np.ones_like(kappa), e_c, fatigue_load_limit,
+                                      equivalent_load, thrust, family=family)
+    return np.where(applies, np.maximum(np.minimum(at_one, EP_ADDITIVES_AISO_CAP), a_iso),
+                    a_iso)
+
+
 def rating_life(inputs: Mapping[str, ArrayLike | str | None], thrust: bool, speed: NDArray,
                 c: NDArray | None, c0: NDArray | None, p: NDArray,
                 out: dict[str, ArrayLike], flags: dict[str, ArrayLike],
@@ -74,6 +112,9 @@ def rating_life(inputs: Mapping[str, ArrayLike | str | None], thrust: bool, spee
             cu = 2.0 * np.asarray(cu, dtype=float)
         a_iso = life_modification_factor(kappa, inputs["contamination_factor"], cu, p, thrust,
                                          family=family)
+        if inputs.get("ep_additives") is not None:
+            a_iso = with_ep_additives(a_iso, inputs["ep_additives"], kappa,
+                                      inputs["contamination_factor"], cu, p, thrust, family)
         flags["aiso_capped"] = a_iso >= AISO_CAP
         out.update({"fatigue_load_limit": cu, "reference_viscosity": nu1,
                     "operating_viscosity": nu, "viscosity_ratio": kappa})

@@ -29,7 +29,6 @@ from bearingcalc.core.roller_bearing_contacts import (
 from bearingcalc.core.roller_ratings import (
     RADIAL_ROLLER_TYPES,
     STRAIGHT_ROLLER_TYPES,
-    THRUST_FC,
     THRUST_ROLLER_TYPES,
     roller_dynamic_load_rating,
     roller_equivalent_dynamic_load,
@@ -106,8 +105,10 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
                             "(Dwe < Dpw)"),
     17: ("roller_count", DerivedTest("the rollers do not fit on the pitch circle: "
                                      "Z·asin(Dwe/Dpw) must be <= π")),
-    18: ("roller_diameter", DerivedTest("γ = Dwe·cosα/Dpw is outside ISO 281's fc table of "
-                                        "roller bearings")),
+    18: ("roller_diameter", DerivedTest(
+        "γ = Dwe·cosα/Dpw (Dwe/Dpw at α = 90°) is outside ISO 281's fc table of roller "
+        "bearings (Table 7: 0.01 to 0.30; Table 10 of thrust bearings: to 0.30 at 90°, "
+        "0.26, 0.20 or 0.15 below): give dynamic_load_rating from the catalogue")),
     19: ("contact_angle", "must be from 0 deg to 45 deg for a radial roller bearing, and "
                           "above 45 deg up to 90 deg for a thrust roller bearing"),
     20: ("axial_load", "a thrust roller bearing with α < 90° needs Fa/Fr > e = 1.5·tanα "
@@ -147,15 +148,16 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
     if has_geometry:
         z_a, dwe_a, lwe_a, dpw_a = (np.asarray(v, dtype=float) for v in (z, dwe, lwe, dpw))
         bad += [(16, ~(dwe_a < dpw_a)), (17, ~balls_fit(z_a, dwe_a / dpw_a))]
+        drawn_cup = inputs.get("drawn_cup")
         c_iso, fc = roller_dynamic_load_rating(z_a, dwe_a, lwe_a, dpw_a, alpha, rows,
-                                               bearing_type=bearing_type)
+                                               bearing_type=bearing_type,
+                                               drawn_cup=drawn_cup is not None and drawn_cup)
         c0_iso = roller_static_load_rating(z_a, dwe_a, lwe_a, dpw_a, alpha, rows,
                                            thrust=thrust)
         if c is None:
             bad.append((18, np.isnan(fc)))
-        out["static_load_rating_iso"] = c0_iso
-        if not (thrust and THRUST_FC is None):  # no thrust fc table: C from the catalogue
-            out.update(dynamic_load_rating_iso=c_iso, rating_factor=fc)
+        out.update(static_load_rating_iso=c0_iso, dynamic_load_rating_iso=c_iso,
+                   rating_factor=fc)
         c = c_iso if c is None else c
         c0 = c0_iso if c0 is None else c0
     out["dynamic_load_rating"] = c

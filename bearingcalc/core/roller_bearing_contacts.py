@@ -18,7 +18,7 @@ def max_roller_load(static_equivalent_load: ArrayLike, roller_count: ArrayLike,
     r"""Load Q of the most heavily loaded roller.
 
     .. math:: Q = \frac{5 P_0}{i Z \cos\alpha} \ \text{(radial)}, \qquad
-              Q = \frac{F_a}{Z \sin\alpha} \ \text{(thrust)}
+              Q = \frac{F_a}{i Z \sin\alpha} \ \text{(thrust)}
 
     Stribeck's share for radial bearings, the basis of ISO 76's C0; an equal share of
     the axial load for thrust bearings.
@@ -37,7 +37,7 @@ def max_roller_load(static_equivalent_load: ArrayLike, roller_count: ArrayLike,
     p0 = np.asarray(static_equivalent_load, dtype=float)
     z = np.asarray(roller_count, dtype=float)
     if thrust:
-        return p0 / (z * np.sin(alpha))
+        return p0 / (np.asarray(rows, dtype=float) * z * np.sin(alpha))
     return 5.0 * p0 / (np.asarray(rows, dtype=float) * z * np.cos(alpha))
 
 

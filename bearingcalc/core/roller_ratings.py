@@ -29,16 +29,35 @@ MATERIAL_FACTOR = {
     "spherical-roller": 1.15, "thrust-cylindrical-roller": 1.0,
     "thrust-tapered-roller": 1.1, "thrust-spherical-roller": 1.15,
 }
+#: ISO 281:2007 Table 1: bm of a drawn-cup needle roller bearing (a sheet-metal outer ring).
+DRAWN_CUP_MATERIAL_FACTOR = 1.0
 
-#: ISO 281:2007 Table 7: fc of radial roller bearings against γ = Dwe·cosα/Dpw.
-RADIAL_FC_GAMMA = np.array([0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.09, 0.10,
-                            0.12, 0.14, 0.16, 0.18, 0.20, 0.22, 0.24, 0.26, 0.28, 0.30])
+#: ISO 281:2007 Table 7: fc of radial roller bearings against γ = Dwe·cosα/Dpw, at every
+#: hundredth from 0.01 to 0.30 as the standard prints it (linear between rows).
+RADIAL_FC_GAMMA = np.round(np.arange(1, 31) * 0.01, 2)
 RADIAL_FC = np.array([52.1, 60.8, 66.5, 70.7, 74.1, 76.9, 79.2, 81.2, 82.8, 84.2,
-                      86.4, 87.7, 88.5, 88.8, 88.7, 88.2, 87.5, 86.4, 85.2, 83.8])
-#: ISO 281:2007's table of fc for thrust roller bearings, α = 90°, against γ = Dwe/Dpw;
-#: None while no two sources of it agree (the ratings then come from the catalogue).
-THRUST_FC_GAMMA: NDArray | None = None
-THRUST_FC: NDArray | None = None
+                      85.4, 86.4, 87.1, 87.7, 88.2, 88.5, 88.7, 88.8, 88.8, 88.7,
+                      88.5, 88.2, 87.9, 87.5, 87.0, 86.4, 85.8, 85.2, 84.5, 83.8])
+#: ISO 281:2007 Table 10: fc of thrust roller bearings. At α = 90° against
+#: γ = Dwe/Dpw, 0.01 to 0.30; below 90° against γ = Dwe·cosα/Dpw in three columns, for
+#: 45° < α < 60° (to 0.26), 60° <= α < 75° (to 0.20) and 75° <= α < 90° (to 0.15).
+THRUST_FC_GAMMA = np.round(np.arange(1, 31) * 0.01, 2)
+THRUST_FC = np.array([105.4, 122.9, 134.5, 143.4, 150.7, 156.9, 162.4, 167.2, 171.7, 175.7,
+                      179.5, 183.0, 186.3, 189.4, 192.3, 195.1, 197.7, 200.3, 202.7, 205.0,
+                      207.2, 209.4, 211.5, 213.5, 215.4, 217.3, 219.1, 220.9, 222.7, 224.3])
+#: The columns below 90°: (the smallest α of the column [rad], fc from γ = 0.01 on).
+THRUST_FC_ANGLED = (
+    (np.radians(45.0), np.array([
+        109.7, 127.8, 139.5, 148.3, 155.2, 160.9, 165.6, 169.5, 172.8, 175.5, 177.8, 179.7,
+        181.1, 182.3, 183.1, 183.7, 184.0, 184.1, 184.0, 183.7, 183.2, 182.6, 181.8, 180.9,
+        179.8, 178.7])),
+    (np.radians(60.0), np.array([
+        107.1, 124.7, 136.2, 144.7, 151.5, 157.0, 161.6, 165.5, 168.7, 171.4, 173.6, 175.4,
+        176.8, 177.9, 178.8, 179.3, 179.6, 179.7, 179.6, 179.3])),
+    (np.radians(75.0), np.array([
+        105.6, 123.0, 134.3, 142.8, 149.4, 154.9, 159.4, 163.2, 166.4, 169.0, 171.2, 173.0,
+        174.4, 175.5, 176.3])),
+)
 
 #: ISO 281's limit of Fa/Fr between the two sets of X and Y is e = 1.5·tanα.
 E_PER_TAN_ALPHA = 1.5
@@ -47,7 +66,8 @@ E_PER_TAN_ALPHA = 1.5
 def roller_dynamic_load_rating(roller_count: ArrayLike, roller_diameter: ArrayLike,
                                roller_length: ArrayLike, pitch_diameter: ArrayLike,
                                contact_angle: ArrayLike, rows: ArrayLike = 1, *,
-                               bearing_type: str) -> tuple[NDArray, NDArray]:
+                               bearing_type: str, drawn_cup: ArrayLike = False
+                               ) -> tuple[NDArray, NDArray]:
     r"""Basic dynamic load rating C of a roller bearing, and its fc.
 
     .. math:: C_r = b_m f_c (i L_{we} \cos\alpha)^{7/9} Z^{3/4} D_{we}^{29/27}
@@ -59,7 +79,11 @@ def roller_dynamic_load_rating(roller_count: ArrayLike, roller_diameter: ArrayLi
               \ (\alpha \ne 90°), \qquad b_m f_c L_{we}^{7/9} Z^{3/4} D_{we}^{29/27}
               \ (\alpha = 90°)
 
-    with C in N and lengths in mm, bm from Table 1.
+    with fc from Table 10 (:func:`thrust_rating_factor`), C in N and lengths in mm, bm
+    from Table 1. A thrust bearing of i equal rows of Z rollers (each row's own raceway
+    contact) is rated by ISO 281's rule for rows,
+    Ca = (Σ Zk·Lwek)·[Σ (Zk·Lwek/Cak)^(9/2)]^(−2/9), which for equal rows is
+    i^(7/9)·Ca1: Lwe becomes i·Lwe in the formula, as i·Lwe in the radial one.
 
     Parameters
     ----------
@@ -68,27 +92,29 @@ def roller_dynamic_load_rating(roller_count: ArrayLike, roller_diameter: ArrayLi
     roller_length : Lwe, the effective contact length. [m]
     pitch_diameter : Dpw. [m]
     contact_angle : α. [rad]
-    rows : i (radial bearings). [1]
+    rows : i, the rows of rollers (of a thrust bearing: loaded in one direction). [1]
     bearing_type : one of :data:`RADIAL_ROLLER_TYPES` or :data:`THRUST_ROLLER_TYPES`.
+    drawn_cup : a drawn-cup needle roller bearing, bm = 1.0 (Table 1). [bool]
 
     Returns
     -------
-    (C [N], fc [1]); NaN where γ is outside the table (thrust bearings: always, while
-    the thrust table is not entered).
+    (C [N], fc [1]); NaN where γ is outside the table.
 
-    Source: ISO 281:2007, 7.1 and 8.1 (Table 1, bm; Table 7, fc).
+    Source: ISO 281:2007, 7.1 and 8.1 (Table 1, bm; Table 7 and Table 10, fc; 8.1.2,
+    rows).
 
     >>> c, fc = roller_dynamic_load_rating(14, 11e-3, 11e-3, 64e-3, 0.0,
     ...                                    bearing_type="cylindrical-roller")
     >>> round(float(fc), 3), round(float(c))
-    (88.678, 59884)
+    (88.719, 59911)
     """
     z = np.asarray(roller_count, dtype=float)
     dwe = np.asarray(roller_diameter, dtype=float) * MM
     lwe = np.asarray(roller_length, dtype=float) * MM
     dpw = np.asarray(pitch_diameter, dtype=float) * MM
     alpha = np.asarray(contact_angle, dtype=float)
-    bm = MATERIAL_FACTOR[bearing_type]
+    bm = np.where(np.asarray(drawn_cup, dtype=bool) & (bearing_type == "needle-roller"),
+                  DRAWN_CUP_MATERIAL_FACTOR, MATERIAL_FACTOR[bearing_type])
     cos_alpha = np.cos(alpha)
     common = z ** 0.75 * dwe ** (29.0 / 27.0)
     if bearing_type in RADIAL_ROLLER_TYPES:
@@ -96,14 +122,41 @@ def roller_dynamic_load_rating(roller_count: ArrayLike, roller_diameter: ArrayLi
         rating = bm * fc * (np.asarray(rows, dtype=float) * lwe * cos_alpha) ** (7.0 / 9.0)
         return rating * common * NEWTON, fc
     right = np.isclose(alpha, np.pi / 2, rtol=0.0, atol=1e-12)
-    gamma = np.where(right, dwe, dwe * cos_alpha) / dpw
-    if THRUST_FC is None or THRUST_FC_GAMMA is None:
-        fc = np.full(np.shape(gamma), np.nan)
-    else:
-        fc = table_lookup(gamma, THRUST_FC_GAMMA, THRUST_FC)
-    length = np.where(right, lwe ** (7.0 / 9.0),
-                      (lwe * cos_alpha) ** (7.0 / 9.0) * np.tan(alpha))
+    fc = thrust_rating_factor(np.where(right, dwe, dwe * cos_alpha) / dpw, alpha)
+    # i equal rows of Z rollers each: ISO 281's rule for rows, Ca = i^(7/9)·Ca1
+    length = np.where(right, 1.0, cos_alpha ** (7.0 / 9.0) * np.tan(alpha)) * (
+        np.asarray(rows, dtype=float) * lwe) ** (7.0 / 9.0)
     return bm * fc * length * common * NEWTON, fc
+
+
+def thrust_rating_factor(gamma: ArrayLike, contact_angle: ArrayLike) -> NDArray:
+    r"""fc of a thrust roller bearing, ISO 281:2007 Table 10, linear between its rows.
+
+    At α = 90° the column of γ = Dwe/Dpw (0.01 to 0.30); below, against
+    γ = Dwe·cosα/Dpw, the column of 45° < α < 60° (to 0.26), of 60° <= α < 75° (to 0.20)
+    or of 75° <= α < 90° (to 0.15).
+
+    Parameters
+    ----------
+    gamma : γ, as above for each α. [1]
+    contact_angle : α, above 45° to 90°. [rad]
+
+    Returns
+    -------
+    fc [1]; NaN outside the column.
+
+    Source: ISO 281:2007, 8.1.1, Table 10 (GOST 18855-2013, Table 10).
+    """
+    gamma = np.asarray(gamma, dtype=float)
+    alpha = np.asarray(contact_angle, dtype=float)
+    fc = np.full(np.broadcast_shapes(gamma.shape, alpha.shape), np.nan)
+    for lowest, column in THRUST_FC_ANGLED:  # from the lowest column up
+        in_column = alpha > lowest + 1e-12 if lowest <= np.pi / 4 + 1e-12 else (
+            alpha >= lowest - 1e-12)
+        fc = np.where(in_column, table_lookup(gamma, THRUST_FC_GAMMA[:column.size], column),
+                      fc)
+    right = np.isclose(alpha, np.pi / 2, rtol=0.0, atol=1e-12)
+    return np.where(right, table_lookup(gamma, THRUST_FC_GAMMA, THRUST_FC), fc)
 
 
 class RollerLoad(NamedTuple):
@@ -195,7 +248,8 @@ def roller_static_load_rating(roller_count: ArrayLike, roller_diameter: ArrayLik
               Z L_{we} D_{we} \sin\alpha \ (\alpha \ne 90°), \qquad 220 Z L_{we} D_{we}
               \ (\alpha = 90°)
 
-    with C0 in N and lengths in mm.
+    with C0 in N and lengths in mm; a thrust bearing of i equal rows has i·Z rollers
+    (ISO 76 sums Zk·Lwek over the rows loaded in one direction).
 
     Parameters
     ----------
@@ -224,7 +278,7 @@ def roller_static_load_rating(roller_count: ArrayLike, roller_diameter: ArrayLik
                 * lwe * dwe * cos_alpha * NEWTON)
     right = np.isclose(alpha, np.pi / 2, rtol=0.0, atol=1e-12)
     return 220.0 * np.where(right, 1.0, (1.0 - dwe * cos_alpha / dpw) * np.sin(alpha)) \
-        * z * lwe * dwe * NEWTON
+        * np.asarray(rows, dtype=float) * z * lwe * dwe * NEWTON
 
 
 def roller_static_equivalent_load(radial_load: ArrayLike, axial_load: ArrayLike,

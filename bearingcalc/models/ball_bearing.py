@@ -141,6 +141,8 @@ class BearingFields(SpecModel):
     roller_length: PositiveLength | None = Field(None, description="Lwe, the effective "
                                                  "contact length")
     rows: RollerRows = Field(1, description="i, the rows of rollers")
+    drawn_cup: bool = Field(False, description="a drawn-cup needle roller bearing (outer "
+                            "ring drawn from sheet): bm = 1.0, ISO 281 Table 1")
     roller_profile_radius: PositiveLength | None = Field(
         None, description="a spherical roller's crown radius")
     raceway_radius: PositiveLength | None = Field(
@@ -157,6 +159,14 @@ class BearingFields(SpecModel):
     outer_groove_conformity: Conformity | None = Field(
         None, description="fo = outer groove radius / Dw (> 0.5)")
     material: ElasticMaterial = ElasticMaterial()
+
+    @rule
+    def _drawn_cup_needles(self) -> SpecFieldError | None:
+        if self.drawn_cup and self.type != "needle-roller":
+            return SpecFieldError("drawn_cup", f"a drawn cup is a needle roller bearing's "
+                                  f"outer ring: use type: needle-roller, or leave drawn_cup "
+                                  f"out of a {self.type} bearing")
+        return None
 
     @rule
     def _maker_of_a_designation(self) -> SpecFieldError | None:
@@ -334,6 +344,7 @@ class BallBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, RollerRules,
             "viscosity_40": lubrication.viscosity_40 if lubrication else None,
             "viscosity_100": lubrication.viscosity_100 if lubrication else None,
             "temperature": lubrication.temperature if lubrication else None,
+            "ep_additives": lubrication.ep_additives if lubrication else False,
             "contamination_factor": self.contamination_factor,
             "load_x": factors.x if factors else None,
             "load_y": factors.y if factors else None,
@@ -366,5 +377,6 @@ class BallBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, RollerRules,
         spherical = self.type in ("spherical-roller", "thrust-spherical-roller")
         return {"roller_count": self.roller_count, "roller_diameter": self.roller_diameter,
                 "roller_length": self.roller_length, "rows": self.rows,
+                "drawn_cup": self.drawn_cup,
                 "roller_profile_radius": self.roller_profile_radius if spherical else None,
                 "raceway_radius": self.raceway_radius if spherical else None}

@@ -27,6 +27,9 @@ class Lubrication(SpecModel):
     viscosity_40: PositiveViscosity | None = Field(None, description="ν at 40 °C")
     viscosity_100: PositiveViscosity | None = Field(None, description="ν at 100 °C")
     temperature: Temperature | None = Field(None, description="operating temperature")
+    ep_additives: bool = Field(False, description="a lubricant with proven effective EP "
+                               "additives: below κ = 1, with eC >= 0.2, aISO takes κ = 1, "
+                               "at most 3 (ISO 281 9.3.3.3.4)")
 
     @rule
     def _one_form(self) -> SpecFieldError | None:

@@ -12,7 +12,6 @@ from bearingcalc.catalogue.designation import parse_designation
 from bearingcalc.core.roller_ratings import (
     RADIAL_ROLLER_TYPES,
     STRAIGHT_ROLLER_TYPES,
-    THRUST_FC,
     THRUST_ROLLER_TYPES,
 )
 from bearingcalc.errors import SpecFieldError
@@ -168,11 +167,6 @@ class RollerRules(_ReadsRollerBearing):
                 return None
             return SpecFieldError(missing[0], f"the roller geometry is incomplete: give "
                                   f"{', '.join(missing)} too, or leave the geometry out")
-        if self.type in THRUST_ROLLER_TYPES and THRUST_FC is None:
-            return SpecFieldError("dynamic_load_rating", "missing: a thrust roller bearing "
-                                  "takes its ratings from the catalogue, like 186 kN: "
-                                  "ISO 281's fc table for thrust roller bearings is not built "
-                                  "in (see docs/kinds/rolling-bearing.md)")
         if missing:
             return SpecFieldError(missing[0], f"missing: give dynamic_load_rating (C from the "
                                   f"catalogue), or the roller geometry: "
