@@ -40,6 +40,8 @@ class Axis:
     values: NDArray
     unit: str
     integer: bool = False
+    #: START and STOP as the user wrote them ('50deg'), for messages
+    written: tuple[str, str] | None = None
 
 
 @dataclass
@@ -100,13 +102,14 @@ def parse_axis(text: str, spec: Spec) -> Axis:
         start, stop = converter(match["start"].strip()), converter(match["stop"].strip())
     except ValueError as exc:
         raise SweepError(f"{name}: {exc}") from None
+    written = (match["start"].strip(), match["stop"].strip())
     if kind_of_field == "integer":
         values = np.unique(np.round(np.linspace(start, stop, count)).astype(np.int64))
         if len(values) < count:
             raise SweepError(f"{name}: {name} is a whole number; {start}..{stop} holds "
                              f"only {len(values)} distinct values, ask for at most that many")
-        return Axis(name, values, unit, integer=True)
-    return Axis(name, np.linspace(start, stop, count), unit)
+        return Axis(name, values, unit, integer=True, written=written)
+    return Axis(name, np.linspace(start, stop, count), unit, written=written)
 
 
 def _number_field(spec: Spec, path: str) -> tuple[str, tuple[str, Any, str]]:
@@ -162,9 +165,17 @@ def check_axes(document: Document, axes: list[Axis]) -> None:
                    for axis, i in zip(axes, corner, strict=True)}
         error = invalid_at(document, written)
         if error is not None:
-            at = ", ".join(f"{name} = {value}" for name, value in written.items())
+            at = ", ".join(f"{axis.name} = {_bound_as_written(axis, i)}"
+                           for axis, i in zip(axes, corner, strict=True))
             what = f"{error.field}: {error.message}" if error.field else error.message
             raise SweepError(f"the spec is invalid at {at}: {what}")
+
+
+def _bound_as_written(axis: Axis, index: int) -> str:
+    """The sweep's START (``index`` 0) or STOP as the user wrote it."""
+    if axis.written is not None:
+        return axis.written[0 if index == 0 else 1]
+    return str(_as_written(axis, axis.values[index]))
 
 
 def _as_written(axis: Axis, value: Any) -> Any:

@@ -518,6 +518,7 @@ def roller_cases() -> dict[str, Case]:
         with_(tsr, radial_load="60 kN", axial_load="10 kN"), "error", ["axial_load"]
     )
     c["tsr_rows_two"] = solve_case(with_(tsr, rows=2), "error", ["rows"])
+    # rated from its geometry by ISO 281 (Table 10's fc), so it solves
     c["tsr_no_dynamic_rating"] = solve_case(
         with_(
             tsr,
@@ -527,8 +528,7 @@ def roller_cases() -> dict[str, Case]:
             roller_length="20 mm",
             pitch_diameter="95 mm",
         ),
-        "error",
-        ["dynamic_load_rating"],
+        "ok",
     )
     c["thrust_cyl_with_angle"] = solve_case(
         with_(tsr, type="thrust-cylindrical-roller", contact_angle="80 deg", radial_load="0 kN"),
@@ -940,8 +940,15 @@ def duty_cases() -> dict[str, Case]:
     c["duty_bin_viscosity_without_spec_viscosity"] = solve_case(
         nested(db, "duty_cycle.2.viscosity", "30 mm^2/s"), "error", ["duty_cycle.2.viscosity"]
     )
+    # a bin's ring speeds replace the spec's speed (as a bin's torque a spec's power)
     c["duty_bin_inner_speed_vs_speed"] = solve_case(
-        nested(db, "duty_cycle.2.inner_speed", "1500 rpm"), "error", ["duty_cycle.2.inner_speed"]
+        nested(db, "duty_cycle.2.inner_speed", "1500 rpm"), "ok"
+    )
+    c["duty_bin_speed_and_inner_speed"] = solve_case(
+        nested(nested(db, "duty_cycle.2.inner_speed", "1500 rpm"), "duty_cycle.2.speed",
+               "1500 rpm"),
+        "error",
+        ["duty_cycle.2"],
     )
     c["duty_bin_speed_negative"] = solve_case(
         nested(db, "duty_cycle.2.speed", "-1500 rpm"), "either", ["duty_cycle.2.speed"]
@@ -1912,9 +1919,10 @@ def report_cases() -> dict[str, Case]:
         ("input_speed",),
         outputs=("r.html",),
     )
-    # the field table says input_speed is "required, not zero", duty cycle or not
+    # under a duty cycle the spec's input_speed is the bins' default: 0 rpm leaves the
+    # bins that give none at rest (each said so in a warning)
     c["duty_drive_spec_input_speed_zero"] = solve_case(
-        with_(drive_duty(), input_speed="0 rpm"), "error", ["input_speed"]
+        with_(drive_duty(), input_speed="0 rpm"), "ok"
     )
     c["rep_multidoc_second_invalid"] = Case(
         {"m.yaml": dump(pair()) + "---\n" + dump(with_(pair(), arrangement="sideways"))},
@@ -2050,11 +2058,13 @@ def study_cases() -> dict[str, Case]:
         ("--plot",),
         needs_line=False,
     )
+    # the spec's own checks hold at the corners of the range (docs/commands.md): 50 deg
+    # is no tapered bearing's angle, so the sweep is refused at that bound, as written
     c["sw_tapered_angle_gaps"] = Case(
         {"s.yaml": dump(with_(tapered(), load_factors=None))},
         ["sweep", "s.yaml", "--vary", "contact_angle=40deg:50deg:3", "-f", "json"],
-        "ok",
-        check=sweep_gap_check,
+        "error",
+        ("contact_angle = 50deg",),
         needs_line=False,
     )
     c["sw_rows"] = Case(
@@ -2103,16 +2113,6 @@ def study_cases() -> dict[str, Case]:
         needs_line=False,
     )
     return c
-
-
-def sweep_gap_check(folder: Path, run: Run) -> list[str]:
-    rows = [json.loads(line) for line in run.stdout.splitlines() if line.strip()]
-    if len(rows) != 3:
-        return [f"{len(rows)} points, expected 3"]
-    last = rows[-1]
-    if not last.get("reason") or "contact_angle" not in json.dumps(last.get("reason")):
-        return [f"the point at 50 deg has no reason naming contact_angle: {last.get('reason')!r}"]
-    return []
 
 
 def yaml_cases() -> dict[str, Case]:

@@ -191,6 +191,10 @@ class BallBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, RollerRules,
     BIN_FIELDS: ClassVar[Mapping[str, str]] = {
         "radial_load": "radial_load", "axial_load": "axial_load", "speed": "speed",
         "inner_speed": "inner_speed", "outer_speed": "outer_speed", **OIL_BIN_PATHS}
+    #: a bin's ring speeds replace the spec's speed, and its speed the spec's ring speeds
+    ALTERNATIVES: ClassVar[Mapping[str, str | tuple[str, ...]]] = {
+        "speed": ("inner_speed", "outer_speed"), "inner_speed": "speed",
+        "outer_speed": "speed"}
 
     CATALOGUE_PLACES: ClassVar[tuple[str, ...]] = ("",)
 

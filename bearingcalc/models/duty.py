@@ -88,8 +88,9 @@ class DutyCycleRules:
 
     #: bin field -> the spec's dotted field it sets
     BIN_FIELDS: ClassVar[Mapping[str, str]] = {}
-    #: bin field -> the field it stands in for (a bin's torque replaces the spec's power)
-    ALTERNATIVES: ClassVar[Mapping[str, str]] = {}
+    #: bin field -> the field, or fields, it stands in for where the bin leaves them out
+    #: (a bin's torque replaces the spec's power; its ring speeds the spec's speed)
+    ALTERNATIVES: ClassVar[Mapping[str, str | tuple[str, ...]]] = {}
     #: the bin field that gives the load as a power, which a bin at rest cannot take
     POWER_FIELD: ClassVar[str | None] = None
     #: the fields the rules' subjects are made from (see rules.whole_spec_rule)
@@ -133,9 +134,10 @@ class DutyCycleRules:
             for field, path in self.BIN_FIELDS.items():
                 if getattr(item, field) is not None:
                     changes.append((FieldPath.parse(path), getattr(item, field)))
-                    other = self.ALTERNATIVES.get(field)
-                    if other is not None and getattr(item, other) is None:
-                        changes.append((FieldPath.parse(self.BIN_FIELDS[other]), None))
+                    others = self.ALTERNATIVES.get(field, ())
+                    for other in (others,) if isinstance(others, str) else others:
+                        if getattr(item, other) is None:
+                            changes.append((FieldPath.parse(self.BIN_FIELDS[other]), None))
             views.append(replaced(base, changes))
         return views
 
