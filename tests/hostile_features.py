@@ -2277,6 +2277,389 @@ def typo_cases() -> dict[str, Case]:
     return c
 
 
+def number_cases() -> dict[str, Case]:
+    """Results checked against relations written out here from the documented formulas."""
+    c: dict[str, Case] = {}
+    c["num_pair_static_p0"] = solve_case(
+        pair(),
+        "ok",
+        check=expect_value("static_safety_factor", lambda r: 2 * 44e3 / (9e3 + 1.8 * 2.5e3)),
+    )
+    alpha = math.radians(50)
+    p_tsr = math.tan(alpha) * 10e3 + 60e3
+    c["num_thrust_spherical_p"] = solve_case(
+        thrust_spherical(), "ok", check=expect_value("equivalent_dynamic_load", lambda r: p_tsr)
+    )
+    c["num_thrust_spherical_life"] = solve_case(
+        thrust_spherical(),
+        "ok",
+        check=expect_value(
+            "basic_rating_life_revolutions", lambda r: (430e3 / p_tsr) ** (10 / 3) * 1e6
+        ),
+    )
+    sph = load_example("rolling-bearing-spherical-roller.yaml")
+    c["num_spherical_double_row_p"] = solve_case(
+        sph, "ok", check=expect_value("equivalent_dynamic_load", lambda r: 12e3 + 2.4 * 2e3)
+    )
+    needle = with_(
+        cylindrical(),
+        type="needle-roller",
+        roller_diameter="3 mm",
+        roller_length="12 mm",
+        roller_count=30,
+        pitch_diameter="30 mm",
+    )
+    c["num_needle_two_rows_rating"] = solve_case(
+        with_(needle, rows=2),
+        "ok",
+        check=ratio_check(
+            lambda: with_(needle, rows=2), lambda: needle, "dynamic_load_rating", 2 ** (7 / 9)
+        ),
+    )
+    c["num_pair_roller_load"] = solve_case(
+        {
+            "kind": "rolling-bearing",
+            "name": "tapered pair from geometry",
+            "type": "tapered-roller",
+            "arrangement": "face-to-face",
+            "roller_count": 17,
+            "roller_diameter": "7.4 mm",
+            "roller_length": "12 mm",
+            "pitch_diameter": "46 mm",
+            "contact_angle": "14 deg",
+            "radial_load": "6 kN",
+            "axial_load": "3 kN",
+            "speed": "1500 rpm",
+        },
+        "ok",
+        check=expect_value(
+            "max_roller_load",
+            lambda r: 5 * r["static_equivalent_load"] / (2 * 17 * math.cos(math.radians(14))),
+        ),
+    )
+    small_cutter = nested(spiral(), "rating.cutter_radius", "1.5 in")
+    c["num_spiral_lengthwise_factor"] = solve_case(
+        small_cutter, "ok", check=lengthwise_factor_check
+    )
+    c["num_drive_system_life"] = solve_case(drive_tapered(), "ok", check=system_life_check)
+    c["num_drive_cycle_bearing_life"] = solve_case(
+        drive_tapered(), "ok", check=drive_cycle_life_check
+    )
+    return c
+
+
+def more_cases() -> dict[str, Case]:
+    """A second round: outputs onto catalogues, catalogue rows, sweeps across rules."""
+    c: dict[str, Case] = {}
+    cat = catalogue()
+    desig = dump(by_designation())
+    c["tol_output_is_catalogue"] = Case(
+        {"s.yaml": dump(by_designation(radial_load="6 kN ± 1 kN")), "bearings.csv": cat},
+        ["tolerance", "s.yaml", "--samples", "200", "--output", "bearings.csv"],
+        "error",
+        ("--output",),
+        needs_line=False,
+    )
+    c["check_output_is_catalogue"] = Case(
+        {"d/s.yaml": dump(by_designation(cat="../bearings.csv")), "bearings.csv": cat},
+        ["check", "d", "--output", "bearings.csv"],
+        "error",
+        ("--output",),
+        needs_line=False,
+    )
+    c["rep_output_is_env_catalogue"] = Case(
+        {"s.yaml": dump(by_designation(cat=None)), "bearings.csv": cat},
+        ["report", "s.yaml", "--output", "bearings.csv"],
+        "error",
+        ("--output",),
+        env={"BEARINGCALC_CATALOGUE": "bearings.csv"},
+        needs_line=False,
+    )
+    c["rep_output_is_option_catalogue"] = Case(
+        {"s.yaml": dump(by_designation(cat=None)), "bearings.csv": cat},
+        ["report", "s.yaml", "--catalogue", "bearings.csv", "--output", "bearings.csv"],
+        "error",
+        ("--output",),
+        needs_line=False,
+    )
+    c["rep_invalid_keeps_existing"] = Case(
+        {"d.yaml": dump(with_(pair(), arrangement="sideways")), "r.html": "<p>old report</p>"},
+        ["report", "d.yaml", "--output", "r.html"],
+        "error",
+        ("arrangement",),
+    )
+    c["rep_dev_null"] = Case(
+        {"s.yaml": desig, "bearings.csv": cat},
+        ["report", "s.yaml", "--output", "/dev/null"],
+        "ok",
+        outputs=("s.yaml",),
+    )
+    c["sel_output_invalid_spec"] = select_case(
+        ["--output", "out.json"],
+        "error",
+        ["radial_load"],
+        spec=shaft(radial_load="3 Hz"),
+        outputs=("out.json",),
+    )
+    c["sel_max_width_zero"] = select_case(
+        ["--max-width", "0 mm"], "error", ["--max-width"], needs_line=False
+    )
+    c["sel_top_fraction"] = select_case(["--top", "2.5"], "error", ["--top"], needs_line=False)
+    c["sel_csv_output"] = select_case(
+        ["-f", "csv", "--output", "sel.csv"], "ok", outputs=("sel.csv",)
+    )
+    all_given = drive()
+    c["sel_drive_all_given"] = Case(
+        {
+            "drive.yaml": dump(all_given),
+            "bearings.csv": catalogue(
+                rows=[
+                    *ROWS,
+                    '6206,SKF,deep-groove,30,62,16,20.3,11.2,0.475,14,,,,,,0.2,"SKF, p. 308"',
+                    '6306,SKF,deep-groove,30,72,19,29.6,16,0.67,13,,,,,,0.35,"SKF, p. 308"',
+                ]
+            ),
+        },
+        ["select", "drive.yaml", "--catalogue", "bearings.csv", "-f", "json"],
+        "ok",
+    )
+    for label, row in (
+        ("cat_static_rating_empty", ROWS[6].replace(",40.2,44,", ",40.2,,")),
+        ("cat_width_contradiction", ROWS[6].replace(",17.25,", ",16,")),
+        ("cat_rating_implausible", ROWS[6].replace(",40.2,", ",1e12,")),
+        (
+            "cat_control_escape_maker",
+            ROWS[6].replace(",SKF,", ",SKF\x1b[31m,"),
+        ),
+    ):
+        c[label] = cat_solve(
+            catalogue(rows=replace_row("30206 J2/Q", "SKF", row)), "error", ["catalogue"]
+        )
+    c["cat_special_designation"] = cat_solve(
+        catalogue(
+            rows=[*ROWS, 'XYZ-77,ACME,deep-groove,21,44,12,9.9,5.1,,13,,,,,,0.1,"ACME sheet 7"']
+        ),
+        "ok",
+        spec=by_designation("XYZ-77", maker=None, axial_load="0.5 kN"),
+    )
+    c["cat_designation_empty"] = cat_solve(cat, "error", ["designation"], spec=by_designation(""))
+    c["cat_designation_null"] = cat_solve(cat, "error", ["designation"], spec=by_designation(None))
+    c["cat_maker_lowercase"] = cat_solve(
+        cat, "either", ["maker"], spec=by_designation("6205", maker="skf", axial_load="0.2 kN")
+    )
+    c["cat_spec_wins_over_option"] = solve_case(
+        by_designation(),
+        "ok",
+        files={"bearings.csv": cat, "other.csv": catalogue(rows=ROWS[:3])},
+        args=["--catalogue", "other.csv"],
+    )
+    in_entry = drive()
+    in_entry["gear_bearings"][0] = {
+        "position": "20 mm",
+        "designation": "6206",
+        "catalogue": "b.csv",
+    }
+    c["cat_in_bearing_entry"] = solve_case(
+        in_entry, "error", ["gear_bearings.1.catalogue"], files={"b.csv": cat}
+    )
+    by_option = drive()
+    by_option["pinion_bearings"][1] = {"position": "150 mm", "designation": "6305"}
+    c["cat_drive_by_option"] = solve_case(
+        by_option, "ok", files={"bearings.csv": cat}, args=["--catalogue", "bearings.csv"]
+    )
+    c["sw_positions_cross"] = Case(
+        {"d.yaml": dump(drive())},
+        ["sweep", "d.yaml", "--vary", "pinion_bearings.1.position=60mm:180mm:5", "-f", "json"],
+        "either",
+        ("pinion_bearings.1.position",),
+        needs_line=False,
+    )
+    c["sw_rows_to_three"] = Case(
+        {"s.yaml": dump(cylindrical())},
+        ["sweep", "s.yaml", "--vary", "rows=1:3:3"],
+        "error",
+        ("rows",),
+        needs_line=False,
+    )
+    c["sw_rest_bin_speed"] = Case(
+        {"s.yaml": dump(drive_duty())},
+        ["sweep", "s.yaml", "--vary", "duty_cycle.4.input_speed=0rpm:100rpm:3", "-f", "json"],
+        "ok",
+    )
+    c["sw_output_equals_plot"] = Case(
+        {"s.yaml": dump(pair())},
+        [
+            "sweep",
+            "s.yaml",
+            "--vary",
+            "speed=500rpm:1500rpm:3",
+            "--output",
+            "x.svg",
+            "--plot",
+            "x.svg",
+        ],
+        "error",
+        (),
+        needs_line=False,
+    )
+    db = duty_ball()
+    c["duty_share_no_space"] = solve_case(
+        with_(
+            db,
+            duty_cycle=[
+                {**b, "time": t}
+                for b, t in zip(db["duty_cycle"], ("5%", "80%", "15%"), strict=True)
+            ],
+        ),
+        "ok",
+    )
+    c["duty_share_percent_word"] = solve_case(
+        nested(db, "duty_cycle.1.time", "5 percent"), "either", ["duty_cycle.1.time"]
+    )
+    c["duty_bin_load_tolerance"] = solve_case(
+        nested(db, "duty_cycle.2.radial_load", "6 kN ± 1 kN"), "ok"
+    )
+    c["duty_idle_bin_no_load"] = solve_case(
+        with_(
+            db,
+            duty_cycle=[
+                *db["duty_cycle"][:2],
+                {"name": "idle", "time": "15 %", "radial_load": "0 kN", "axial_load": "0 kN"},
+            ],
+        ),
+        "either",
+        ["duty_cycle.3"],
+    )
+    c["duty_spec_speed_zero_bins_turn"] = solve_case(
+        with_(db, speed="0 rpm", duty_cycle=[{**b, "speed": "1500 rpm"} for b in db["duty_cycle"]]),
+        "either",
+        ["speed"],
+    )
+    c["duty_epicyclic_bin_gear_a_speed"] = solve_case(
+        with_(
+            sizing(),
+            arm_speed="100 rpm",
+            gear_a_speed=None,
+            duty_cycle=[{"time": "100 %", "gear_a_speed": "300 rpm"}],
+        ),
+        "error",
+        ["duty_cycle.1.gear_a_speed"],
+    )
+    c["duty_gears_power_pinion_at_rest"] = solve_case(
+        with_(sizing(), duty_cycle=[{"time": "50 %"}, {"time": "50 %", "gear_a_speed": "0 rpm"}]),
+        "error",
+        ["duty_cycle.2"],
+    )
+    dt = drive_tapered()
+    c["drive_gear_shaft_adjusted"] = solve_case(
+        with_(
+            dt,
+            gear_arrangement="face-to-face",
+            gear_bearings=[
+                {
+                    **dt["pinion_bearings"][0],
+                    "position": "10 mm",
+                    "bore_diameter": "30 mm",
+                    "outside_diameter": "62 mm",
+                },
+                {
+                    **dt["pinion_bearings"][1],
+                    "position": "120 mm",
+                    "bore_diameter": "30 mm",
+                    "outside_diameter": "62 mm",
+                },
+            ],
+        ),
+        "ok",
+    )
+    c["drive_locating_string"] = solve_case(
+        nested(drive(), "pinion_bearings.1.locating", "maybe"),
+        "error",
+        ["pinion_bearings.1.locating"],
+    )
+    c["drive_negative_position"] = solve_case(
+        nested(drive(), "gear_bearings.1.position", "-50 mm"), "ok"
+    )
+    c["drive_no_gear_bearings"] = solve_case(with_(drive(), gear_bearings=None), "ok")
+    c["spiral_zerol_without_hand"] = solve_case(with_(sizing(), spiral_angle="0 deg"), "ok")
+    c["spiral_shaft_angle_70"] = solve_case(with_(spiral(), shaft_angle="70 deg"), "ok")
+    c["spiral_cutter_no_unit"] = solve_case(
+        nested(spiral(), "rating.cutter_radius", 4.5), "error", ["rating.cutter_radius"]
+    )
+    c["spiral_hand_capital"] = solve_case(with_(spiral(), hand="Left"), "either", ["hand"])
+    c["mat_jg_with_unit"] = solve_case(
+        nested(spiral(), "rating.geometry_factor_bending_gear", "0.2 mm"),
+        "error",
+        ["rating.geometry_factor_bending_gear"],
+    )
+    c["mat_hardness_tolerance"] = solve_case(
+        nested(sizing(), "rating.hardness", "300 HB ± 10 HB"), "ok"
+    )
+    c["yaml_flow_trailing_comma"] = solve_case(
+        dump(with_(db, duty_cycle=None)) + "duty_cycle: [{time: 50 %, radial_load: 6 kN}, "
+        "{time: 50 %, radial_load: 7 kN}, ]\n",
+        "either",
+        ["duty_cycle"],
+    )
+    return c
+
+
+def ratio_check(make_a, make_b, key: str, want: float) -> Callable:
+    def check(folder: Path, run: Run) -> list[str]:
+        a = results_of(folder, make_a(), "a.yaml")[key]
+        b = results_of(folder, make_b(), "b.yaml")[key]
+        return [] if close(a / b, want, 1e-9) else [f"{key}: ratio {a / b!r}, expected {want!r}"]
+
+    return check
+
+
+def lengthwise_factor_check(folder: Path, run: Run) -> list[str]:
+    res = json.loads(run.stdout.splitlines()[0])["results"]
+    rm = res["mean_cone_distance"]
+    q = 0.279 / math.log10(math.sin(math.radians(35)))
+    kx = min(max(0.211 * (1.5 * 0.0254 / rm) ** q + 0.789, 1.0), 1.15)
+    got = res.get("lengthwise_curvature_factor")
+    if not close(got, kx, 1e-9):
+        return [f"lengthwise_curvature_factor {got!r}, by hand {kx!r}"]
+    if kx == 1.0:
+        return ["the check needs a cutter small enough for K_x > 1"]
+    return []
+
+
+def system_life_check(folder: Path, run: Run) -> list[str]:
+    res = json.loads(run.stdout.splitlines()[0])["results"]
+    e = 9 / 8  # a roller bearing in the drive
+    bad = []
+    for kind in ("basic", "modified"):
+        lives = [
+            res[f"{s}_bearing_{i}_{kind}_rating_life"] for s in ("pinion", "gear") for i in (1, 2)
+        ]
+        want = sum(life**-e for life in lives) ** (-1 / e)
+        got = res[f"system_{kind}_rating_life"]
+        if not close(got, want, 1e-9):
+            bad.append(f"system_{kind}_rating_life {got!r}, by hand {want!r}")
+    return bad
+
+
+def drive_cycle_life_check(folder: Path, run: Run) -> list[str]:
+    bins_ = [("30 %", "40 N*m", "750 rpm"), ("70 %", "70 N*m", "1500 rpm")]
+    cycle = with_(
+        drive_tapered(),
+        duty_cycle=[{"time": t, "torque": q, "input_speed": n} for t, q, n in bins_],
+    )
+    whole = results_of(folder, cycle, "cycle.yaml")
+    singles = [
+        results_of(folder, with_(drive_tapered(), torque=q, input_speed=n), f"bin{k}.yaml")
+        for k, (t, q, n) in enumerate(bins_)
+    ]
+    bad = []
+    for key in ("pinion_bearing_1_modified_rating_life", "gear_bearing_2_basic_rating_life"):
+        want = 1 / (0.3 / singles[0][key] + 0.7 / singles[1][key])
+        if not close(whole[key], want, 1e-9):
+            bad.append(f"{key}: {whole[key]!r} over the cycle, by hand from the bins {want!r}")
+    return bad
+
+
 def face_to_face_by_hand(folder: Path, run: Run) -> list[str]:
     res = json.loads(run.stdout.splitlines()[0])["results"]
     fr_a, fr_b = res["pinion_bearing_1_radial_load"], res["pinion_bearing_2_radial_load"]
@@ -2443,6 +2826,8 @@ def cases() -> dict[str, Case]:
         study_cases,
         yaml_cases,
         typo_cases,
+        number_cases,
+        more_cases,
         api_cases,
     ):
         part = group()
