@@ -15,6 +15,7 @@ from typing import Any
 
 from pydantic import BaseModel, ValidationError
 
+from bearingcalc.catalogue.fill import CatalogueUse
 from bearingcalc.catalogue.fill import fill as fill_from_catalogue
 from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind, unknown_kind
@@ -61,10 +62,12 @@ def parse_document(document: Document, *, rules: bool = True) -> tuple[Kind, Spe
         errors += [_rule_error(document, problem)
                    for problem in _rule_problems_despite(kind.model, data, exc)
                    if problem.field not in said]
-        raise _in_line_order(document, errors) from None
+        raise _in_line_order(document, _at_catalogue_rows(document, errors, catalogue)
+                             ) from None
     except SpecFieldError as problem:
         errors = [_rule_error(document, each) for each in (problem, *problem.more)]
-        raise _in_line_order(document, errors) from None
+        raise _in_line_order(document, _at_catalogue_rows(document, errors, catalogue)
+                             ) from None
     if catalogue.rows:
         spec._catalogue_sources = catalogue.sources()
         spec._catalogue_notes = catalogue.notes
@@ -73,6 +76,22 @@ def parse_document(document: Document, *, rules: bool = True) -> tuple[Kind, Spe
                              "give a bearing's designation, like designation: 6205, or leave "
                              "catalogue out", field="catalogue")
     return kind, spec
+
+
+def _at_catalogue_rows(document: Document, errors: list[SpecError],
+                       catalogue: CatalogueUse) -> list[SpecError]:
+    """``errors``, each of a value the catalogue filled said at the catalogue's file, row
+    line and column, which the spec does not hold."""
+    out = []
+    for error in errors:
+        where = catalogue.filled.get(error.field or "")
+        if where is None:
+            out.append(error)
+            continue
+        path, line, column = where
+        out.append(SpecError(f"{error.message}; {document.source} takes its {error.field} "
+                             "from this catalogue row", source=path, line=line, field=column))
+    return out
 
 
 def _rule_error(document: Document, problem: SpecFieldError) -> SpecError:
@@ -127,10 +146,17 @@ def _typo_problems(document: Document, model: type[Spec], data: dict[str, Any]
         return [_one_problem(document, model, error)
                 for error in exc.errors(include_url=False)
                 if error["type"] == "extra_forbidden" and error["loc"]
-                and _near_field(model, tuple(str(part) for part in error["loc"]))]
+                and (_near_field(model, tuple(str(part) for part in error["loc"]))
+                     or _misplaced(model, tuple(str(part) for part in error["loc"])))]
     except SpecFieldError:
         pass
     return []
+
+
+def _misplaced(model: type[Spec], loc: tuple[str, ...]) -> bool:
+    """Whether the unknown key at ``loc`` is a key of the spec's top level, written in a
+    group or list item (a drive bearing's ``catalogue``)."""
+    return len(loc) > 1 and loc[-1] in model.model_fields
 
 
 def _near_field(model: type[Spec], loc: tuple[str, ...]) -> str | None:
@@ -165,6 +191,9 @@ def _one_problem(document: Document, model: type[Spec], error: Any) -> SpecError
         hint = getattr(parent, "UNKNOWN_KEY_HINTS", {}).get(loc[-1])
         if hint is not None:  # a key whose near names would each change the meaning
             message = f"unknown key '{loc[-1]}': {hint[0]}"
+        elif _misplaced(model, loc) and loc[-1] not in known:
+            message = (f"unknown key '{loc[-1]}' here: {loc[-1]} is a key of the spec's "
+                       "top level, for the whole spec")
         else:
             message = f"unknown key '{loc[-1]}'{did_you_mean(loc[-1], known)}"
             if not did_you_mean(loc[-1], known):

@@ -79,6 +79,10 @@ class CatalogueUse:
 
     rows: dict[str, CatalogueRow] = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
+    #: each field the catalogue filled (``pinion_bearings.1.dynamic_load_rating``) ->
+    #: (the catalogue's file, the row's line, the column), for the messages of a value
+    #: the spec refuses
+    filled: dict[str, tuple[str, int, str]] = field(default_factory=dict)
 
     def sources(self) -> dict[str, str]:
         """Result-style keys naming each row: ``catalogue_source``, or
@@ -126,7 +130,7 @@ def fill(data: dict[str, Any], places: tuple[str, ...], spec_path: str,
                              f"catalogue's {row.designation} ({row.maker}), the same basic "
                              "designation: suffixes do not look a bearing up, so check that "
                              "it is the variant meant")
-        _fill_bearing(bearing, row, prefix, use, error)
+        _fill_bearing(bearing, row, prefix, use, error, catalogue.path)
         use.rows[place] = row
     return data, use
 
@@ -213,7 +217,7 @@ def written_fields(row: CatalogueRow, arrangement: str = "single", rows: int | N
 
 
 def _fill_bearing(bearing: dict[str, Any], row: CatalogueRow, prefix: str, use: CatalogueUse,
-                  error: Any) -> None:
+                  error: Any, path: str) -> None:
     given_type = bearing.get("type")
     if given_type is not None and TYPE_ALIASES.get(given_type, given_type) != row.type:
         raise error(f"the catalogue's {row.label} is {row.type}, not {given_type}: leave type "
@@ -230,7 +234,10 @@ def _fill_bearing(bearing: dict[str, Any], row: CatalogueRow, prefix: str, use: 
         if target.startswith("load_factors."):
             if not factors_given:
                 bearing.setdefault("load_factors", {})[target.split(".")[1]] = written
+                use.filled[f"{prefix}{target}"] = (path, row.line, column)
             continue
+        if bearing.get(target) is None:
+            use.filled[f"{prefix}{target}"] = (path, row.line, column)
         _put(bearing, target, written, row, None if column == "e" else column, prefix, use)
     if arrangement in PAIRS and "e" in row.values and row.type in ROLLER_TYPES and (
             not factors_given):

@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 from typing import Annotated, Any, Literal
 
-from pydantic import BeforeValidator, Field, WithJsonSchema
+from pydantic import Field, PlainValidator, WithJsonSchema
 
 from bearingcalc.core.gear_materials import GRADES
 from bearingcalc.errors import SpecFieldError
@@ -18,7 +18,13 @@ from bearingcalc.models.plain_numbers import (
     shown,
     whole_choice,
 )
-from bearingcalc.models.quantities import PositiveLength, Temperature
+from bearingcalc.models.quantities import (
+    _PLUS_MINUS,
+    Measured,
+    PositiveLength,
+    Temperature,
+    Tolerance,
+)
 from bearingcalc.models.rules import rule
 from bearingcalc.number_grammar import UNSIGNED_DECIMAL
 
@@ -37,14 +43,29 @@ class _BrinellHardness(_RangedNumber):
         return _written_hardness(text, word_required=False)
 
     def __call__(self, value: Any) -> float:
+        if isinstance(value, str) and _PLUS_MINUS.search(value):
+            return self._toleranced(value)
         if isinstance(value, str):  # in a spec, a number in quotes carries its word
             value = _written_hardness(value, word_required=True)
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise ValueError(f"write the Brinell hardness like '180 HB', got {value!r}")
-        if not self.low <= value <= self.high:
-            got = shown(value) if isinstance(value, int) else f"{value:g}"
-            raise ValueError(f"must be from 180 to 400 HB ({self.what}), got {got}")
+        self._check_range(value, shown(value) if isinstance(value, int) else f"{value:g}")
         return float(value)
+
+    def _toleranced(self, text: str) -> Measured:
+        """'300 HB ± 10 HB' (or '300 ± 10 HB'): the nominal, with a normal tolerance at
+        3σ over the band, as every '±' input of a spec."""
+        nominal_text, band_text = _PLUS_MINUS.split(text, maxsplit=1)
+        nominal = _written_hardness(nominal_text, word_required=False)
+        band = _written_hardness(band_text, word_required=True)
+        low, high = nominal - band, nominal + band
+        self._check_range(low, f"the band's low end ({low:g} HB)")
+        self._check_range(high, f"the band's high end ({high:g} HB)")
+        return Measured(nominal, Tolerance(nominal, low, high, unit="1", written_unit="HB"))
+
+    def _check_range(self, value: float, got: str) -> None:
+        if not self.low <= value <= self.high:
+            raise ValueError(f"must be from 180 to 400 HB ({self.what}), got {got}")
 
 
 def _written_hardness(text: str, *, word_required: bool) -> float:
@@ -55,7 +76,7 @@ def _written_hardness(text: str, *, word_required: bool) -> float:
     return float(match[1])
 
 
-Hardness = Annotated[float, BeforeValidator(_BrinellHardness()), WithJsonSchema({"anyOf": [
+Hardness = Annotated[float, PlainValidator(_BrinellHardness()), WithJsonSchema({"anyOf": [
     {"type": "string", "pattern": rf"^\s*{UNSIGNED_DECIMAL}\s*(HB|HBW|BHN)\s*$"},
     {"type": "number", "minimum": 180, "maximum": 400}]})]
 RatingReliability = reliability(0.9, 0.9999, "AGMA 2003's K_R")

@@ -48,7 +48,7 @@ def check_band_ends(document: Document, spec: SpecModel) -> None:
         parsed = None if info is None else field_parser(info)
         unit = "" if parsed is None or parsed[2] == "1" else f" {parsed[2]}"
         for end, value in (("low", tolerance.low), ("high", tolerance.high)):
-            error = invalid_at(document, {name: f"{value!r}{unit}"})
+            error = invalid_at(document, {name: f"{value!r}{unit}" if unit else value})
             if error is not None:
                 what = (error.message if error.field in (None, name)
                         else f"{error.field}: {error.message}")
