@@ -7,6 +7,9 @@ Sources (each file's header names its documents):
 - second, ``tests/data/iso_dimensions_second_source.csv``: Koyo (JTEKT), CAT. No. B2001RUS;
 - third, ``tests/data/iso_dimensions_third_source.csv``: KYK, general bearing catalogue,
   for the 64 series and 30304 (which the second lacks, or which is the 64 series' own).
+
+A tapered roller bearing's two chamfers are compared apart: ``r_min`` is the cone's (NSK's
+and Koyo's r, KYK's r_s min), ``cup_r_min`` the cup's (NSK's and Koyo's r1, KYK's r1s min).
 """
 
 from __future__ import annotations
@@ -23,6 +26,8 @@ from tests.conftest import ROOT
 
 DATA = Path(__file__).resolve().parent / "data"
 NUMBERS = ("bore_diameter [mm]", "outside_diameter [mm]", "width [mm]", "r_min [mm]")
+#: Numbers only some types have: empty in a row of any other type.
+OPTIONAL_NUMBERS = ("cup_r_min [mm]",)
 
 
 def _rows(path: Path) -> dict[str, dict[str, str]]:
@@ -40,12 +45,18 @@ def _agree(ours: dict[str, str], theirs: dict[str, str]) -> list[str]:
     """The columns where two rows of a designation differ (an ISO 355 code only where
     both print one)."""
     differ = [name for name in NUMBERS if float(ours[name]) != float(theirs[name])]
+    differ += [name for name in OPTIONAL_NUMBERS
+               if _optional(ours[name]) != _optional(theirs[name])]
     if ours["type"] != theirs["type"]:
         differ.append("type")
     if ours["iso355_series"] and theirs["iso355_series"] and (
             ours["iso355_series"] != theirs["iso355_series"]):
         differ.append("iso355_series")
     return differ
+
+
+def _optional(cell: str) -> float | None:
+    return float(cell) if cell.strip() else None
 
 
 @pytest.mark.parametrize(("other", "name"), [(SECOND, "second"), (THIRD, "third")])
@@ -67,18 +78,54 @@ def test_every_shipped_row_is_printed_by_a_maker_other_than_its_own():
     assert len(SHIPPED) == len(iso_table()) >= 340
 
 
+def test_the_cup_chamfer_is_given_for_every_tapered_row_and_no_other():
+    """Every tapered row carries its cup's chamfer, confirmed by Koyo (KYK for 30304, which
+    the second lacks); no other type has a cup."""
+    tapered = {designation for designation, row in SHIPPED.items()
+               if row["type"] == "tapered-roller"}
+    given = {designation for designation, row in SHIPPED.items()
+             if row["cup_r_min [mm]"].strip()}
+    assert given == tapered and len(tapered) == 91
+    confirmed = {designation for designation in tapered
+                 if (SECOND.get(designation) or THIRD[designation])["cup_r_min [mm]"].strip()}
+    assert confirmed == tapered
+
+
+def test_a_cup_chamfer_is_never_larger_than_its_cone_s():
+    """As both makers print them, a tapered bearing's cup chamfer is its cone's or the
+    next smaller of the chamfers these series use (0.3 mm, 0.6, 1, 1.5, 2, 2.5, 3, 4);
+    no other type has one."""
+    steps = [0.3, 0.6, 1, 1.5, 2, 2.5, 3, 4]
+    for designation, dimensions in iso_table().items():
+        if dimensions.type != "tapered-roller":
+            assert dimensions.cup_r_min is None, designation
+            continue
+        cone, cup = (round(value * 1e3, 9) for value in (dimensions.r_min,
+                                                          dimensions.cup_r_min))
+        assert steps.index(cone) - steps.index(cup) in (0, 1), designation
+
+
+def test_the_table_gives_both_chamfers_of_a_tapered_bearing_in_metres():
+    """30211: NSK p. B118 prints r 2, r1 1.5 (Koyo the same)."""
+    dimensions = iso_table()["30211"]
+    assert (dimensions.r_min, dimensions.cup_r_min) == pytest.approx((2e-3, 1.5e-3),
+                                                                     rel=1e-12)
+
+
 @pytest.mark.parametrize("series", iso_series())
 def test_each_series_is_smooth(series):
     """Down a series the bore rises by its code, the outside diameter rises, and the
-    width and the chamfer never shrink."""
+    width and the chamfers (a tapered bearing's cone's and cup's) never shrink."""
     rows = [row for designation, row in SHIPPED.items() if designation[:-2] == series]
     bores = [float(row["bore_diameter [mm]"]) for row in rows]
     outside = [float(row["outside_diameter [mm]"]) for row in rows]
     widths = [float(row["width [mm]"]) for row in rows]
     chamfers = [float(row["r_min [mm]"]) for row in rows]
+    cup_chamfers = [float(row["cup_r_min [mm]"] or 0) for row in rows]
     assert bores == sorted(set(bores))
     assert all(b < a for b, a in itertools.pairwise(outside))
     assert widths == sorted(widths) and chamfers == sorted(chamfers)
+    assert cup_chamfers == sorted(cup_chamfers)
     assert all(d < big for d, big in zip(bores, outside, strict=True))
 
 

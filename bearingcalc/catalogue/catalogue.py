@@ -23,6 +23,8 @@ from bearingcalc.units import DIMENSIONLESS, MAX_MAGNITUDE, to_display, unit_sca
 #: millimetre, so that a catalogue in inches to four decimals (2.5 µm) agrees. [m]
 DIMENSION_TOLERANCE = 1e-5
 ISO_CHECKED = ("bore_diameter", "outside_diameter", "width")
+#: The type whose outer ring is a cup with a chamfer of its own (``cup_r_min``).
+CUPPED_TYPE = "tapered-roller"
 
 
 class CatalogueRow:
@@ -185,6 +187,7 @@ def build(raw: RawCatalogue) -> Catalogue:
             raise SpecError(f"{row.label} is given twice (first at line {seen[key]})",
                             source=raw.path, line=row.line, field="designation")
         seen[key] = row.line
+        _check_cup(row, raw.path)
         if not _check_iso(row, raw.path):
             special.append(row.designation)
         rows.append(row)
@@ -228,6 +231,15 @@ def _numbers(raw: RawCatalogue) -> dict[str, NDArray]:
                             line=raw.rows[i].line, field=name)
         out[name] = values
     return out
+
+
+def _check_cup(row: CatalogueRow, path: str) -> None:
+    """A cup chamfer belongs to a tapered roller bearing (whose ``r_min`` is the cone's);
+    on any other type it is a misplaced value. Raises SpecError."""
+    if "cup_r_min" in row.values and row.type != CUPPED_TYPE:
+        raise SpecError(f"{row.label} is {row.type}, which has no cup: cup_r_min is the cup's "
+                        f"chamfer of a {CUPPED_TYPE} bearing; leave it empty",
+                        source=path, line=row.line, field="cup_r_min")
 
 
 def _check_iso(row: CatalogueRow, path: str) -> bool:

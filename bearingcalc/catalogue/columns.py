@@ -51,6 +51,7 @@ COLUMNS: dict[str, Column] = {column.name: column for column in (
     Column("limiting_speed", ANGULAR_SPEED),
     Column("mass", MASS),
     Column("r_min", LENGTH),
+    Column("cup_r_min", LENGTH),
     Column("ball_count", DIMENSIONLESS, field="ball_count", whole=True),
     Column("ball_diameter", LENGTH, field="ball_diameter"),
     Column("roller_count", DIMENSIONLESS, field="roller_count", whole=True),

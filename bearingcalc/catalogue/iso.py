@@ -20,7 +20,9 @@ TABLE = "iso_boundary_dimensions.csv"
 @dataclass(frozen=True)
 class IsoDimensions:
     """One designation's boundary dimensions [m]: width is B (radial), T (tapered) or
-    H (thrust); r_min the chamfer r_s min (of a tapered bearing, the cone's)."""
+    H (thrust); r_min the chamfer r_s min, of a tapered roller bearing the cone's (the
+    inner ring's, the makers' r); cup_r_min a tapered roller bearing's cup (outer ring)
+    chamfer r_1s min (the makers' r1), None for every other type."""
 
     designation: str
     type: str
@@ -29,6 +31,7 @@ class IsoDimensions:
     width: float
     r_min: float | None
     iso355_series: str | None
+    cup_r_min: float | None
 
 
 def iso_table() -> dict[str, IsoDimensions]:
@@ -45,12 +48,17 @@ def _iso_table() -> dict[str, IsoDimensions]:
     lines = (line for line in io.StringIO(text) if not line.startswith("#"))
     table: dict[str, IsoDimensions] = {}
     for row in csv.DictReader(lines):
-        r_min = row["r_min [mm]"].strip()
         table[row["designation"]] = IsoDimensions(
             row["designation"], row["type"], float(row["bore_diameter [mm]"]) / MM,
             float(row["outside_diameter [mm]"]) / MM, float(row["width [mm]"]) / MM,
-            float(r_min) / MM if r_min else None, row["iso355_series"].strip() or None)
+            _optional_length(row["r_min [mm]"]), row["iso355_series"].strip() or None,
+            _optional_length(row["cup_r_min [mm]"]))
     return table
+
+
+def _optional_length(cell: str) -> float | None:
+    """A cell in millimetres [m], None where it is empty."""
+    return float(cell) / MM if cell.strip() else None
 
 
 def iso_series() -> list[str]:
