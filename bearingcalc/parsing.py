@@ -80,17 +80,17 @@ def parse_document(document: Document, *, rules: bool = True) -> tuple[Kind, Spe
 
 def _at_catalogue_rows(document: Document, errors: list[SpecError],
                        catalogue: CatalogueUse) -> list[SpecError]:
-    """``errors``, each of a value the catalogue filled said at the catalogue's file, row
-    line and column, which the spec does not hold."""
+    """``errors``, each of a value the catalogue filled (which the spec does not hold)
+    said at the bearing's designation, with the catalogue's file, row line and column."""
     out = []
     for error in errors:
         where = catalogue.filled.get(error.field or "")
         if where is None:
             out.append(error)
             continue
-        path, line, column = where
-        out.append(SpecError(f"{error.message}; {document.source} takes its {error.field} "
-                             "from this catalogue row", source=path, line=line, field=column))
+        # at the spec's catalogue: where it names one, as the catalogue's other problems
+        field = "catalogue" if "catalogue" in document.data else where.designation
+        out.append(document.error(where.said(error.message), field=field))
     return out
 
 

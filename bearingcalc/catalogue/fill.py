@@ -72,6 +72,21 @@ def default_catalogue() -> str | None:
     return _default[0] or os.environ.get(CATALOGUE_VARIABLE) or None
 
 
+@dataclass(frozen=True)
+class FilledFrom:
+    """Where the catalogue gave a spec's field: the bearing's designation field, the
+    catalogue's file, its row and column."""
+
+    designation: str
+    path: str
+    row: CatalogueRow
+    column: str
+
+    def said(self, message: str) -> str:
+        """``message`` of the value, after the catalogue's file, line and column."""
+        return f"{self.path}:{self.row.line}: {self.column}: {self.row.label}: {message}"
+
+
 @dataclass
 class CatalogueUse:
     """What the catalogue gave a spec: each bearing's row by its place (``''`` for a
@@ -80,9 +95,8 @@ class CatalogueUse:
     rows: dict[str, CatalogueRow] = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
     #: each field the catalogue filled (``pinion_bearings.1.dynamic_load_rating``) ->
-    #: (the catalogue's file, the row's line, the column), for the messages of a value
-    #: the spec refuses
-    filled: dict[str, tuple[str, int, str]] = field(default_factory=dict)
+    #: where it came from, for the message of a value the spec refuses
+    filled: dict[str, FilledFrom] = field(default_factory=dict)
 
     def sources(self) -> dict[str, str]:
         """Result-style keys naming each row: ``catalogue_source``, or
@@ -231,13 +245,14 @@ def _fill_bearing(bearing: dict[str, Any], row: CatalogueRow, prefix: str, use: 
         bearing.get("rows") if isinstance(bearing.get("rows"), int) else None)
     factors_given = "load_factors" in bearing
     for target, (column, written) in fields.items():
+        source = FilledFrom(f"{prefix}designation", path, row, column)
         if target.startswith("load_factors."):
             if not factors_given:
                 bearing.setdefault("load_factors", {})[target.split(".")[1]] = written
-                use.filled[f"{prefix}{target}"] = (path, row.line, column)
+                use.filled[f"{prefix}{target}"] = source
             continue
         if bearing.get(target) is None:
-            use.filled[f"{prefix}{target}"] = (path, row.line, column)
+            use.filled[f"{prefix}{target}"] = source
         _put(bearing, target, written, row, None if column == "e" else column, prefix, use)
     if arrangement in PAIRS and "e" in row.values and row.type in ROLLER_TYPES and (
             not factors_given):
