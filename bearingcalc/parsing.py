@@ -191,12 +191,12 @@ def _one_problem(document: Document, model: type[Spec], error: Any) -> SpecError
         hint = getattr(parent, "UNKNOWN_KEY_HINTS", {}).get(loc[-1])
         if hint is not None:  # a key whose near names would each change the meaning
             message = f"unknown key '{loc[-1]}': {hint[0]}"
-        elif _misplaced(model, loc) and loc[-1] not in known:
-            message = (f"unknown key '{loc[-1]}' here: {loc[-1]} is a key of the spec's "
-                       "top level, for the whole spec")
         else:
             message = f"unknown key '{loc[-1]}'{did_you_mean(loc[-1], known)}"
             if not did_you_mean(loc[-1], known):
+                if _misplaced(model, loc):
+                    message += (f" here: {loc[-1]} is a key of the spec's top level, for "
+                                "the whole spec")
                 message += f"; allowed keys: {', '.join(k for k in known if k != 'kind')}"
     elif error_type == "missing":
         example = _example(model, loc)
