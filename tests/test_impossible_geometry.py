@@ -190,7 +190,7 @@ def test_the_example_raceway_keeps_its_ellipse_on_the_roller() -> None:
 
 
 def test_an_ellipse_longer_than_the_roller_is_refused() -> None:
-    # The case: 40.0001 mm against a 40 mm crown.
+    # A raceway radius a hair above a 40 mm crown: 40.0001 mm.
     assert _crowned(40.0001e-3) > 0.1
     message = refused(with_fields(SPHERICAL, raceway_radius="40.0001 mm"), "raceway_radius")
     assert "ellipse" in message and "got" not in message
