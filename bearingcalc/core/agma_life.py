@@ -119,11 +119,16 @@ def spectrum_damage(shares: ArrayLike, safeties: ArrayLike, cycles: ArrayLike,
 
     Source: ANSI/AGMA 2101-D04, Annex A (load spectra by Miner's rule).
     """
-    u = np.asarray(shares, dtype=float)
     n = np.asarray(cycles, dtype=float)
+    return _damage(np.asarray(shares, dtype=float), np.asarray(safeties, dtype=float), n,
+                   life_factor(n, curve), curve, scale)
+
+
+def _damage(u: NDArray, safeties: NDArray, n: NDArray, factor_at_life: NDArray,
+            curve: Curve, scale: ArrayLike) -> NDArray:
+    """:func:`spectrum_damage` with K(N) given (the bisection's steps share it)."""
     with np.errstate(divide="ignore"):
-        needed = np.asarray(scale, dtype=float) * life_factor(n, curve) / np.asarray(
-            safeties, dtype=float)
+        needed = np.asarray(scale, dtype=float) * factor_at_life / safeties
     endured = cycles_to_failure(needed, curve)
     return np.where(u > 0, u * n / endured, 0.0)
 
@@ -164,10 +169,12 @@ def spectrum_safety(shares: ArrayLike, safeties: ArrayLike, cycles: ArrayLike,
     low = np.min(np.where(counted, safeties, np.inf), axis=0)
     stressed = np.isfinite(low)
     low = np.where(stressed, low, 1.0)
+    factor_at_life = life_factor(n, curve)
     high = np.max(np.where(counted, safeties, 1.0), axis=0) * life_factor(
-        FIRST_RATED_CYCLES, curve) / life_factor(n, curve)
+        FIRST_RATED_CYCLES, curve) / factor_at_life
     for _ in range(SPECTRUM_BISECTIONS):
         middle = np.sqrt(low * high)
-        within = np.sum(spectrum_damage(u, safeties, n, curve, middle), axis=0) <= 1.0
+        within = np.sum(_damage(u, safeties, n, factor_at_life, curve, middle),
+                        axis=0) <= 1.0
         low, high = np.where(within, middle, low), np.where(within, high, middle)
     return np.where(stressed, low, np.inf)
