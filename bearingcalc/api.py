@@ -79,26 +79,22 @@ class Result:
     def to_frame(self) -> Any:
         """The results as a pandas DataFrame (key, value in SI, unit, meaning); pandas is
         an optional extra (``pip install pandas``)."""
-        from bearingcalc.kinds import KINDS
-
-        meanings = KINDS[self.kind].results
+        meanings = self.evaluation.meanings
         return _pandas().DataFrame(
-            [(key, value, self.units[key], meanings[key][1])
+            [(key, value, self.units[key], meanings[key])
              for key, value in self.results.items()],
             columns=["result", "value", "unit", "meaning"]).set_index("result")
 
     def _repr_html_(self) -> str:
-        from bearingcalc.kinds import KINDS
         from bearingcalc.units import to_display
 
-        kind = KINDS[self.kind]
         rows = []
         for key, value in self.results.items():
             shown, unit = ("unbounded", "") if value is None else to_display(
                 value, self.units[key])
             number = shown if isinstance(shown, str) else f"{shown:.7g}"
             rows.append(f"<tr><td>{escape(key)}</td><td style='text-align:right'>{number}"
-                        f"</td><td>{escape(unit)}</td><td>{escape(kind.results[key][1])}"
+                        f"</td><td>{escape(unit)}</td><td>{escape(self.evaluation.meanings[key])}"
                         "</td></tr>")
         verdict = "PASS" if self.within_limits else "FAIL"
         return (f"<p><b>{escape(self.name)}</b> ({escape(self.kind)}): {verdict}</p>"

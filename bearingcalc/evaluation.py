@@ -12,7 +12,7 @@ import math
 import re
 import sys
 import traceback
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -21,7 +21,7 @@ import numpy as np
 
 from bearingcalc.core.common import DerivedTest
 from bearingcalc.errors import SpecError
-from bearingcalc.kinds import KINDS, Kind, bin_column
+from bearingcalc.kinds import KINDS, Kind
 from bearingcalc.models.base import Spec
 from bearingcalc.models.field_path import FieldPath
 from bearingcalc.models.yaml_loader import (
@@ -29,6 +29,7 @@ from bearingcalc.models.yaml_loader import (
     load_documents,
 )
 from bearingcalc.parsing import parse_document
+from bearingcalc.result_keys import FlatResults, ResultTable
 from bearingcalc.verdicts import Verdict, judge
 from bearingcalc.wording import plural
 
@@ -51,6 +52,10 @@ class Evaluation:
     #: the catalogue row of each bearing taken from one: ``catalogue_source`` (or
     #: ``pinion_bearing_1_catalogue_source``) -> designation, maker and source
     sources: dict[str, str] = field(default_factory=dict)
+    #: each result's meaning
+    meanings: dict[str, str] = field(default_factory=dict)
+    #: the results along axes, each axis's table (a row per bearing, per bin)
+    tables: tuple[ResultTable, ...] = ()
 
     @property
     def within_limits(self) -> bool:
@@ -108,6 +113,7 @@ def _solve_group(documents: Sequence[Document], kind: Kind,
     """Solve specs of one kind with the same inputs given in one vectorised call."""
     stacked = _stacked([member[2] for member in members])
     raw, status, flags = kind.evaluate_with_warnings(stacked)
+    layout = Layout(raw.names, raw.tables, raw.reasons)
     columns = {key: values.tolist() for key, values in raw.items()}
     flagged = {key: np.asarray(values, dtype=bool).tolist() for key, values in flags.items()}
     codes = status.tolist()
@@ -115,7 +121,8 @@ def _solve_group(documents: Sequence[Document], kind: Kind,
         values = {key: column[row] for key, column in columns.items()}
         raised = [kind.warnings[key] for key, column in flagged.items() if column[row]]
         try:
-            outcomes[index] = _judge(documents[index], kind, spec, values, codes[row], raised)
+            outcomes[index] = _judge(documents[index], kind, spec, values, codes[row], layout,
+                                     raised)
         except SpecError as error:
             outcomes[index] = error
 
@@ -209,11 +216,22 @@ def load_one_spec(path: str | Path) -> tuple[Kind, Spec, Document]:
     return kind, spec, documents[0]
 
 
+@dataclass(frozen=True)
+class Layout:
+    """What the flat keys of one solve are: each key's (SI unit, meaning), and the
+    tables of the results along axes (a drive's bearings, a duty cycle's bins)."""
+
+    names: Mapping[str, tuple[str, str]]
+    tables: tuple[ResultTable, ...] = ()
+    #: status code -> (field at fault, why)
+    reasons: Mapping[int, tuple[str, str]] = field(default_factory=dict)
+
+
 def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
-           code: int, raised: Sequence[str] = ()) -> Evaluation:
+           code: int, layout: Layout, raised: Sequence[str] = ()) -> Evaluation:
     """One spec's results from its solved values and status code."""
     if code:
-        name, reason = kind.status_reasons[code]
+        name, reason = layout.reasons[code]
         name = spec.field_as_written(name)
         written = FieldPath.parse(name).get(document.data)
         # A test of a quantity found from several fields: the field's value is not it.
@@ -222,24 +240,27 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
         raise document.error(f"{reason}{got}", field=name)
     results: dict[str, float | None] = {}
     warnings: list[str] = [*spec.catalogue_notes(), *spec.warnings(), *raised]
+    of_bins = {key for table in layout.tables if table.axis == "bin" for key in table.keys}
     for key, value in raw.items():
         if math.isnan(value):
             raise document.error(f"{key} cannot be computed for this design; please report it")
         if math.isinf(value):
             warnings.append(f"{key} is unbounded (null in JSON): "
-                            + ("the bin is at rest" if bin_column(key) is not None
+                            + ("the bin is at rest" if key in of_bins
                                else "the limit holds however far it goes"))
             results[key] = None
         else:
             results[key] = value
-    units = {key: kind.results[key][0] for key in results}
+    units = {key: layout.names[key][0] for key in results}
     margins = {key: value for key in kind.margins
                if (value := results.get(key)) is not None}
     name = spec.name or _default_name(document)
-    warnings += spec.result_notes(results)
+    warnings += spec.result_notes(results, layout.tables)
+    judged = judge(kind, FlatResults(results, layout.names, layout.tables), margins)
     return Evaluation(document.source, kind.name, name, results, units, margins, warnings,
-                      spec.row_names(), judge(kind, results, margins),
-                      spec.catalogue_sources())
+                      spec.row_names(), judged,
+                      spec.catalogue_sources(),
+                      {key: layout.names[key][1] for key in results}, layout.tables)
 
 
 def _default_name(document: Document) -> str:

@@ -10,16 +10,15 @@ from __future__ import annotations
 
 import functools
 import importlib
-import re
-from collections.abc import Collection, Iterator, Mapping
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
-from bearingcalc.core.common import STATUS_DTYPE
-from bearingcalc.core.solver import BIN_PREFIX, MAX_BINS, Members, Solution, Solver
+from bearingcalc.core.solver import AxisResults, Members, Solution, Solver
+from bearingcalc.result_keys import FlatResults, flatten
 from bearingcalc.verdicts import (
     CONTACT,
     LIFE,
@@ -35,9 +34,8 @@ if TYPE_CHECKING:
 
 #: Status of a design whose inputs are valid but whose results overflow double precision.
 OUT_OF_RANGE = 99
-#: The first status code of a composite's members (the composite's own and the last
-#: guard come before).
-MEMBER_CODES_FROM = 100
+#: The heading of the table of an axis's results, where its rows carry none of their own.
+TABLE_HEADINGS = {"bin": "duty cycle"}
 OUT_OF_RANGE_REASON = ("", "the design's numbers are out of the range of double precision; "
                        "check the magnitudes of the inputs")
 
@@ -82,7 +80,7 @@ class Kind:
         return importlib.import_module(self.solver_path).SOLVER  # type: ignore[no-any-return]
 
     def evaluate(self, inputs: Mapping[str, Any], wanted: Collection[str] | None = None
-                 ) -> tuple[dict[str, NDArray], NDArray]:
+                 ) -> tuple[FlatResults, NDArray]:
         """Results and status codes (0 = feasible) of the solver on SI ``inputs``.
 
         ``wanted`` names the results the caller needs; a solver may compute only
@@ -95,40 +93,64 @@ class Kind:
 
     def evaluate_with_warnings(self, inputs: Mapping[str, Any],
                                wanted: Collection[str] | None = None
-                               ) -> tuple[dict[str, NDArray], NDArray, dict[str, NDArray]]:
-        """:meth:`evaluate`, plus where each of the solver's warnings holds."""
+                               ) -> tuple[FlatResults, NDArray, dict[str, NDArray]]:
+        """:meth:`evaluate`, plus where each of the solver's warnings holds. The results
+        carry each flat key's unit and meaning and the tables along axes
+        (:class:`~bearingcalc.result_keys.FlatResults`)."""
         with np.errstate(all="ignore"):
             solution = self.solver.evaluate(inputs, wanted)
             duty = self.solver.duty
             if duty is not None and inputs.get("duty_time") is not None:
                 solution = duty.combine(solution, inputs)
-            status = self._with_member_failures(solution)
-            for key, values in solution.results.items():
-                finite = np.isfinite(values)
-                if key in self.unbounded or bin_column(key) in self._unbounded_columns:
-                    finite |= values == np.inf
-                if not finite.all():
-                    status = np.where(finite | (status != 0), status, STATUS_DTYPE(OUT_OF_RANGE))
-        return solution.results, status, solution.warnings
+            status, reasons = self._statuses(solution)
+            status = self._out_of_range(solution, status)
+            flat = flatten(solution.results, solution.along, self.results, self.along,
+                           TABLE_HEADINGS)
+        flat.reasons = reasons
+        return flat, status, solution.warnings
 
-    def _with_member_failures(self, solution: Solution) -> NDArray:
-        """The solution's status, where the design itself is possible but a member is not
-        given that member's code (see :meth:`status_reasons`)."""
-        members = self.solver.members
-        status = solution.status
-        if members is None:
-            return status
-        for index, name in enumerate(members.names):
-            codes = solution.members.get(name)
-            if codes is not None and np.any(codes):
-                offset = STATUS_DTYPE(self._member_offset(index))
-                status = np.where((status == 0) & (codes != 0), offset + codes, status)
+    def _out_of_range(self, solution: Solution, status: NDArray) -> NDArray:
+        """``OUT_OF_RANGE`` where the solver calls a design feasible but one of its
+        results, of one value or along an axis, is not finite (and may not be +inf)."""
+        checks = [(values, key in self.unbounded) for key, values in solution.results.items()]
+        for axis, along in solution.along.items():
+            unbounded = self.along[axis].unbounded
+            checks += [(np.asarray(values)[[along.has(column, row)
+                                            for row in range(len(along.rows))]],
+                        column in unbounded) for column, values in along.values.items()]
+        for values, unbounded in checks:
+            finite = np.isfinite(values)
+            if unbounded:
+                finite |= values == np.inf
+            if finite.shape != np.shape(status):  # rows along an axis: every one counts
+                finite = finite.all(axis=0) if finite.ndim > np.ndim(status) else finite
+            if not finite.all():
+                status = np.where(finite | (status != 0), status, np.int32(OUT_OF_RANGE))
         return status
 
-    def _member_offset(self, index: int) -> int:
+    def _statuses(self, solution: Solution) -> tuple[NDArray, dict[int, tuple[str, str]]]:
+        """Each design's status and what each code means, for this solution.
+
+        A design the solver finds possible but one of whose members (a drive's bearing)
+        the member's solver refuses gets a code of that member's reason: the codes
+        enumerate the solver's own reasons, the last guard (``OUT_OF_RANGE``), then each
+        member of the solution in turn with each of its solver's reasons, so the table
+        follows the members the spec has, however many.
+        """
+        reasons = {**self.solver.status_reasons, OUT_OF_RANGE: OUT_OF_RANGE_REASON}
+        status = np.asarray(solution.status).astype(np.int32)
         members = self.solver.members
-        assert members is not None
-        return MEMBER_CODES_FROM + index * (max(members.solver.status_reasons) + 1)
+        if members is None:
+            return status, reasons
+        own = members.solver.status_reasons
+        for name, member_status in solution.members.items():
+            table = np.zeros(max(own) + 1, dtype=np.int32)
+            for code, (blamed, why) in own.items():
+                table[code] = composite = max(reasons) + 1
+                reasons[composite] = _member_reason(members, name, blamed, why)
+            codes = np.asarray(member_status)
+            status = np.where((status == 0) & (codes != 0), table[codes], status)
+        return status, reasons
 
     def limit_values(self, inputs: Mapping[str, Any]) -> dict[str, float]:
         """Result key -> its symmetric limit, read from the solver ``inputs`` (a limit is
@@ -146,33 +168,25 @@ class Kind:
 
     @functools.cached_property
     def results(self) -> Mapping[str, tuple[str, str]]:
-        """Result key -> (SI unit, meaning), in report order; with a duty cycle also the
-        cycle's own results and each bin's (``duty_3_speed``)."""
+        """Result key -> (SI unit, meaning) of the results of one value per design, in
+        report order; with a duty cycle also the cycle's own. Results along an axis are
+        named by :func:`~bearingcalc.result_keys.flatten`, per solution."""
         duty = self.solver.duty
         if duty is None:
             return self.solver.results
-        return ResultCatalogue({**self.solver.results, **duty.results}, duty.columns)
+        return {**self.solver.results, **duty.results}
 
-    @property
-    def _unbounded_columns(self) -> tuple[str, ...]:
-        return () if self.solver.duty is None else self.solver.duty.unbounded
+    @functools.cached_property
+    def along(self) -> Mapping[str, AxisResults]:
+        """Axis -> the results the kind's solver declares along it, a duty cycle's bins
+        among them."""
+        duty = self.solver.duty
+        return {**self.solver.along, **({} if duty is None else {"bin": duty.bins})}
 
     @property
     def groups(self) -> Mapping[str, tuple[str, ...]]:
         """Table heading -> its results, for kinds with many results (else empty)."""
         return self.solver.groups
-
-    @functools.cached_property
-    def matrices(self) -> Mapping[str, tuple[tuple[str, ...], tuple[str, ...]]]:
-        """Table heading -> (row prefixes, column suffixes): results shown as a small
-        table of their own, a row per member (``pinion_bearing_1``) or per bin of a duty
-        cycle (``duty_1``) and a column per quantity (``radial_load``), whose keys are
-        ``{row}_{column}``."""
-        duty = self.solver.duty
-        if duty is None:
-            return self.solver.matrices
-        bins = tuple(f"{BIN_PREFIX}{k}" for k in range(1, MAX_BINS + 1))
-        return {**self.solver.matrices, "duty cycle": (bins, tuple(duty.columns))}
 
     @property
     def display(self) -> Mapping[str, tuple[str, float]]:
@@ -191,74 +205,20 @@ class Kind:
 
     @functools.cached_property
     def status_reasons(self) -> dict[int, tuple[str, str]]:
-        """Status code -> (field at fault, why): the solver's own; for a composite, each
-        member's codes after ``MEMBER_CODES_FROM``, naming the member's field (or the
-        composite's field that sets it); and the last guard, ``OUT_OF_RANGE``."""
-        solver = self.solver
-        reasons = dict(solver.status_reasons)
-        if solver.members is not None:
-            for index, name in enumerate(solver.members.names):
-                offset = self._member_offset(index)
-                for code, (field, why) in solver.members.solver.status_reasons.items():
-                    where = _member_field(solver.members, name, field)
-                    # The composite's own field (a drive's torque) at fault: say which
-                    # member it fails.
-                    reasons[offset + code] = (where, why if where.startswith(name)
-                                              else type(why)(f"at {name}, {why}"))
-        reasons[OUT_OF_RANGE] = OUT_OF_RANGE_REASON
-        return reasons
+        """Status code -> (field at fault, why) of the kind's own solver and the last
+        guard, ``OUT_OF_RANGE``; a composite's members' codes come with each solution
+        (``FlatResults.reasons``)."""
+        return {**self.solver.status_reasons, OUT_OF_RANGE: OUT_OF_RANGE_REASON}
 
 
-_BIN_KEY = re.compile(rf"{BIN_PREFIX}(\d+)_(.+)")
-
-
-def bin_column(key: str) -> str | None:
-    """The column of a per-bin result key (``duty_3_speed`` -> ``speed``), else None."""
-    found = _BIN_KEY.fullmatch(key)
-    return found.group(2) if found else None
-
-
-class ResultCatalogue(Mapping[str, tuple[str, str]]):
-    """A kind's results, (SI unit, meaning) by key, with the per-bin results of a duty
-    cycle found by their column; iterating gives the kind's own results only."""
-
-    def __init__(self, results: Mapping[str, tuple[str, str]],
-                 columns: Mapping[str, tuple[str, str]]) -> None:
-        self._results = dict(results)
-        self._columns = dict(columns)
-
-    def __getitem__(self, key: str) -> tuple[str, str]:
-        if key in self._results:
-            return self._results[key]
-        column = bin_column(key)
-        if column is None or column not in self._columns:
-            raise KeyError(key)
-        unit, meaning = self._columns[column]
-        return unit, f"bin {_BIN_KEY.fullmatch(key).group(1)}: {meaning}"  # type: ignore[union-attr]
-
-    def __contains__(self, key: object) -> bool:
-        if not isinstance(key, str):
-            return False
-        try:
-            self[key]  # type: ignore[index]
-        except KeyError:
-            return False
-        return True
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(self._results)
-
-    def __len__(self) -> int:
-        return len(self._results)
-
-
-def _member_field(members: Members, name: str, field: str) -> str:
-    """The composite's name for a member's field: ``pinion_bearings.2.ball_count``, or the
-    composite's own field where it sets the member's (a bearing's speed is input_speed)."""
+def _member_reason(members: Members, name: str, field: str, why: str) -> tuple[str, str]:
+    """A member's reason in the composite's words: its field named in the composite
+    (``pinion_bearings.2.ball_count``), or the composite's own field that sets it (a
+    bearing's speed is the drive's input_speed), saying which member it fails."""
     root, dot, rest = field.partition(".")
     if root in members.set_by_composite:
-        return members.set_by_composite[root] + dot + rest
-    return f"{name}.{field}"
+        return members.set_by_composite[root] + dot + rest, type(why)(f"at {name}, {why}")
+    return f"{name}.{field}", why
 
 
 KINDS: dict[str, Kind] = {

@@ -4,7 +4,6 @@ same solver, all written by :func:`bearingcalc.reports.html.report_html`."""
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -87,11 +86,10 @@ def _plots(kind: Any, spec: Any, evaluation: Any) -> list[tuple[str, str]]:
     """The plots that fit the kind: a bearing's life against its load, a drive's
     bearings' lives against the required life, a duty cycle's damage per bin."""
     plots = []
-    results = evaluation.results
-    shares = sorted((key for key in results if re.fullmatch(r"duty_\d+_damage_share", key)),
-                    key=lambda key: int(key.split("_")[1]))
+    bins = _table(evaluation, "bin")
+    shares = bins is not None and "damage_share" in bins.columns
     if shares:
-        plots.append(_damage_plot(evaluation, shares))
+        plots.append(_damage_plot(evaluation, bins))
     elif kind.name in ("rolling-bearing", "ball-bearing"):
         curve = _life_against_load(kind, spec, evaluation)
         if curve is not None:
@@ -153,11 +151,18 @@ def _life_against_load(kind: Any, spec: Any, evaluation: Any) -> tuple[str, str]
             "(ISO 281, the same solver as the results above).", svg_of(draw))
 
 
+def _table(evaluation: Any, axis: str) -> Any:
+    """The first table of the results along ``axis``, or None."""
+    return next((table for table in evaluation.tables if table.axis == axis), None)
+
+
 def _drive_lives(evaluation: Any) -> tuple[str, str]:
     results = evaluation.results
-    keys = [key for key in results if key.endswith("_modified_rating_life")
-            and not key.startswith("duty_")]  # the whole cycle's, not a bin's
-    names = [key.removesuffix("_modified_rating_life").replace("_", " ") for key in keys]
+    bearings = [(row, key) for table in evaluation.tables if table.axis == "member"
+                for row, key in zip(table.rows, table.column("modified_rating_life"),
+                                    strict=True) if key is not None]
+    keys = [key for _, key in bearings] + ["system_modified_rating_life"]
+    names = [row.replace("_", " ") for row, _ in bearings] + ["system"]
     lives = np.array([np.inf if results[key] is None else results[key] / 3600.0
                       for key in keys])
     required = _required_life(evaluation)
@@ -181,12 +186,13 @@ def _drive_lives(evaluation: Any) -> tuple[str, str]:
             "life.", svg_of(draw))
 
 
-def _damage_plot(evaluation: Any, shares: list[str]) -> tuple[str, str]:
+def _damage_plot(evaluation: Any, table: Any) -> tuple[str, str]:
     results = evaluation.results
-    bins = [evaluation.row_names.get(key.rsplit("_", 2)[0], key.split("_")[1])
-            for key in shares]
+    shares = table.column("damage_share")
+    bins = [evaluation.row_names.get(row, str(position + 1))
+            for row, position in zip(table.rows, table.positions, strict=True)]
     damage = [100.0 * (results[key] or 0.0) for key in shares]
-    times = [100.0 * (results.get(key.replace("damage", "time")) or 0.0) for key in shares]
+    times = [100.0 * (results.get(key) or 0.0) for key in table.column("time_share")]
 
     def draw(axes: Any) -> None:
         positions = np.arange(len(shares))
@@ -208,10 +214,13 @@ def _shaft_loads(spec: Any, evaluation: Any) -> tuple[str, str] | None:
 
     results = evaluation.results
     shafts = spec.solver_inputs()["shafts"]
+    # the bearings' tables come a shaft each, in the shafts' order
+    tables = iter(table for table in evaluation.tables if table.axis == "member")
     drawn = []
     for shaft, gear in (("pinion", "a"), ("gear", "b")):
         if shaft not in shafts:
             continue
+        loads = [results[key] for key in next(tables).column("radial_load")]
         positions = tuple(float(bearing["position"]) for bearing in shafts[shaft])
         angle = results[f"gear_{gear}_pitch_angle"]
         mesh, radius = (float(v) for v in mean_pitch_point(results["mean_cone_distance"],
@@ -222,7 +231,6 @@ def _shaft_loads(spec: Any, evaluation: Any) -> tuple[str, str] | None:
         moment_y, moment_z = shaft_bending_moments(
             x, positions, mesh, radius, results["tangential_force"],
             results[f"gear_{gear}_radial_force"], results[f"gear_{gear}_axial_force"])
-        loads = [results[f"{shaft}_bearing_{i}_radial_load"] for i in (1, 2)]
         drawn.append((shaft, x, np.hypot(moment_y, moment_z), positions, mesh, loads))
     if not drawn:
         return None

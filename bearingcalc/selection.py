@@ -252,9 +252,9 @@ def _solve_group(kind: Kind, document: Document, base: dict[str, Any], position:
     prefix = f"{position}." if position else ""
     values = {f"{prefix}{name}": np.array([fields_of[id(row)][name][1] for row in rest])
               for name in names}
-    results, status = evaluate_with(kind, template, values)
+    solved, status = evaluate_with(kind, template, values)
     count = len(rest)
-    results = {key: np.broadcast_to(value, (count,)) for key, value in results.items()}
+    results = {key: np.broadcast_to(value, (count,)) for key, value in solved.items()}
     status = np.broadcast_to(status, (count,))
     margin_keys = [key for key in judged if key in results]
     ok = status == 0
@@ -268,13 +268,13 @@ def _solve_group(kind: Kind, document: Document, base: dict[str, Any], position:
     for row, code, ok, values in zip(rest, codes, passed, zip(
             *(results[key].tolist() for key in keys), strict=True), strict=True):
         if code:
-            field_name, why = kind.status_reasons[int(code)]
+            field_name, why = solved.reasons[int(code)]
             candidates.append(Candidate(row, False, problem=f"{field_name}: {why}"
                                         if field_name else why))
             continue
         scalar = dict(zip(keys, values, strict=True))
         margins = {key: scalar[key] for key in margin_keys}
-        candidates.append(Candidate(row, ok, judge(kind, scalar, margins)))
+        candidates.append(Candidate(row, ok, judge(kind, solved.with_values(scalar), margins)))
     return candidates
 
 
@@ -283,16 +283,16 @@ def _note_the_pair(kind: Kind, results: dict[str, Any], status: Any,
     """A drive's gear pair that misses its own limits misses them whatever the bearing:
     said once."""
     feasible = np.flatnonzero(status == 0)
-    if feasible.size == 0 or any(note.startswith("the gear pair") for note in notes):
+    if feasible.size == 0:
         return
     i = int(feasible[0])
     scalar = {key: float(value[i]) for key, value in results.items()}
     margins = {key: scalar[key] for key in kind.margins
                if key in scalar and key not in judged}
     missed = [verdict_line(v) for v in judge(kind, scalar, margins) if not v.passed]
-    if missed:
-        notes.append(f"the gear pair misses its own limits, whatever the bearing: "
-                     f"{'; '.join(missed)}")
+    note = f"the gear pair misses its own limits, whatever the bearing: {'; '.join(missed)}"
+    if missed and note not in notes:  # the same pair under every type's rows
+        notes.append(note)
 
 
 def _reason(error: SpecError) -> str:

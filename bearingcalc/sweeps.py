@@ -21,6 +21,7 @@ from bearingcalc.kinds import Kind
 from bearingcalc.models.base import Spec, field_parser
 from bearingcalc.models.field_path import NOT_INPUTS, FieldPathError, resolve_field
 from bearingcalc.models.yaml_loader import Document
+from bearingcalc.result_keys import FlatResults
 from bearingcalc.variation import evaluate_with, invalid_at
 from bearingcalc.wording import plural
 
@@ -53,8 +54,8 @@ class Sweep:
     name: str
     axes: list[Axis]
     inputs: dict[str, NDArray]        # axis name -> value at each point
-    results: dict[str, NDArray]       # key -> value at each point, NaN where infeasible
-    status: NDArray                   # 0 feasible, else a key of kind.status_reasons
+    results: FlatResults              # key -> value at each point, NaN where infeasible
+    status: NDArray                   # 0 feasible, else a key of results.reasons
     limits: dict[str, float]          # result key -> symmetric limit value
     warnings: list[str] = field(default_factory=list)
     #: 'catalogue_source: ...' of each bearing taken from a catalogue
@@ -62,11 +63,11 @@ class Sweep:
 
     @property
     def units(self) -> dict[str, str]:
-        return {key: self.kind.results[key][0] for key in self.results}
+        return {key: self.results.names[key][0] for key in self.results}
 
     def reason(self, code: int) -> str:
         """The words for a status code: 'field: why'."""
-        field, why = self.kind.status_reasons[code]
+        field, why = self.results.reasons[code]
         return f"{field}: {why}" if field else why
 
     @property
@@ -198,8 +199,8 @@ def run_sweep(kind: Kind, spec: Spec, source: str, axes: list[Axis]) -> Sweep:
     results, status = evaluate_with(kind, spec, inputs)
     feasible = status == 0
     shape = (points,)
-    solved = {key: np.where(feasible, np.broadcast_to(value, shape), np.nan)
-              for key, value in results.items()}
+    solved = results.with_values({key: np.where(feasible, np.broadcast_to(value, shape), np.nan)
+                                  for key, value in results.items()})
     limits = kind.limit_values(spec.solver_inputs())
     name = spec.name or source
     cited = [f"{key}: {value}" for key, value in spec.catalogue_sources().items()]

@@ -22,6 +22,7 @@ from bearingcalc.models.base import Spec
 from bearingcalc.models.field_path import FieldPath, replaced, resolve_field
 from bearingcalc.models.quantities import Measured, Tolerance
 from bearingcalc.models.yaml_loader import Document
+from bearingcalc.result_keys import FlatResults
 
 
 def toleranced_fields(spec: BaseModel, prefix: str = "") -> dict[str, Tolerance]:
@@ -52,7 +53,7 @@ def with_values(spec: Any, values: Mapping[str, ArrayLike]) -> Any:
 
 
 def evaluate_with(kind: Kind, spec: Spec, values: Mapping[str, ArrayLike],
-                  wanted: Collection[str] | None = None) -> tuple[dict[str, NDArray], NDArray]:
+                  wanted: Collection[str] | None = None) -> tuple[FlatResults, NDArray]:
     """Results and status codes of ``spec`` with ``values`` in place of its fields."""
     varied = with_values(spec, values) if values else spec
     return kind.evaluate(varied.solver_inputs(), wanted)

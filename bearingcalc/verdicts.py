@@ -64,9 +64,12 @@ class Judged:
 
 
 def smallest_bearing_safety(results: Mapping[str, float | None]) -> float | None:
-    """The smallest s0 of a drive's bearings."""
-    found = [value for key, value in results.items()
-             if key.endswith("_static_safety_factor") and value is not None]
+    """The smallest s0 of a drive's bearings, read from the tables of its results along
+    the member axis (``results.tables``, as :class:`~bearingcalc.result_keys.FlatResults`
+    carries them)."""
+    found = [value for table in getattr(results, "tables", ()) if table.axis == "member"
+             for key in table.column("static_safety_factor")
+             if key is not None and (value := results.get(key)) is not None]
     return min(found) if found else None
 
 

@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 
 from bearingcalc.core import ball_bearing, bevel_drive, iso281
-from bearingcalc.core.common import STATUS_DTYPE
-from bearingcalc.kinds import KINDS
+from bearingcalc.evaluation import load_one_spec
+from bearingcalc.kinds import KINDS, OUT_OF_RANGE
 from tests.conftest import ROOT, WARNINGS_AS_ERRORS, solve_json
 
 CATALOGUE = """kind: ball-bearing
@@ -203,21 +203,40 @@ def test_a_sweep_through_coinciding_bearings_names_the_position(cli):
 
 
 def test_drive_bearing_status_codes_never_overlap():
-    """Every bearing's every failure has a code of its own, apart from the drive's."""
+    """Every bearing's every failure has a code of its own in the solve's reasons, apart
+    from the drive's own codes and the last guard, naming the bearing's field (or the
+    drive's own field that sets it)."""
     drive = KINDS["bevel-drive"]
-    own = len(bevel_drive.STATUS_REASONS)
+    spec = load_one_spec(ROOT / "specs" / "bevel-drive.yaml")[1]
+    results, _ = drive.evaluate(spec.solver_inputs())
+    reasons = results.reasons
+    own = set(drive.status_reasons)
+    assert own == set(bevel_drive.STATUS_REASONS) | {OUT_OF_RANGE}
+    of_members = set(reasons) - own
     per_bearing = len(bevel_drive.BEARINGS.solver.status_reasons)
-    bearings = len(bevel_drive.BEARINGS.names)
-    assert len(drive.status_reasons) == own + bearings * per_bearing + 1  # + the last guard
-    assert max(bevel_drive.STATUS_REASONS) < 99 < min(set(drive.status_reasons)
-                                                      - set(bevel_drive.STATUS_REASONS) - {99})
-    assert max(drive.status_reasons) <= np.iinfo(STATUS_DTYPE).max
-    assert drive.status_reasons[drive._member_offset(3) + 1] == (
-        "gear_bearings.2.ball_diameter", ball_bearing.STATUS_REASONS[1][1])
-    assert drive.status_reasons[drive._member_offset(0) + 7][0] == "input_speed"
-    assert drive.status_reasons[drive._member_offset(1) + 13][0] == "lubrication.temperature"
-    assert drive.status_reasons[drive._member_offset(2) + 18][0] == (
-        "gear_bearings.1.roller_diameter")
+    assert len(of_members) == 4 * per_bearing  # two shafts of two bearings
+    assert min(of_members) > max(own)
+    assert ("gear_bearings.2.ball_diameter", ball_bearing.STATUS_REASONS[1][1]) in \
+        reasons.values()
+    fields = {field for field, _ in reasons.values()}
+    assert {"input_speed", "lubrication.temperature", "gear_bearings.1.roller_diameter",
+            "pinion_bearings.1.ball_diameter"} <= fields
+
+
+def test_a_failing_bearing_is_named_by_its_own_reason():
+    """A bearing the rolling-bearing solver refuses fails the drive with that bearing's
+    reason: the code of the solve maps back to the bearing's field."""
+    drive = KINDS["bevel-drive"]
+    spec = load_one_spec(ROOT / "specs" / "bevel-drive.yaml")[1]
+    inputs = spec.solver_inputs()
+    bearing = inputs["shafts"]["gear"][1]
+    bearing["viscosity"] = np.array([bearing["viscosity"], 1e-9])  # κ far below 0.1
+    results, status = drive.evaluate(inputs)
+    assert status[0] == 0
+    field, why = results.reasons[int(status[1])]
+    # the drive's lubrication sets the bearing's: the reason names it, and the bearing
+    assert field == "lubrication"
+    assert why == f"at gear_bearings.2, {ball_bearing.STATUS_REASONS[5][1]}"
 
 
 # --- a tolerance box crossing a validity edge ---------------------------------------------

@@ -24,6 +24,12 @@ from bearingcalc.core.iso281 import (
 )
 
 
+def life_margin(life: ArrayLike, required: ArrayLike) -> NDArray:
+    """L/L_req − 1: the share by which a life exceeds its requirement (below 0 where it
+    falls short). [1] of lives in the same unit."""
+    return np.asarray(life, dtype=float) / np.asarray(required, dtype=float) - 1.0
+
+
 def operating_point(inputs: Mapping[str, ArrayLike | str | None]
                     ) -> tuple[NDArray, NDArray, NDArray, NDArray]:
     """(α [rad], Fr [N], Fa [N], n [rad/s]) of a bearing's solver inputs, as arrays."""
@@ -129,4 +135,4 @@ def rating_life(inputs: Mapping[str, ArrayLike | str | None], thrust: bool, spee
     })
     min_life = inputs.get("min_rating_life")
     if min_life is not None:
-        out["life_margin"] = lnm / revolutions_per_second / np.asarray(min_life) - 1.0
+        out["life_margin"] = life_margin(lnm / revolutions_per_second, min_life)

@@ -1,39 +1,54 @@
-"""A bevel drive: a bevel pair on two shafts, each on two rolling bearings, from the
+"""A bevel drive: a bevel pair on two shafts, each on its rolling bearings, from the
 input torque to every bearing's life (``docs/physics.md`` §9).
 
 The pair is solved by :mod:`bearingcalc.core.bevel_gears` and each bearing by
-:mod:`bearingcalc.core.rolling_bearing`; this module adds the statics of each shaft,
-the axial loads of a locating bearing or of two bearings adjusted against each other
-(:mod:`bearingcalc.core.arrangements`), and the system life. Inputs are SI floats or
-broadcasting arrays.
+:mod:`bearingcalc.core.rolling_bearing`; this module adds the statics of each shaft
+(:mod:`bearingcalc.core.shaft_statics`: two bearings, located or adjusted against each
+other) and the system life. A shaft holds a list of bearings: one of any other number
+is refused by the statics alone. The bearings' results run along the ``member`` axis;
+a duty cycle solves the same path per bin and combines the pair's and each bearing's
+bins by their own kinds' rules. Inputs are SI floats or broadcasting arrays.
 """
 
 from __future__ import annotations
 
 from collections.abc import Collection, Mapping
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core import bevel_gears, rolling_bearing
-from bearingcalc.core.arrangements import (
-    adjusted_axial_loads,
-    induced_axial_factor_ball,
-    induced_axial_factor_tapered,
-    supports_positive,
-)
+from bearingcalc.core.bearing_life import life_margin
 from bearingcalc.core.common import broadcast_all, first_failure
-from bearingcalc.core.duty_cycle_gears import DRIVE_COLUMNS, DRIVE_CYCLE_RESULTS, drive_cycle
+from bearingcalc.core.duty_cycle import (
+    BIN_MEANING,
+    at_bin,
+    bins_along,
+    cycle_solution,
+    rolling_bearing_cycle,
+)
+from bearingcalc.core.duty_cycle_gears import (
+    DRIVE_COLUMNS,
+    DRIVE_CYCLE_RESULTS,
+    gear_pair_cycle,
+    normalised,
+)
 from bearingcalc.core.roller_bearing import TYPES as ROLLER_TYPES
-from bearingcalc.core.solver import DutyCycle, Members, Solution, Solver
+from bearingcalc.core.shaft_statics import (  # noqa: F401  (the drive's statics, re-exported)
+    ARRANGEMENTS,
+    mean_pitch_point,
+    shaft_axial_loads,
+    shaft_bending_moments,
+    shaft_reactions,
+)
+from bearingcalc.core.solver import Along, AxisResults, DutyCycle, Members, Solution, Solver
 
 #: The Weibull slope of bearing makers' system-life formula: 10/9 when every bearing is a
 #: ball bearing, 9/8 when any is a roller bearing.
 WEIBULL_SLOPE = 10.0 / 9.0
 ROLLER_WEIBULL_SLOPE = 9.0 / 8.0
-#: How a shaft's two bearings share its axial force.
-ARRANGEMENTS = ("locating-floating", "back-to-back", "face-to-face")
 #: The load cases of an adjusted pair, as the table shows them.
 LOAD_CASES = {1.0: "1a", 2.0: "1b", 3.0: "1c", 4.0: "2a", 5.0: "2b", 6.0: "2c"}
 SHAFTS = ("pinion", "gear")
@@ -51,16 +66,26 @@ BEARING_RESULTS: dict[str, tuple[str, str]] = {
 }
 
 
+#: A shaft's statics take this many bearings (more is statically indeterminate).
+BEARINGS_PER_SHAFT = 2
+
+
 def _bearing_names() -> list[str]:
-    return [f"{shaft}_bearing_{i}" for shaft in SHAFTS for i in (1, 2)]
+    """The bearings' rows along the member axis, for the statics' two per shaft."""
+    return [_row(shaft, i) for shaft in SHAFTS for i in range(1, BEARINGS_PER_SHAFT + 1)]
 
 
-#: Result keys, their SI unit and meaning, in report order: the pair's, then the drive's.
+def _row(shaft: str, position: int) -> str:
+    """A bearing's row along the member axis (``pinion_bearing_2``), and the stem of
+    its flat result keys."""
+    return f"{shaft}_bearing_{position}"
+
+
+#: Results of one value per design, their SI unit and meaning, in report order: the
+#: pair's, then the drive's; the bearings' follow ``gear_speed`` along the member axis.
 RESULTS: dict[str, tuple[str, str]] = {
     **bevel_gears.RESULTS,
     "gear_speed": ("rad/s", "the gear shaft's speed, input_speed·z1/z2"),
-    **{f"{name}_{key}": value for name in _bearing_names()
-       for key, value in BEARING_RESULTS.items()},
     "system_basic_rating_life": ("s", "(Σ L10ᵢ^(−e))^(−1/e), e = 10/9 (9/8 with a roller "
                                       "bearing)"),
     "system_modified_rating_life": ("s", "(Σ Lnmᵢ^(−e))^(−1/e), e = 10/9 (9/8 with a "
@@ -75,11 +100,11 @@ GROUPS: dict[str, tuple[str, ...]] = {
     "system": ("gear_speed", "system_basic_rating_life", "system_modified_rating_life",
                "life_margin", "static_safety_margin"),
 }
-MATRICES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
-    f"{shaft} shaft bearings": ((f"{shaft}_bearing_1", f"{shaft}_bearing_2"),
-                                tuple(BEARING_RESULTS))
-    for shaft in SHAFTS
-}
+#: The bearings' results, a row per bearing under its shaft's heading.
+MEMBER_RESULTS = AxisResults(BEARING_RESULTS, after="gear_speed")
+#: A bin's results of a drive's duty cycle.
+DRIVE_BINS = AxisResults(DRIVE_COLUMNS, by_row=False, meaning=BIN_MEANING,
+                         unbounded=("system_modified_rating_life",))
 
 WARNINGS: dict[str, str] = {
     **bevel_gears.WARNINGS,
@@ -96,12 +121,18 @@ WARNINGS: dict[str, str] = {
 ONE_WAY_TYPES = ("angular-contact", "tapered-roller")
 ONE_WAY_ARRANGEMENTS = ("single", "tandem")
 
-#: The drive's own status codes: the pair's (1-8), then a shaft's coinciding bearings.
+#: The drive's own status codes: the pair's (1-8), then a shaft's coinciding bearings,
+#: then a shaft on a number of bearings its statics do not take.
 COINCIDING_BEARINGS = {"pinion": 20, "gear": 21}
+BEARING_COUNT = {"pinion": 22, "gear": 23}
 STATUS_REASONS: dict[int, tuple[str, str]] = {
     **bevel_gears.STATUS_REASONS,
     **{code: (f"{shaft}_bearings.2.position", "two bearings at the same position cannot "
               "carry the shaft's moment") for shaft, code in COINCIDING_BEARINGS.items()},
+    **{code: (f"{shaft}_bearings", f"the shaft's statics take exactly "
+              f"{BEARINGS_PER_SHAFT} bearings: on more the shaft is statically "
+              "indeterminate, and how its bearings share the load depends on their "
+              "stiffness") for shaft, code in BEARING_COUNT.items()},
 }
 #: The bearings, by their names in the spec, each solved as a ``kind: rolling-bearing``.
 #: Their loads and speeds come from the drive: a bearing refused for its load or speed
@@ -111,91 +142,6 @@ BEARINGS = Members(rolling_bearing.SOLVER,
                    tuple(f"{shaft}_bearings.{i}" for shaft in SHAFTS for i in (1, 2)),
                    {"lubrication": "lubrication", "speed": "input_speed",
                     "radial_load": "torque", "axial_load": "torque"})
-
-
-def shaft_reactions(positions: tuple[ArrayLike, ArrayLike], mesh_position: ArrayLike,
-                    mesh_radius: ArrayLike, tangential: ArrayLike, radial: ArrayLike,
-                    axial: ArrayLike) -> tuple[NDArray, NDArray]:
-    r"""Radial loads of the two simple supports of a rigid shaft carrying a gear force.
-
-    x runs along the shaft from the pitch-cone apex toward the gear's back face; the
-    mean pitch point is at x_p, at radius r_p from the axis. The gear force there has
-    W_t across the plane of the axis and the pitch point, W_r toward the axis and W_a
-    along +x (away from the apex). Moments about the first support in the two planes:
-
-    .. math:: R_{2y} = \frac{W_r(x_p - x_1) + W_a r_p}{x_2 - x_1}, \quad
-              R_{1y} = W_r - R_{2y}, \quad
-              R_{2z} = \frac{W_t(x_p - x_1)}{x_2 - x_1}, \quad R_{1z} = W_t - R_{2z}
-
-    Each bearing's radial load is |(R_y, R_z)|. Straddle (x1 < x_p < x2) and overhung
-    (both supports on one side) mountings alike.
-
-    Parameters
-    ----------
-    positions : (x1, x2) of the bearings. [m]
-    mesh_position, mesh_radius : x_p, r_p of the mean pitch point. [m]
-    tangential, radial, axial : W_t, W_r, W_a. [N]
-
-    Source: statics of a beam on two simple supports (Budynas & Nisbett, *Shigley's
-    Mechanical Engineering Design*, 10th ed., Example 13-8 sets up the same balance).
-    """
-    (r1y, r1z), (r2y, r2z) = _support_forces(positions, mesh_position, mesh_radius,
-                                             tangential, radial, axial)
-    return np.hypot(r1y, r1z), np.hypot(r2y, r2z)
-
-
-def _support_forces(positions: tuple[ArrayLike, ArrayLike], mesh_position: ArrayLike,
-                    mesh_radius: ArrayLike, tangential: ArrayLike, radial: ArrayLike,
-                    axial: ArrayLike) -> tuple[tuple[NDArray, NDArray], tuple[NDArray, NDArray]]:
-    """((R1y, R1z), (R2y, R2z)) of :func:`shaft_reactions`, in the two planes. [N]"""
-    x1, x2 = (np.asarray(x, dtype=float) for x in positions)
-    xp, rp = np.asarray(mesh_position, dtype=float), np.asarray(mesh_radius, dtype=float)
-    wt, wr, wa = (np.asarray(w, dtype=float) for w in (tangential, radial, axial))
-    span = x2 - x1
-    r2y = (wr * (xp - x1) + wa * rp) / span
-    r2z = wt * (xp - x1) / span
-    return (wr - r2y, wt - r2z), (r2y, r2z)
-
-
-def mean_pitch_point(mean_cone_distance: ArrayLike, pitch_angle: ArrayLike
-                     ) -> tuple[NDArray, NDArray]:
-    """(x_p, r_p) = (Rm·cosδ, Rm·sinδ): where a gear's mean pitch point lies along its
-    shaft from the pitch-cone apex, and how far from the axis. [m]"""
-    distance, angle = np.asarray(mean_cone_distance), np.asarray(pitch_angle)
-    return distance * np.cos(angle), distance * np.sin(angle)
-
-
-def shaft_bending_moments(x: ArrayLike, positions: tuple[float, float], mesh_position: float,
-                          mesh_radius: float, tangential: float, radial: float,
-                          axial: float) -> tuple[NDArray, NDArray]:
-    r"""The bending moment along a shaft of :func:`shaft_reactions`, in its two planes.
-
-    With the supports' reactions from the balance of the whole shaft, the moment at a
-    section x is that of every force on the side nearer the apex (x' < x):
-
-    .. math:: M_y(x) = \sum_i R_{iy}\langle x - x_i\rangle - W_r\langle x - x_p\rangle
-              + W_a r_p H(x - x_p), \quad
-              M_z(x) = \sum_i R_{iz}\langle x - x_i\rangle - W_t\langle x - x_p\rangle
-
-    (⟨u⟩ = max(u, 0), H the unit step; W_a r_p is the couple of the axial force at
-    the pitch point). Both vanish beyond the last force, and each slope jumps by the
-    reaction at a support. [N·m] at x [m]; inputs as in :func:`shaft_reactions`.
-
-    Source: singularity functions of a beam, Budynas & Nisbett, *Shigley's Mechanical
-    Engineering Design*, 10th ed., §3-3.
-    """
-    x = np.asarray(x, dtype=float)
-    first, second = _support_forces(positions, mesh_position, mesh_radius, tangential,
-                                    radial, axial)
-    reactions = ((positions[0], *first), (positions[1], *second))
-
-    def arm(at: float) -> NDArray:
-        return np.maximum(x - at, 0.0)
-
-    moment_y = sum(ry * arm(at) for at, ry, _ in reactions) - radial * arm(mesh_position) \
-        + axial * mesh_radius * (x > mesh_position)
-    moment_z = sum(rz * arm(at) for at, _, rz in reactions) - tangential * arm(mesh_position)
-    return np.asarray(moment_y), np.asarray(moment_z)
 
 
 def system_life(lives: list[NDArray], slope: float = WEIBULL_SLOPE) -> NDArray:
@@ -209,128 +155,273 @@ def system_life(lives: list[NDArray], slope: float = WEIBULL_SLOPE) -> NDArray:
     return np.sum(stacked ** -slope, axis=0) ** (-1.0 / slope)
 
 
-def induced_axial_factor(bearing: Mapping[str, Any]) -> NDArray:
-    """R of one bearing of an adjusted pair: the spec's ``induced_axial_factor``, else
-    0.5/Y for a tapered roller bearing (the catalogue's Y above e, or ISO's 0.4·cotα) and
-    the makers' table against α for an angular-contact ball bearing."""
-    if bearing.get("induced_axial_factor") is not None:
-        return np.asarray(bearing["induced_axial_factor"], dtype=float)
-    alpha = np.asarray(bearing["contact_angle"], dtype=float)
-    if bearing["bearing_type"] == "tapered-roller":
-        y = bearing.get("load_y")
-        return induced_axial_factor_tapered(0.4 / np.tan(alpha) if y is None else y)
-    return induced_axial_factor_ball(alpha)
 
+@dataclass(frozen=True)
+class MountedBearing:
+    """One bearing on its shaft, solved: its row along the member axis, its name in the
+    spec, the shaft's heading, the loads from the statics [N], and its own solution as
+    a rolling bearing (per bin, in a duty cycle)."""
 
-def shaft_axial_loads(arrangement: str, bearings: list[Mapping[str, Any]],
-                      radial: tuple[NDArray, NDArray], axial_force: NDArray
-                      ) -> tuple[list[NDArray], dict[str, list[NDArray]]]:
-    """Each bearing's axial load, and for an adjusted pair the induced forces and the
-    load case of each. Locating-floating: the locating bearing takes the whole force."""
-    if arrangement == "locating-floating":  # a spiral pair's force may point either way
-        return [np.abs(axial_force) if bearing["locating"] == "locating"
-                else np.zeros_like(axial_force) for bearing in bearings], {}
-    factors = [induced_axial_factor(bearing) for bearing in bearings]
-    positions = [np.asarray(bearing["position"], dtype=float) for bearing in bearings]
-    # Cases 1: Ka acts in the direction the second bearing supports.
-    second_positive = supports_positive(positions[1], positions[0], arrangement)
-    loads = adjusted_axial_loads(radial[0], radial[1], factors[0], factors[1], axial_force,
-                                 second_positive == (axial_force >= 0))
-    case = loads.case
-    return [loads.first, loads.second], {
-        "induced_axial_load": [factors[0] * radial[0], factors[1] * radial[1]],
-        "load_case": [case, case]}
+    row: str
+    member: str
+    heading: str
+    inputs: Mapping[str, Any]
+    loads: dict[str, NDArray]
+    solved: Solution
+
+    @property
+    def roller(self) -> bool:
+        return self.inputs["bearing_type"] in ROLLER_TYPES
 
 
 def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: the pair, each shaft's statics, each bearing's life and the
     system's (see :meth:`bearingcalc.models.bevel_drive.BevelDriveSpec.solver_inputs`).
 
-    ``inputs["shafts"]`` maps a shaft to its two bearings' inputs: ``position``,
-    ``locating``, ``induced_axial_factor`` and a rolling bearing's inputs without loads
-    and speeds; ``inputs["arrangements"]`` maps a shaft to its arrangement. Each bearing's
-    status codes are reported by its name in the spec (``pinion_bearings.2``).
+    ``inputs["shafts"]`` maps a shaft to the list of its bearings' inputs:
+    ``position``, ``locating``, ``induced_axial_factor`` and a rolling bearing's inputs
+    without loads and speeds; ``inputs["arrangements"]`` maps a shaft to its
+    arrangement. Each bearing's status codes are reported by its name in the spec
+    (``pinion_bearings.2``). With a duty cycle every number has the bins first, and
+    the solution keeps the pair's and the bearings' own (``parts``) for
+    :func:`drive_cycle`.
     """
     pair = bevel_gears.evaluate(inputs)
-    out: dict[str, ArrayLike] = dict(pair.results)
-    warnings: dict[str, ArrayLike] = dict(pair.warnings)
     input_speed = np.abs(np.asarray(inputs["input_speed"], dtype=float))
-    ratio = np.asarray(inputs["gear_a_teeth"], dtype=float) / np.asarray(
+    gear_speed = input_speed * np.asarray(inputs["gear_a_teeth"], dtype=float) / np.asarray(
         inputs["gear_b_teeth"], dtype=float)
-    out["gear_speed"] = input_speed * ratio
-    mean_cone = pair.results["mean_cone_distance"]
-    modified, basic, safety, names = [], [], [], []
-    checks: list[tuple[int, NDArray]] = []
-    members: dict[str, NDArray] = {}
-    rollers = False
-    for shaft, speed, delta, gear in (
-            ("pinion", input_speed, pair.results["gear_a_pitch_angle"], "a"),
-            ("gear", input_speed * ratio, pair.results["gear_b_pitch_angle"], "b")):
-        bearings = inputs["shafts"].get(shaft)
-        if bearings is None:
-            continue
-        positions = (bearings[0]["position"], bearings[1]["position"])
-        checks.append((COINCIDING_BEARINGS[shaft],
-                       np.asarray(positions[0]) == np.asarray(positions[1])))
-        axial_force = pair.results[f"gear_{gear}_axial_force"]
-        loads = shaft_reactions(
-            positions, *mean_pitch_point(mean_cone, delta), pair.results["tangential_force"],
-            pair.results[f"gear_{gear}_radial_force"], axial_force)
-        axial_loads, adjusted = shaft_axial_loads(inputs["arrangements"][shaft], bearings,
-                                                  loads, axial_force)
-        for i, (bearing, radial, axial) in enumerate(zip(bearings, loads, axial_loads,
-                                                         strict=True), 1):
-            name = f"{shaft}_bearing_{i}"
-            if (bearing.get("locating") == "locating" and bearing["bearing_type"] in ONE_WAY_TYPES
-                    and bearing.get("arrangement", "single") in ONE_WAY_ARRANGEMENTS):
-                # rows, like every number, may vary along a duty cycle's bins or a study
-                single_row = np.asarray(1.0 if bearing.get("rows") is None
-                                        else bearing["rows"], dtype=float) == 1
-                warnings[f"one_way_{name}_away_from"] = single_row & (axial_force >= 0)
-                warnings[f"one_way_{name}_toward"] = single_row & (axial_force < 0)
-            solved = rolling_bearing.evaluate({
-                **bearing, "radial_load": radial, "axial_load": axial, "speed": speed,
-                "inner_speed": speed, "outer_speed": 0.0, "min_rating_life": None})
-            members[f"{shaft}_bearings.{i}"] = solved.status
-            rollers |= bearing["bearing_type"] in ROLLER_TYPES
-            out[f"{name}_radial_load"] = radial
-            out[f"{name}_axial_load"] = axial
-            for key, values in adjusted.items():
-                out[f"{name}_{key}"] = values[i - 1]
-            for key in ("equivalent_dynamic_load", "basic_rating_life", "modified_rating_life",
-                        "static_safety_factor"):
-                if key in solved.results:
-                    out[f"{name}_{key}"] = solved.results[key]
-            modified.append(solved.results["modified_rating_life"])
-            basic.append(solved.results["basic_rating_life"])
-            names.append(name)
-            if "static_safety_factor" in solved.results:
-                safety.append(solved.results["static_safety_factor"])
-    slope = ROLLER_WEIBULL_SLOPE if rollers else WEIBULL_SLOPE
-    out["system_basic_rating_life"] = system_life(basic, slope)
-    out["system_modified_rating_life"] = system_life(modified, slope)
-    if inputs.get("min_rating_life") is not None:
-        out["life_margin"] = out["system_modified_rating_life"] / np.asarray(
-            inputs["min_rating_life"], dtype=float) - 1.0
-    if safety:
-        out["static_safety_margin"] = np.min(np.stack(np.broadcast_arrays(*safety)), axis=0) \
-            - np.asarray(inputs["min_static_safety"], dtype=float)
-    weakest = np.argmin(np.stack(np.broadcast_arrays(*modified)), axis=0)
-    for i, name in enumerate(names):
-        warnings[f"weakest_{name}"] = weakest == i
-    results = broadcast_all({key: out[key] for key in RESULTS if key in out})
+    checks = [(code, np.asarray(len(inputs["shafts"].get(shaft, ())) != BEARINGS_PER_SHAFT))
+              for shaft, code in BEARING_COUNT.items() if shaft in inputs["shafts"]]
+    if any(refused.any() for _, refused in checks):
+        return _refused(pair, checks)
+    mounted: list[MountedBearing] = []
+    warnings: dict[str, ArrayLike] = dict(pair.warnings)
+    for shaft, speed, gear in (("pinion", input_speed, "a"), ("gear", gear_speed, "b")):
+        if shaft in inputs["shafts"]:
+            found, coinciding = _shaft(inputs, pair, shaft, gear, speed, warnings)
+            mounted += found
+            checks.append((COINCIDING_BEARINGS[shaft], coinciding))
+    results, along, weakest = assemble(pair.results, gear_speed, mounted,
+                                       inputs.get("min_rating_life"),
+                                       inputs["min_static_safety"])
+    warnings.update(weakest)
     shape = np.broadcast_shapes(np.shape(pair.status), *(np.shape(v) for v in results.values()),
                                 *(np.shape(c) for _, c in checks))
     status = np.where(np.broadcast_to(pair.status, shape) != 0,
                       np.broadcast_to(pair.status, shape), first_failure(checks, shape))
-    return Solution(results, status,
+    return Solution(broadcast_all(results), status,
                     {key: np.broadcast_to(np.asarray(flag, dtype=bool), shape)
                      for key, flag in warnings.items()},
-                    {name: np.broadcast_to(codes, shape) for name, codes in members.items()})
+                    {bearing.member: np.broadcast_to(bearing.solved.status, shape)
+                     for bearing in mounted},
+                    {"member": along.broadcast(shape)},
+                    {"pair": pair, **{bearing.member: bearing.solved
+                                      for bearing in mounted}})
 
 
-SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS, MATRICES,
+def _member(shaft: str, position: int) -> str:
+    """A bearing's name in the spec (``pinion_bearings.2``), which its status codes and
+    its part of the solution go by."""
+    return f"{shaft}_bearings.{position}"
+
+
+def _refused(pair: Solution, checks: list[tuple[int, NDArray]]) -> Solution:
+    """A drive whose statics cannot be solved: the pair's results, the refusal."""
+    shape = np.shape(pair.status)
+    status = np.where(pair.status != 0, pair.status, first_failure(checks, shape))
+    return Solution(dict(pair.results), status, dict(pair.warnings))
+
+
+def _shaft(inputs: Mapping[str, Any], pair: Solution, shaft: str, gear: str,
+           speed: NDArray, warnings: dict[str, ArrayLike]
+           ) -> tuple[list[MountedBearing], NDArray]:
+    """A shaft's bearings loaded by its statics and solved, and where two coincide;
+    a one-way bearing that locates the shaft adds its warning to ``warnings``."""
+    bearings = inputs["shafts"][shaft]
+    positions = tuple(bearing["position"] for bearing in bearings)
+    axial_force = pair.results[f"gear_{gear}_axial_force"]
+    radial = shaft_reactions(
+        positions, *mean_pitch_point(pair.results["mean_cone_distance"],
+                                     pair.results[f"gear_{gear}_pitch_angle"]),
+        pair.results["tangential_force"], pair.results[f"gear_{gear}_radial_force"],
+        axial_force)
+    axial, adjusted = shaft_axial_loads(inputs["arrangements"][shaft], bearings, radial,
+                                        axial_force)
+    mounted = []
+    for i, bearing in enumerate(bearings):
+        row = _row(shaft, i + 1)
+        warnings.update(_one_way(row, bearing, axial_force))
+        loads = {"radial_load": radial[i], "axial_load": axial[i],
+                 **{key: values[i] for key, values in adjusted.items()}}
+        member_inputs = {**bearing, "radial_load": radial[i], "axial_load": axial[i],
+                         "speed": speed, "inner_speed": speed, "outer_speed": 0.0,
+                         "min_rating_life": None}
+        mounted.append(MountedBearing(row, _member(shaft, i + 1), f"{shaft} shaft bearings",
+                                      member_inputs, loads,
+                                      rolling_bearing.evaluate(member_inputs)))
+    return mounted, np.asarray(positions[0]) == np.asarray(positions[1])
+
+
+def _one_way(row: str, bearing: Mapping[str, Any], axial_force: NDArray) -> dict[str, NDArray]:
+    """Where a locating bearing that carries thrust one way only takes the gear's thrust
+    the other way (``rows``, like every number, may vary along bins or a study)."""
+    if (bearing.get("locating") != "locating" or bearing["bearing_type"] not in ONE_WAY_TYPES
+            or bearing.get("arrangement", "single") not in ONE_WAY_ARRANGEMENTS):
+        return {}
+    single_row = np.asarray(1.0 if bearing.get("rows") is None else bearing["rows"],
+                            dtype=float) == 1
+    return {f"one_way_{row}_away_from": single_row & (axial_force >= 0),
+            f"one_way_{row}_toward": single_row & (axial_force < 0)}
+
+
+#: The bearings' results taken from each one's own solution as a rolling bearing.
+OWN_RESULTS = ("equivalent_dynamic_load", "basic_rating_life", "modified_rating_life",
+               "static_safety_factor")
+
+
+def assemble(pair: Mapping[str, NDArray], gear_speed: NDArray,
+             mounted: list[MountedBearing], min_rating_life: ArrayLike | None,
+             min_static_safety: ArrayLike
+             ) -> tuple[dict[str, NDArray], Along, dict[str, NDArray]]:
+    """The drive's results from the pair's and the bearings' (of one operating point,
+    or of a whole duty cycle): the results of one value per design, the bearings'
+    along the member axis, and where each bearing is the weakest.
+
+    L_sys = (Σ Lᵢ^(−e))^(−1/e) (:func:`system_life`); life_margin = L_sys,nm/L_req − 1;
+    static_safety_margin = min s0ᵢ − s0_req.
+    """
+    out: dict[str, NDArray] = {**pair, "gear_speed": gear_speed}
+    slope = ROLLER_WEIBULL_SLOPE if any(bearing.roller for bearing in mounted) \
+        else WEIBULL_SLOPE
+    modified = [bearing.solved.results["modified_rating_life"] for bearing in mounted]
+    out["system_basic_rating_life"] = system_life(
+        [bearing.solved.results["basic_rating_life"] for bearing in mounted], slope)
+    out["system_modified_rating_life"] = system_life(modified, slope)
+    if min_rating_life is not None:
+        out["life_margin"] = life_margin(out["system_modified_rating_life"], min_rating_life)
+    safety = [bearing.solved.results["static_safety_factor"] for bearing in mounted
+              if "static_safety_factor" in bearing.solved.results]
+    if safety:
+        out["static_safety_margin"] = np.min(np.stack(np.broadcast_arrays(*safety)), axis=0) \
+            - np.asarray(min_static_safety, dtype=float)
+    weakest = np.argmin(np.stack(np.broadcast_arrays(*modified)), axis=0)
+    flags = {f"weakest_{bearing.row}": weakest == i for i, bearing in enumerate(mounted)}
+    return {key: out[key] for key in RESULTS if key in out}, _member_rows(mounted), flags
+
+
+def _member_rows(mounted: list[MountedBearing]) -> Along:
+    """The bearings' results along the member axis, a row per bearing (a column that a
+    bearing lacks, as an adjusted pair's load case on a located shaft, is absent in
+    that row)."""
+    columns: dict[str, list[ArrayLike | None]] = {}
+    for i, bearing in enumerate(mounted):
+        own = {key: bearing.solved.results[key] for key in OWN_RESULTS
+               if key in bearing.solved.results}
+        for key, values in {**bearing.loads, **own}.items():
+            columns.setdefault(key, [None] * len(mounted))[i] = values
+    columns = {key: columns[key] for key in BEARING_RESULTS if key in columns}
+    present = {key: tuple(value is not None for value in values)
+               for key, values in columns.items()}
+    values = {key: np.stack(np.broadcast_arrays(*(np.nan if value is None else value
+                                                  for value in rows)))
+              for key, rows in columns.items()}
+    return Along(tuple(bearing.row for bearing in mounted), values,
+                 tuple(bearing.heading for bearing in mounted), present)
+
+
+def drive_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
+    """The cycle of a drive: the pair's by the bevel pair's rule
+    (:func:`~bearingcalc.core.duty_cycle_gears.gear_pair_cycle`), each bearing's by the
+    rolling bearing's (:func:`~bearingcalc.core.duty_cycle.rolling_bearing_cycle`),
+    then the drive's results from those as at one point (:func:`assemble`). The
+    statics' loads are the largest over the bins, the load case that of the bin doing
+    the bearings' most damage, which governs every other result."""
+    # Time at rest counts in the hours, not in the damage: 1/L = Σ tᵢ/Lᵢ over the bins
+    # that turn is the Palmgren–Miner sum in revolutions at the cycle's mean speed.
+    time_share = np.asarray(inputs["duty_time"], dtype=float)
+    turning = np.asarray(inputs["duty_speed"], dtype=float) > 0
+    system = per_bin.results["system_modified_rating_life"]
+    system_damage = time_share / np.sum(time_share, axis=0) * turning / system
+    governing = np.argmax(system_damage, axis=0)
+    pair = gear_pair_cycle(per_bin.parts["pair"], inputs, governing)
+    mounted = [_bearing_cycle(per_bin, inputs, shaft, position, governing)
+               for shaft, bearings in inputs["shafts"].items()
+               for position in range(1, len(bearings) + 1)]
+    first = {key: np.asarray(inputs[key], dtype=float)[0]
+             for key in ("min_static_safety",) if key in inputs}
+    min_life = inputs.get("min_rating_life")
+    pair_results = {key: pair.results[key] for key in bevel_gears.RESULTS
+                    if key in pair.results}
+    out, along, weakest = assemble(
+        pair_results, at_bin(per_bin.results["gear_speed"], governing), mounted,
+        None if min_life is None else np.asarray(min_life, dtype=float)[0],
+        first["min_static_safety"])
+    out.update({key: pair.results[key] for key in ("bending_damage", "contact_damage")
+                if key in pair.results})
+    out["mean_speed"] = _mean_speed(inputs)
+    bins = _drive_bins(per_bin, inputs, system, system_damage, turning, pair)
+    return cycle_solution(per_bin, out, bins, weakest, {"member": along})
+
+
+#: The statics' loads of a bearing over a cycle: the largest of any bin; the load case
+#: is the governing bin's.
+CYCLE_LOADS = ("radial_load", "axial_load", "induced_axial_load")
+
+
+def _bearing_cycle(per_bin: Solution, inputs: Mapping[str, Any], shaft: str, position: int,
+                   governing: NDArray) -> MountedBearing:
+    """A bearing over the cycle: its bins combined as a rolling bearing's, each at its
+    shaft's speed in the bin (the gear shaft's is the pinion's·z1/z2)."""
+    members = per_bin.along["member"]
+    row = _row(shaft, position)
+    index = members.rows.index(row)
+    ratio = 1.0 if shaft == SHAFTS[0] else np.asarray(inputs["gear_a_teeth"], dtype=float) \
+        / np.asarray(inputs["gear_b_teeth"], dtype=float)
+    bearing_inputs = {**inputs["shafts"][shaft][position - 1],
+                      "radial_load": members.values["radial_load"][index],
+                      "axial_load": members.values["axial_load"][index],
+                      "duty_time": inputs["duty_time"],
+                      "duty_speed": np.asarray(inputs["duty_speed"], dtype=float) * ratio,
+                      "min_rating_life": None}
+    loads = {key: np.max(members.values[key][index], axis=0) for key in CYCLE_LOADS
+             if members.has(key, index)}
+    if members.has("load_case", index):
+        loads["load_case"] = at_bin(members.values["load_case"][index], governing)
+    member = _member(shaft, position)
+    return MountedBearing(row, member, members.headings[index], bearing_inputs, loads,
+                          rolling_bearing_cycle(per_bin.parts[member], bearing_inputs))
+
+
+def _mean_speed(inputs: Mapping[str, Any]) -> NDArray:
+    """n_m = Σ tᵢ·nᵢ of the pinion shaft. [rad/s]"""
+    time_share = np.asarray(inputs["duty_time"], dtype=float)
+    return np.sum(time_share / np.sum(time_share, axis=0)
+                  * np.abs(np.asarray(inputs["duty_speed"], dtype=float)), axis=0)
+
+
+def _drive_bins(per_bin: Solution, inputs: Mapping[str, Any], system: NDArray,
+                system_damage: NDArray, turning: NDArray, pair: Solution) -> Along:
+    """Each bin's time share, speed, torque, system life alone and shares of the
+    damage (the bearings', and the teeth's where the pair is rated)."""
+    results = per_bin.results
+    # The torque as given; of a bin that gives power, from its tooth force.
+    from_force = results["tangential_force"] * results["gear_a_mean_pitch_diameter"] / 2.0
+    given = inputs.get("torque")
+    torque = from_force if given is None else np.where(
+        np.isnan(given), from_force, np.abs(np.asarray(given, dtype=float)))
+    columns = {"time_share": inputs["duty_time"], "speed": inputs["duty_speed"],
+               "torque": torque,
+               "system_modified_rating_life": np.where(turning, system, np.inf),
+               "damage_share": normalised(system_damage)}
+    gear_bins = pair.along["bin"]
+    columns.update({key: gear_bins.values[key] for key in ("bending_damage_share",
+                                                           "contact_damage_share")
+                    if key in gear_bins.values and "bending_safety" in results})
+    return bins_along(columns)
+
+
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
                 members=BEARINGS,
-                labels={f"{name}_load_case": LOAD_CASES for name in _bearing_names()},
-                duty=DutyCycle(drive_cycle, DRIVE_CYCLE_RESULTS, DRIVE_COLUMNS,
-                               unbounded=("system_modified_rating_life",)))
+                labels={"load_case": LOAD_CASES},
+                duty=DutyCycle(drive_cycle, DRIVE_CYCLE_RESULTS, DRIVE_BINS),
+                along={"member": MEMBER_RESULTS})

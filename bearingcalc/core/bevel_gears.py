@@ -28,7 +28,7 @@ from bearingcalc.core.bevel_gears_results import (
     WARNINGS,
 )
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
-from bearingcalc.core.duty_cycle_gears import GEAR_COLUMNS, GEAR_CYCLE_RESULTS, gear_pair_cycle
+from bearingcalc.core.duty_cycle_gears import GEAR_BINS, GEAR_CYCLE_RESULTS, gear_pair_cycle
 from bearingcalc.core.solver import DutyCycle, Solution, Solver
 
 #: |γ − (α + β)| above which given angles are inconsistent. [rad] (about 2e-7 deg)
@@ -291,4 +291,4 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
-                duty=DutyCycle(gear_pair_cycle, GEAR_CYCLE_RESULTS, GEAR_COLUMNS))
+                duty=DutyCycle(gear_pair_cycle, GEAR_CYCLE_RESULTS, GEAR_BINS))

@@ -13,13 +13,14 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from bearingcalc.core.bearing_life import life_margin
 from bearingcalc.core.iso281 import LIFE_EXPONENT
 from bearingcalc.core.roller_ratings import RADIAL_ROLLER_TYPES, THRUST_ROLLER_TYPES
-from bearingcalc.core.solver import BIN_PREFIX, Solution
+from bearingcalc.core.solver import BIN_PREFIX, Along, AxisResults, Solution
 
 ROLLER_TYPES = RADIAL_ROLLER_TYPES + THRUST_ROLLER_TYPES
 
-#: Per-bin results: column -> (SI unit, meaning); keyed ``duty_{k}_{column}``.
+#: Per-bin results: column -> (SI unit, meaning).
 BEARING_COLUMNS: dict[str, tuple[str, str]] = {
     "time_share": ("1", "share of the time"),
     "speed": ("rad/s", "speed (0: counts for the static safety only)"),
@@ -29,6 +30,11 @@ BEARING_COLUMNS: dict[str, tuple[str, str]] = {
     "modified_rating_life": ("s", "Lnm at this bin's load and speed alone"),
     "damage_share": ("1", "share of the cycle's damage, Uᵢ·Lnm/Lnmᵢ"),
 }
+#: A bin's results are keyed ``duty_{k}_{column}``, column by column; one that does
+#: not turn lives for ever.
+BIN_MEANING = "bin {position}: {meaning}"
+BEARING_BINS = AxisResults(BEARING_COLUMNS, by_row=False, meaning=BIN_MEANING,
+                           unbounded=("modified_rating_life",))
 #: Results only a cycle has.
 BEARING_CYCLE_RESULTS: dict[str, tuple[str, str]] = {
     "mean_speed": ("rad/s", "n_m = Σ tᵢ·nᵢ"),
@@ -156,41 +162,47 @@ def rolling_bearing_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solut
         "mean_speed": mean_speed, "mean_equivalent_load": p_mean,
     })
     if "life_margin" in results:
-        out["life_margin"] = modified / revolutions_per_second / np.asarray(
-            inputs["min_rating_life"], dtype=float)[0] - 1.0
+        out["life_margin"] = life_margin(modified / revolutions_per_second,
+                                         np.asarray(inputs["min_rating_life"], dtype=float)[0])
     bin_life = np.where(speed > 0, lives / (np.abs(speed) / (2.0 * np.pi)), np.inf)
-    per_bin_results(out, {
+    bins = bins_along({
         "time_share": time_share, "speed": speed, "radial_load": inputs["radial_load"],
         "axial_load": inputs["axial_load"],
         "equivalent_dynamic_load": results["equivalent_dynamic_load"],
         "modified_rating_life": bin_life, "damage_share": damage / np.sum(damage, axis=0)})
-    return cycle_solution(per_bin, out)
+    return cycle_solution(per_bin, out, bins)
 
 
-def per_bin_results(out: dict[str, NDArray], columns: Mapping[str, ArrayLike]) -> None:
-    """Each column's bins as results ``duty_{k}_{column}``."""
+def bins_along(columns: Mapping[str, ArrayLike]) -> Along:
+    """Each column's values per bin as the rows ``duty_{k}`` (k from 1) of the ``bin``
+    axis; every column given with the bins first."""
     shape = np.broadcast_shapes(*(np.shape(np.asarray(values))[1:]
                                   for values in columns.values()))
     bins = len(np.asarray(next(iter(columns.values()))))
-    for column, values in columns.items():
-        for k, row in enumerate(np.broadcast_to(np.asarray(values, dtype=float),
-                                                (bins, *shape)), 1):
-            out[f"{BIN_PREFIX}{k}_{column}"] = row
+    return Along(tuple(f"{BIN_PREFIX}{k}" for k in range(1, bins + 1)),
+                 {column: np.broadcast_to(np.asarray(values, dtype=float), (bins, *shape))
+                  for column, values in columns.items()})
 
 
-def cycle_solution(per_bin: Solution, out: dict[str, NDArray],
-                   warnings: Mapping[str, NDArray] | None = None) -> Solution:
-    """The cycle's Solution: a design fails where a bin does; a warning holds where it
-    holds in a bin (or as ``warnings`` say)."""
+def cycle_solution(per_bin: Solution, out: dict[str, NDArray], bins: Along,
+                   warnings: Mapping[str, NDArray] | None = None,
+                   along: Mapping[str, Along] | None = None) -> Solution:
+    """The cycle's Solution: ``out`` of one value per design, ``bins`` along the bins
+    (and any other axis's results in ``along``); a design fails where a bin does; a
+    warning holds where it holds in a bin (or as ``warnings`` say)."""
     status = first_failure_over_bins(per_bin.status)
-    shape = np.broadcast_shapes(status.shape, *(np.shape(v) for v in out.values()))
+    axes = {**(along or {}), "bin": bins}
+    shape = np.broadcast_shapes(status.shape, *(np.shape(v) for v in out.values()),
+                                *(np.shape(v)[1:] for rows in axes.values()
+                                  for v in rows.values.values()))
     flags = {key: np.any(flag, axis=0) for key, flag in per_bin.warnings.items()}
     flags.update(warnings or {})
     return Solution({key: np.broadcast_to(value, shape) for key, value in out.items()},
                     np.broadcast_to(status, shape),
                     {key: np.broadcast_to(flag, shape) for key, flag in flags.items()},
                     {name: np.broadcast_to(first_failure_over_bins(codes), shape)
-                     for name, codes in per_bin.members.items()})
+                     for name, codes in per_bin.members.items()},
+                    {axis: rows.broadcast(shape) for axis, rows in axes.items()})
 
 
 def at_bin(values: ArrayLike, index: NDArray) -> NDArray:

@@ -1,5 +1,5 @@
-"""Duty cycles of bevel pairs and of drives: AGMA 2003's stress-cycle curves with Miner's
-rule for the pair, and each bearing's life over the cycle (``docs/physics.md`` §11).
+"""Duty cycles of bevel pairs: AGMA 2003's stress-cycle curves with Miner's rule, and
+the results a drive's cycle declares (``docs/physics.md`` §11).
 
 As in :mod:`bearingcalc.core.duty_cycle`, every per-bin array has the bins on its first
 axis.
@@ -21,16 +21,13 @@ from bearingcalc.core.agma_life import (
     spectrum_safety,
 )
 from bearingcalc.core.duty_cycle import (
-    LIFE_EXPONENT,
-    ROLLER_TYPES,
+    BIN_MEANING,
     at_bin,
+    bins_along,
     cycle_solution,
-    mean_load,
-    miner_life,
-    per_bin_results,
     revolution_shares,
 )
-from bearingcalc.core.solver import Solution
+from bearingcalc.core.solver import AxisResults, Solution
 
 GEAR_COLUMNS: dict[str, tuple[str, str]] = {
     "time_share": ("1", "share of the time"),
@@ -40,6 +37,7 @@ GEAR_COLUMNS: dict[str, tuple[str, str]] = {
     "bending_damage_share": ("1", "share of the bending damage"),
     "contact_damage_share": ("1", "share of the contact damage"),
 }
+GEAR_BINS = AxisResults(GEAR_COLUMNS, by_row=False, meaning=BIN_MEANING)
 GEAR_CYCLE_RESULTS: dict[str, tuple[str, str]] = {
     "bending_damage": ("1", "D = Σ nᵢ/Nᵢ in bending at the specified loads"),
     "contact_damage": ("1", "D = Σ nᵢ/Nᵢ in contact at the specified loads"),
@@ -107,13 +105,15 @@ def _turning(inputs: Mapping[str, Any]) -> NDArray:
     return np.asarray(inputs["duty_speed"], dtype=float) > 0
 
 
-def gear_pair_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
+def gear_pair_cycle(per_bin: Solution, inputs: Mapping[str, Any],
+                    governing: NDArray | None = None) -> Solution:
     """The cycle of a bevel pair: the spectrum safeties and damages in bending and
     contact, the largest running stresses (of the bins that turn); every other result
-    that of the bin doing the most bending damage."""
+    that of the ``governing`` bin, by default the bin doing the most bending damage."""
     results = per_bin.results
     shares, _ = _shares(inputs)
-    out = _at_governing(results, shares, inputs)
+    out = (_at_governing(results, shares, inputs) if governing is None
+           else {key: at_bin(values, governing) for key, values in results.items()})
     bending, contact = _gear_cycle(results, shares, inputs, out)
     turning = _turning(inputs)
 
@@ -124,78 +124,10 @@ def gear_pair_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
     columns = {"time_share": inputs["duty_time"], "speed": inputs["duty_speed"],
                "bending_stress": running("bending_stress"),
                "contact_stress": running("contact_stress"),
-               "bending_damage_share": _normalised(bending),
-               "contact_damage_share": _normalised(contact)}
-    per_bin_results(out, {k: v for k, v in columns.items() if v is not None})
-    return cycle_solution(per_bin, out)
-
-
-def drive_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
-    """The cycle of a drive: the pair's as :func:`gear_pair_cycle`, each bearing's life
-    over the cycle (1/L = Σ tᵢ/Lᵢ over the bins that turn, in time; P_m by its family's
-    exponent), the system life of those, the smallest static safety."""
-    from bearingcalc.core import bevel_drive
-
-    results = per_bin.results
-    shares, mean_speed = _shares(inputs)
-    # Time at rest counts in the hours, not in the damage: 1/L = Σ tᵢ/Lᵢ over the bins
-    # that turn is the Palmgren–Miner sum in revolutions at the cycle's mean speed.
-    time_share = np.asarray(inputs["duty_time"], dtype=float)
-    moving = time_share / np.sum(time_share, axis=0) * _turning(inputs)
-    system = results["system_modified_rating_life"]
-    system_damage = moving / system
-    governing = np.argmax(system_damage, axis=0)
-    out = {key: at_bin(values, governing) for key, values in results.items()}
-    bending, contact = _gear_cycle(results, shares, inputs, out)
-    basic, modified, rollers = [], [], False
-    for shaft, bearings in inputs["shafts"].items():
-        for i, bearing in enumerate(bearings, 1):
-            name = f"{shaft}_bearing_{i}"
-            family = "roller" if bearing["bearing_type"] in ROLLER_TYPES else "ball"
-            rollers |= family == "roller"
-            for key, life in (("basic_rating_life", basic), ("modified_rating_life", modified)):
-                lives = results[f"{name}_{key}"]
-                out[f"{name}_{key}"] = miner_life(moving, lives,
-                                                  np.argmax(moving / lives, axis=0))
-                life.append(out[f"{name}_{key}"])
-            loads = results[f"{name}_equivalent_dynamic_load"]
-            out[f"{name}_equivalent_dynamic_load"] = mean_load(
-                shares, loads, LIFE_EXPONENT[family],
-                np.argmax(shares * loads ** LIFE_EXPONENT[family], axis=0))
-            for key in ("radial_load", "axial_load", "induced_axial_load"):
-                if f"{name}_{key}" in results:
-                    out[f"{name}_{key}"] = np.max(results[f"{name}_{key}"], axis=0)
-            if f"{name}_static_safety_factor" in results:
-                out[f"{name}_static_safety_factor"] = np.min(
-                    results[f"{name}_static_safety_factor"], axis=0)
-    slope = bevel_drive.ROLLER_WEIBULL_SLOPE if rollers else bevel_drive.WEIBULL_SLOPE
-    out["system_basic_rating_life"] = bevel_drive.system_life(basic, slope)
-    out["system_modified_rating_life"] = bevel_drive.system_life(modified, slope)
-    if "life_margin" in results:
-        out["life_margin"] = out["system_modified_rating_life"] / np.asarray(
-            inputs["min_rating_life"], dtype=float)[0] - 1.0
-    if "static_safety_margin" in results:
-        out["static_safety_margin"] = np.min(results["static_safety_margin"], axis=0)
-    out["mean_speed"] = mean_speed
-    bin_life = np.where(_turning(inputs), system, np.inf)
-    # The torque as given; of a bin that gives power, from its tooth force.
-    from_force = results["tangential_force"] * results["gear_a_mean_pitch_diameter"] / 2.0
-    given = inputs.get("torque")
-    torque = from_force if given is None else np.where(
-        np.isnan(given), from_force, np.abs(np.asarray(given, dtype=float)))
-    columns = {"time_share": inputs["duty_time"], "speed": inputs["duty_speed"],
-               "torque": torque,
-               "system_modified_rating_life": bin_life,
-               "damage_share": _normalised(system_damage)}
-    if "bending_safety" in results:  # the pair is rated
-        columns.update(bending_damage_share=_normalised(bending),
-                       contact_damage_share=_normalised(contact))
-    per_bin_results(out, columns)
-    names = [f"{shaft}_bearing_{i}" for shaft, bearings in inputs["shafts"].items()
-             for i in range(1, len(bearings) + 1)]
-    weakest = np.argmin(np.stack(np.broadcast_arrays(*modified)), axis=0)
-    return cycle_solution(per_bin, out, {f"weakest_{name}": weakest == i
-                                    for i, name in enumerate(names)})
+               "bending_damage_share": normalised(bending),
+               "contact_damage_share": normalised(contact)}
+    return cycle_solution(per_bin, out,
+                          bins_along({k: v for k, v in columns.items() if v is not None}))
 
 
 def _shares(inputs: Mapping[str, Any]) -> tuple[NDArray, NDArray]:
@@ -217,6 +149,6 @@ def _at_governing(results: Mapping[str, NDArray], shares: NDArray,
     return {key: at_bin(values, governing) for key, values in results.items()}
 
 
-def _normalised(damage: NDArray) -> NDArray:
+def normalised(damage: NDArray) -> NDArray:
     total = np.sum(damage, axis=0)
     return np.where(total > 0, damage / np.where(total > 0, total, 1.0), 0.0)

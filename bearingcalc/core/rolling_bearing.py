@@ -13,7 +13,7 @@ from numpy.typing import ArrayLike
 
 from bearingcalc.core import ball_bearing, roller_bearing
 from bearingcalc.core.duty_cycle import (
-    BEARING_COLUMNS,
+    BEARING_BINS,
     BEARING_CYCLE_RESULTS,
     rolling_bearing_cycle,
 )
@@ -64,5 +64,4 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
                 display=ball_bearing.DISPLAY,
-                duty=DutyCycle(rolling_bearing_cycle, BEARING_CYCLE_RESULTS, BEARING_COLUMNS,
-                               unbounded=("modified_rating_life",)))
+                duty=DutyCycle(rolling_bearing_cycle, BEARING_CYCLE_RESULTS, BEARING_BINS))

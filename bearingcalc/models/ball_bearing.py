@@ -274,6 +274,14 @@ class BallBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, RollerRules,
             return 0.5 * (self.bore_diameter + self.outside_diameter)
         return None
 
+    def lubrication_note(self) -> str | None:
+        """What the modified life leaves out without lubrication (a drive gives its
+        bearings its own lubrication, and says this once)."""
+        if self.lubrication is not None:
+            return None
+        return ("no lubrication given: aISO = 1, so the modified life ignores "
+                "lubrication and contamination")
+
     def warnings(self) -> list[str]:
         """What the reader should know about how the results were found."""
         notes = []
@@ -282,9 +290,9 @@ class BallBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, RollerRules,
         if catalogue and self.has_geometry:
             notes.append(f"catalogue {' and '.join(catalogue)} used for the results; the "
                          "ISO values from the geometry are reported as *_iso")
-        if self.lubrication is None:
-            notes.append("no lubrication given: aISO = 1, so the modified life ignores "
-                         "lubrication and contamination")
+        lubrication = self.lubrication_note()
+        if lubrication is not None:
+            notes.append(lubrication)
         static = self.static_left_out()
         if static is not None:
             notes.append(static)

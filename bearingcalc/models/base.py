@@ -5,7 +5,7 @@ from __future__ import annotations
 import functools
 import math
 import typing
-from collections.abc import Collection, Mapping
+from collections.abc import Collection, Mapping, Sequence
 from typing import Any, ClassVar
 
 from pydantic import BaseModel, ConfigDict, PrivateAttr, ValidationInfo, model_validator
@@ -15,6 +15,9 @@ from bearingcalc.models.plain_numbers import _Count, _Percentage, _plain_number,
 from bearingcalc.models.quantities import _Quantity
 from bearingcalc.models.rules import problems_of
 from bearingcalc.units import Dimension, parse_quantity
+
+if typing.TYPE_CHECKING:  # the results' layout only: made above the models
+    from bearingcalc.result_keys import ResultTable
 
 
 class SpecModel(BaseModel):
@@ -82,8 +85,10 @@ class Spec(SpecModel):
         """Names for the rows of the kind's tables of results (a duty cycle's bins)."""
         return {}
 
-    def result_notes(self, results: Mapping[str, float | None]) -> list[str]:
-        """What the reader should know that only the results tell."""
+    def result_notes(self, results: Mapping[str, float | None],
+                     tables: Sequence[ResultTable] = ()) -> list[str]:
+        """What the reader should know that only the results tell (``tables``: the
+        results along axes, a duty cycle's bins)."""
         return []
 
     def study_notes(self, varied: Collection[str]) -> list[str]:

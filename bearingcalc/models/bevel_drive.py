@@ -149,19 +149,22 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
 
     @rule
     def _shafts_carried(self) -> list[SpecFieldError]:
-        """Each shaft on two bearings, apart, one of them locating, none a thrust bearing:
+        """Each shaft on two bearings or more, apart, one of them locating, none a thrust
+        bearing (how many the statics solve is theirs to say):
         read from the bearing lists alone, so a bad shared field hides none of it."""
         problems: list[SpecFieldError] = []
         for shaft, bearings in self.shafts():
             field = f"{shaft}_bearings"
-            if len(bearings) != 2:
-                problems.append(SpecFieldError(field, f"a shaft sits on exactly two "
+            if len(bearings) < 2:  # more is the statics' to refuse, not the data's
+                problems.append(SpecFieldError(field, "one bearing cannot carry a shaft's "
+                                               "moment, and the statics take exactly two "
                                                f"bearings, got {len(bearings)}"))
                 continue
-            if bearings[0].position == bearings[1].position:
-                problems.append(SpecFieldError(f"{field}.2.position", "two bearings at the "
-                                               "same position cannot carry the shaft's "
-                                               "moment"))
+            positions = [bearing.position for bearing in bearings]
+            problems += [SpecFieldError(f"{field}.{i}.position", "two bearings at the "
+                                        "same position cannot carry the shaft's moment")
+                         for i, position in enumerate(positions, 1)
+                         if position in positions[:i - 1]]
             arrangement = self.arrangement(shaft)
             if arrangement == "locating-floating":
                 problems += self._one_locating(field, bearings)
@@ -260,7 +263,7 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
                 for note in spec.warnings():
                     if note == static:  # said once for all bearings, below
                         continue
-                    shared = note.startswith("no lubrication given")
+                    shared = note == spec.lubrication_note()  # the drive's lubrication
                     notes[note if shared else f"{name}: {note}"] = None
                 if static is not None:
                     without_c0.append(name)

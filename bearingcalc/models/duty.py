@@ -12,7 +12,7 @@ each input (:class:`bearingcalc.core.solver.DutyCycle`).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
@@ -25,6 +25,9 @@ from bearingcalc.models.field_path import FieldPath, replaced
 from bearingcalc.models.plain_numbers import percentage
 from bearingcalc.models.quantities import PositiveViscosity, Temperature
 from bearingcalc.models.rules import whole_spec_problems, whole_spec_rule
+
+if TYPE_CHECKING:  # the results' layout only: made above the models
+    from bearingcalc.result_keys import ResultTable
 
 #: How far the time shares may add up from 100 %.
 SHARE_TOLERANCE = 0.001
@@ -160,15 +163,18 @@ class DutyCycleRules:
         return {f"{BIN_PREFIX}{k}": item.name or str(k)
                 for k, item in enumerate(self.duty_cycle, 1)}
 
-    def result_notes(self, results: Mapping[str, float | None]) -> list[str]:
+    def result_notes(self, results: Mapping[str, float | None],
+                     tables: Sequence[ResultTable] = ()) -> list[str]:
         """The bin that does the most damage, with its shares of the time and the damage
         (of the bearings', else of the teeth's in bending)."""
         if not self.duty_cycle or len(self.duty_cycle) < 2:
             return []
+        bins = next((table for table in tables if table.axis == "bin"), None)
         for column, what in (("damage_share", "damage"),
                              ("bending_damage_share", "bending damage")):
-            shares = [results.get(f"{BIN_PREFIX}{k}_{column}")
-                      for k in range(1, len(self.duty_cycle) + 1)]
+            if bins is None or column not in bins.columns:
+                continue
+            shares = [None if key is None else results.get(key) for key in bins.column(column)]
             if all(share is not None for share in shares):
                 k = 1 + max(range(len(shares)), key=lambda i: shares[i])  # type: ignore[arg-type, return-value]
                 return [f"bin {self.bin_label(k)} does the most {what}: "

@@ -10,6 +10,7 @@ import numpy as np
 
 if TYPE_CHECKING:
     from bearingcalc.kinds import Kind
+    from bearingcalc.result_keys import ResultTable
     from bearingcalc.studies import StudyReport
     from bearingcalc.sweeps import Sweep
 
@@ -26,7 +27,8 @@ def sweep_limits(sweep: Sweep, key: str) -> list[tuple[float, str]]:
             return None
         return {name: float(values[good[0]]) for name, values in sweep.results.items()}
 
-    return limit_levels(sweep.kind, sweep.limits, sweep.kind.margins, key, at_a_point)
+    return limit_levels(sweep.kind, sweep.limits, sweep.kind.margins, key, at_a_point,
+                        sweep.results.tables)
 
 
 def study_limits(report: StudyReport, key: str) -> list[tuple[float, str]]:
@@ -42,7 +44,8 @@ def study_limits(report: StudyReport, key: str) -> list[tuple[float, str]]:
         return {name: entry["nominal"] for name, entry in results.items()
                 if entry["nominal"] is not None}
 
-    return limit_levels(KINDS[report.record["kind"]], report.limits, report.margins, key, nominal)
+    return limit_levels(KINDS[report.record["kind"]], report.limits, report.margins, key, nominal,
+                        report.tables)
 
 
 #: A value no result has exactly, to ask a margin whether it judges a result.
@@ -50,19 +53,23 @@ _PROBE = 1.2345678
 
 
 def limit_levels(kind: Kind, limits: Mapping[str, float], margins: Iterable[str], key: str,
-            known: Callable[[str], Mapping[str, float] | None]) -> list[tuple[float, str]]:
+                 known: Callable[[str], Mapping[str, float] | None],
+                 tables: tuple[ResultTable, ...] = ()) -> list[tuple[float, str]]:
     """The limits of a result, each with its words: its own symmetric limit, 0 of a
     margin, or the limit of a result a margin judges (a life's required life; the min
-    bending safety of either gear), from the results ``known`` gives at one design."""
+    bending safety of either gear), from the results ``known`` gives at one design
+    (``tables``: the results along axes, which a drive's smallest s0 reads)."""
+    from bearingcalc.result_keys import FlatResults
+
     if key in limits:
         return [(-limits[key], "limit"), (limits[key], "limit")]
     if key in margins:
         return [(0.0, "limit")]
     for margin, judged in kind.judged.items():
-        if judged.value({key: _PROBE}) != _PROBE:  # it judges other results
-            continue
+        if judged.value(FlatResults({key: _PROBE}, tables=tables)) != _PROBE:
+            continue  # it judges other results
         point = known(margin)
-        value = None if point is None else judged.value(point)
+        value = None if point is None else judged.value(FlatResults(point, tables=tables))
         if point is None or value is None:
             continue
         limit = judged.limit(value, point[margin])

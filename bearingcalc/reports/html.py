@@ -146,8 +146,7 @@ def _section(evaluation: Evaluation, kind: Kind, first: bool, today: str, versio
 def _result_tables(evaluation: Evaluation, kind: Kind) -> Iterator[str]:
     grouped: set[str] = set()
     # a matrix's members (each bearing of a shaft, each bin of a cycle) under its heading
-    members = [(heading, tuple(f"{row}_{column}" for row in rows for column in columns))
-               for heading, (rows, columns) in kind.matrices.items()]
+    members = [(table.heading, table.keys) for table in evaluation.tables]
     groups = [*kind.groups.items(), *members, ("other", tuple(evaluation.results))]
     for heading, keys in groups:
         present = [key for key in keys if key in evaluation.results and key not in grouped]
@@ -165,7 +164,7 @@ def _result_tables(evaluation: Evaluation, kind: Kind) -> Iterator[str]:
             si = "null" if value is None else repr(value)
             short = "null" if value is None else f"{value:.10g}"
             yield (f"<tr><td>{escape(key)}</td><td class=\"number\">{escape(shown)}</td>"
-                   f"<td>{escape(unit)}</td><td>{escape(kind.results[key][1])}</td>"
+                   f"<td>{escape(unit)}</td><td>{escape(evaluation.meanings[key])}</td>"
                    f"<td class=\"number si\" data-key=\"{escape(key)}\" "
                    f"data-si=\"{escape(si)}\">{escape(short)}</td></tr>")
         yield "</table>"

@@ -20,6 +20,7 @@ from bearingcalc.units import to_display
 if TYPE_CHECKING:  # the report types only; their modules load with their commands
     from bearingcalc.evaluation import Evaluation
     from bearingcalc.kinds import Kind
+    from bearingcalc.result_keys import ResultTable
     from bearingcalc.verdicts import Verdict
 
 
@@ -98,8 +99,7 @@ def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
         table.add_column("value", justify="right", no_wrap=True)
         table.add_column("unit", no_wrap=True)
         table.add_column("meaning", style="dim", overflow="fold")
-        in_matrices = {f"{row}_{column}" for rows, columns in kind.matrices.values()
-                       for row in rows for column in columns}
+        in_matrices = {key for matrix in evaluation.tables for key in matrix.keys}
         shown = {key: value for key, value in evaluation.results.items()
                  if key not in in_matrices}
         for heading, keys in _grouped(shown, kind.groups):
@@ -112,12 +112,12 @@ def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
                 if value is not None and key in kind.labels:
                     shown = kind.labels[key].get(value, shown)
                 style = "bold" if key in evaluation.margins else None
-                table.add_row(key, shown, unit, kind.results[key][1], style=style)
+                table.add_row(key, shown, unit, evaluation.meanings[key], style=style)
             if heading:
                 table.add_section()
         out.print(table)
-        for heading, (rows, columns) in kind.matrices.items():
-            _print_matrix(out, evaluation, heading, rows, columns, kind.labels)
+        for matrix in evaluation.tables:
+            _print_matrix(out, evaluation, matrix, kind.labels)
         if not evaluation.margins:
             out.print(f"[bold green]PASS[/]: {safe_text(_no_margins(kind))}")
         elif evaluation.within_limits:
@@ -145,30 +145,34 @@ def _no_margins(kind: Kind) -> str:
     return f"no limits judged: none given that applies to this design; the spec can set {named}"
 
 
-def _print_matrix(out: Any, evaluation: Evaluation, heading: str, rows: Sequence[str],
-                  columns: Sequence[str], labels: Mapping[str, Mapping[float, str]]) -> None:
-    """Results named ``{row}_{column}`` as a table with a row per member and a column per
-    quantity any member has; nothing when the evaluation has none of them. Where that
-    table is wider than the terminal, it is turned: a row per quantity, a column per
-    member, so that every number stays whole."""
+def _print_matrix(out: Any, evaluation: Evaluation, matrix: ResultTable,
+                  labels: Mapping[str, Mapping[float, str]]) -> None:
+    """Results along an axis as a table with a row per member (a bearing, a bin) and a
+    column per quantity any member has; nothing when the evaluation has none of them.
+    Where that table is wider than the terminal, it is turned: a row per quantity, a
+    column per member, so that every number stays whole."""
     from rich.table import Table
 
-    present = [row for row in rows if any(f"{row}_{c}" in evaluation.results for c in columns)]
-    if not present:
+    heading = matrix.heading
+    rows = [(row, cells) for row, cells in zip(matrix.rows, matrix.cells, strict=True)
+            if any(key in evaluation.results for key in cells if key is not None)]
+    if not rows:
         return
-    columns = [c for c in columns if any(f"{row}_{c}" in evaluation.results for row in present)]
+    shown = [k for k in range(len(matrix.columns))
+             if any(cells[k] in evaluation.results for _, cells in rows)]
     headings = []
-    for column in columns:
-        unit = to_display(1.0, evaluation.units.get(f"{present[0]}_{column}", "1"))[1]
-        name = column.replace("_", " ")
+    for k in shown:
+        first = next(cells[k] for _, cells in rows if cells[k] is not None)
+        unit = to_display(1.0, evaluation.units.get(first, "1"))[1]
+        name = matrix.columns[k].replace("_", " ")
         headings.append(safe_text(f"{name} [{unit}]" if unit else name))
-    names = [safe_text(evaluation.row_names.get(row, row)) for row in present]
-    cells = [[_matrix_cell(evaluation, f"{row}_{column}", labels) for column in columns]
-             for row in present]
+    names = [safe_text(evaluation.row_names.get(row, row)) for row, _ in rows]
+    cells = [[_matrix_cell(evaluation, cells[k], labels.get(matrix.columns[k]))
+              for k in shown] for _, cells in rows]
     # each column as wide as its widest number and its longest heading word, plus borders
     wide = max(map(len, names)) + 4 + sum(
         max(*(len(cell[k]) for cell in cells), *map(len, headings[k].split())) + 3
-        for k in range(len(columns)))
+        for k in range(len(headings)))
     table = Table(title=heading, title_justify="left")
     if wide <= out.width:
         table.add_column("", no_wrap=True)  # the member's name, whole
@@ -185,12 +189,14 @@ def _print_matrix(out: Any, evaluation: Evaluation, heading: str, rows: Sequence
     out.print(table)
 
 
-def _matrix_cell(evaluation: Evaluation, key: str,
-                 labels: Mapping[str, Mapping[float, str]]) -> str:
-    value = evaluation.results.get(key)
-    if value is not None and key in labels:
-        return labels[key].get(value, format_number(value))
-    return "" if value is None else format_number(to_display(value, evaluation.units[key])[0])
+def _matrix_cell(evaluation: Evaluation, key: str | None,
+                 labels: Mapping[float, str] | None) -> str:
+    value = None if key is None else evaluation.results.get(key)
+    if value is None:
+        return ""
+    if labels is not None:
+        return labels.get(value, format_number(value))
+    return format_number(to_display(value, evaluation.units[key])[0])  # type: ignore[index]
 
 
 def _grouped(results: Mapping[str, Any], groups: Mapping[str, Sequence[str]]

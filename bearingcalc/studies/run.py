@@ -13,6 +13,7 @@ from numpy.typing import NDArray
 
 from bearingcalc.kinds import KINDS, Kind
 from bearingcalc.models.base import SpecModel
+from bearingcalc.result_keys import ResultTable
 from bearingcalc.studies.monte_carlo import monte_carlo, one_sided_capability, smallest_cpk
 from bearingcalc.studies.rss import rss
 from bearingcalc.studies.sampling import SAMPLERS, SOBOL_MAX_SAMPLES
@@ -36,6 +37,8 @@ class StudyReport:
     margins: tuple[str, ...]
     #: result key -> (unit, factor from SI) where the kind's tables use their own unit
     display: dict[str, tuple[str, float]] = field(default_factory=dict)
+    #: the tables of the results along axes (a drive's bearings, a cycle's bins)
+    tables: tuple[ResultTable, ...] = ()
 
     @property
     def plotted(self) -> str | None:
@@ -118,7 +121,7 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
         **spec.catalogue_sources(),  # type: ignore[attr-defined]
         "inputs": study.input_summary(),
         "results": {key: {"nominal": value} for key, value in study.nominal.items()},
-        "units": {**{key: kind.results[key][0] for key in study.keys},
+        "units": {**{key: study.names[key][0] for key in study.keys},
                   **{item.name: item.tolerance.unit for item in study.inputs}},
         "warnings": spec.study_notes([item.name for item in study.inputs]),
     }
@@ -180,7 +183,7 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
         weakest = weakest_margin(record, study.margins)
         governing = [weakest, *(key for key in governing if key != weakest)]
     return StudyReport(record, histograms, governing, study.limit_values,
-                       tuple(study.margins), dict(kind.display))
+                       tuple(study.margins), dict(kind.display), study.layout({}).tables)
 
 
 def _finite(value: Any) -> Any:
@@ -208,5 +211,5 @@ def worst_case_verdicts(study: Study, results: dict[str, Any]) -> list[dict[str,
     verdicts = []
     for i, (margin, entry) in enumerate(worst.items()):
         at = {key: float(np.asarray(column).reshape(-1)[i]) for key, column in values.items()}
-        verdicts += judge(study.kind, at, {margin: entry["min"]})
+        verdicts += judge(study.kind, study.layout(at), {margin: entry["min"]})
     return [asdict(verdict) for verdict in sorted(verdicts, key=lambda v: v.margin)]

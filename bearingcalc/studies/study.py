@@ -4,7 +4,7 @@ and the evaluation of whole arrays of designs that every method calls."""
 from __future__ import annotations
 
 import itertools
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -17,6 +17,7 @@ from bearingcalc.models.base import SpecModel, field_parser
 from bearingcalc.models.field_path import resolve_field
 from bearingcalc.models.quantities import Tolerance
 from bearingcalc.models.yaml_loader import Document
+from bearingcalc.result_keys import FlatResults
 from bearingcalc.studies.sobol import sobol_stream
 from bearingcalc.units import to_display
 from bearingcalc.variation import evaluate_with, field_value, invalid_at, toleranced_fields
@@ -83,6 +84,7 @@ class Study:
     spec: SpecModel
     inputs: list[StudyInput] = field(init=False)
     nominal: dict[str, float] = field(init=False)
+    _layout: FlatResults = field(init=False, repr=False)
     #: impossible designs met by the worst-case search of the box (see worst_case)
     box_impossible: dict[str, Any] | None = field(init=False, default=None)
 
@@ -93,6 +95,17 @@ class Study:
                              "like 'contact_angle: 20 deg ± 0.25 deg'")
         results, _ = evaluate_with(self.kind, self.spec, {})
         self.nominal = {key: float(value) for key, value in results.items()}
+        self._layout = results
+
+    @property
+    def names(self) -> Mapping[str, tuple[str, str]]:
+        """Each result's (SI unit, meaning)."""
+        return self._layout.names
+
+    def layout(self, values: Mapping[str, float]) -> FlatResults:
+        """``values`` of one design with the layout of the spec's results (the tables
+        along axes, which a drive's verdicts read)."""
+        return self._layout.with_values(values)
 
     @property
     def keys(self) -> list[str]:
@@ -156,7 +169,7 @@ class Study:
         if bad.size == 0:
             return None
         first = int(bad[0])
-        field, why = self.kind.status_reasons[int(status[first])]
+        field, why = self._layout.reasons[int(status[first])]
         return {"fraction": bad.size / status.size,
                 "inputs": {item.name: float(low[i] + unit[first, i] * width[i])
                            for i, item in enumerate(self.inputs)},
