@@ -32,7 +32,7 @@ def _three_bearing_drive(tmp_path: Path, shafts: tuple[str, ...]) -> Path:
 
 def test_a_shaft_of_three_bearings_is_a_valid_spec(tmp_path):
     path = _three_bearing_drive(tmp_path, ("pinion", "gear"))
-    kind, spec = parse_document(load_documents(path)[0])
+    _, spec = parse_document(load_documents(path)[0])
     inputs = spec.solver_inputs()
     assert [len(inputs["shafts"][shaft]) for shaft in ("pinion", "gear")] == [3, 3]
     # the third bearing's own fields reach the solver like the first two's
