@@ -104,7 +104,11 @@ def test_fc_is_nan_outside_tables_7_and_10(kind, dwe, alpha, finite):
 
 def p_iso(fr, fa, alpha_deg, kind, double, e=None, y=None, y1=None, y2=None, x=None):
     """ISO 281:2007, 7.2 (radial roller) and 8.2 (thrust roller), catalogue factors
-    replacing the standard's where given."""
+    replacing the standard's where given. The factors are the printed ones, as typed from
+    ISO 281:2007 and checked against GOST 18855-2013 (identical), Table 8: single row
+    X = 0.40, Y = 0.40·cotα above e; double row Y = 0.45·cotα up to e, X = 0.67,
+    Y = 0.67·cotα above; e = 1.5·tanα; Table 11: a single thrust bearing X = tanα,
+    Y = 1."""
     a = alpha_deg * DEG
     if kind in ("cylindrical-roller", "needle-roller"):
         return fr
@@ -120,7 +124,9 @@ def p_iso(fr, fa, alpha_deg, kind, double, e=None, y=None, y1=None, y2=None, x=N
 
 def p0_iso(fr, fa, alpha_deg, kind, double, x0=None, y0=None):
     """ISO 76:2006, static equivalent load of radial and thrust roller bearings, catalogue
-    X0 and Y0 replacing the standard's where given."""
+    X0 and Y0 replacing the standard's where given. The printed factors, checked against
+    GOST 18854-2013 (identical), 7.2 and 8.2: single row X0 = 0.5, Y0 = 0.22·cotα
+    (P0 ≥ Fr), double row X0 = 1, Y0 = 0.44·cotα; thrust P0a = 2.3·Fr·tanα + Fa."""
     a = alpha_deg * DEG
     if kind.startswith("thrust-"):
         return fa if alpha_deg == 90.0 else 2.3 * fr * math.tan(a) + fa
