@@ -252,10 +252,14 @@ def test_geometry_ratings_and_catalogue_ratings_are_both_reported(cli, spec_file
 
 
 def test_c_from_geometry_by_hand_for_a_large_ball():
-    """Dw > 25.4 mm takes the 3.647·Dw^1.4 form (ISO 281 eq. 3)."""
-    c, fc = iso281.dynamic_load_rating(10, 30e-3, 200e-3, 0.0)
-    expected = 3.647 * 1.3 * float(fc) * 10 ** (2 / 3) * 30 ** 1.4
-    assert float(c) == pytest.approx(expected, rel=1e-14)
+    """Dw > 25.4 mm takes the 3.647·Dw^1.4 form (ISO 281 eq. 2). γ = 30/120 = 0.25:
+    fc = 58.6, Table 2's row 0.25 as GOST 18855-2013 prints it
+    (tests/test_ball_fc_published.py checks the table against a second source); the
+    module's rows 0.24 and 0.26 (59.0, 58.2) put the same value there."""
+    c, fc = iso281.dynamic_load_rating(10, 30e-3, 120e-3, 0.0)
+    assert float(fc) == pytest.approx(58.6, rel=1e-12)
+    expected = 3.647 * 1.3 * 58.6 * 10 ** (2 / 3) * 30 ** 1.4
+    assert float(c) == pytest.approx(expected, rel=1e-12)
 
 
 def test_check_passes_and_fails_by_the_margins(cli, spec_file):
