@@ -281,13 +281,19 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
     outer_speed = 0.5 * out["gear_a_outer_pitch_diameter"] * speed
     checks.append((9, outer_speed > bevel_rating.max_pitch_line_speed(
         inputs["quality_number"])))  # type: ignore[arg-type]
+    out.update(_safety_margins(rating, inputs))
+    return out, checks
+
+
+def _safety_margins(rating: bevel_rating.PairRating, inputs: Mapping[str, ArrayLike | None]
+                    ) -> dict[str, NDArray]:
+    """S − S_min in bending and in contact, of the weaker member where both are rated."""
     bending, contact = rating.bending_safety, rating.contact_safety
     if rating.gear_b is not None:  # the weaker member of the two governs
         bending = np.minimum(bending, rating.gear_b.bending_safety)
         contact = np.minimum(contact, rating.gear_b.contact_safety)
-    out["bending_safety_margin"] = bending - np.asarray(inputs["min_bending_safety"])
-    out["contact_safety_margin"] = contact - np.asarray(inputs["min_contact_safety"])
-    return out, checks
+    return {"bending_safety_margin": bending - np.asarray(inputs["min_bending_safety"]),
+            "contact_safety_margin": contact - np.asarray(inputs["min_contact_safety"])}
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
