@@ -19,9 +19,6 @@ MAX_FUNCTION_LINES = 60
 
 #: "path::qualified name" of a class or function over its size -> why it stays whole.
 EXCEPTIONS: dict[str, str] = {
-    "core/thrust_bearing.py::_solve": "the thrust bearing's closed form, one term a line",
-    "models/bevel_gears.py::BevelPair": "the pair's fields and their cross-field rules",
-    "models/duty.py::DutyCycleRules": "the duty cycle's rules, one per field",
     "models/element_fit_rules.py::ElementFitRules": "the rolling elements' fit, one rule each",
 }
 
