@@ -23,7 +23,7 @@ import functools
 import math
 import re
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, NoReturn
 
 from bearingcalc.number_grammar import DECIMAL, NUMBER
 from bearingcalc.wording import article
@@ -197,16 +197,31 @@ def parse_quantity(text: Any, dimension: Dimension) -> float:
     what = article(dimension.name)
     if dimension is DIMENSIONLESS:
         return _plain_number(text)
-    if isinstance(text, bool) or not isinstance(text, (str, int, float)):
+    if isinstance(text, bool) or not isinstance(text, str):
+        _refuse_not_text(text, dimension, what)
+    match = _read_quantity(text, dimension, what)
+    number, unit = float(match["number"]), _checked_unit(text, match, dimension, what)
+    if dimension is TEMPERATURE:
+        return _temperature(number, unit, text)
+    return _in_si(number, unit, text, dimension, what)
+
+
+def _refuse_not_text(value: Any, dimension: Dimension, what: str) -> NoReturn:
+    """Refuse a quantity that is not text: a bare number has no unit (one that says which,
+    where the number is finite)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise UnitError(f"expected {what} with a unit, like '{dimension.example}'")
-    if isinstance(text, (int, float)):
-        if isinstance(text, float) and not math.isfinite(text):
-            raise UnitError(f"{text} is not a finite number; give {what} like "
-                            f"'{dimension.example}'")
-        unit = dimension.example.split()[1]
-        shown = f"{text:g}" if isinstance(text, float) else _shorten(str(text))
-        raise UnitError(f"a bare number has no unit: write it as '{shown} {unit}' "
-                        f"({what}, like '{dimension.example}')")
+    if isinstance(value, float) and not math.isfinite(value):
+        raise UnitError(f"{value} is not a finite number; give {what} like "
+                        f"'{dimension.example}'")
+    unit = dimension.example.split()[1]
+    shown = f"{value:g}" if isinstance(value, float) else _shorten(str(value))
+    raise UnitError(f"a bare number has no unit: write it as '{shown} {unit}' "
+                    f"({what}, like '{dimension.example}')")
+
+
+def _read_quantity(text: str, dimension: Dimension, what: str) -> re.Match[str]:
+    """The number and unit of a quantity's text, or why it cannot be read as one."""
     if len(text) > MAX_QUANTITY_CHARS:
         raise UnitError(f"'{_shorten(text)}' is too long for {what} (at most "
                         f"{MAX_QUANTITY_CHARS} characters); write it like '{dimension.example}'")
@@ -218,7 +233,13 @@ def parse_quantity(text: Any, dimension: Dimension) -> float:
                             f"'{dimension.example}'")
         raise UnitError(f"cannot read '{text}' as {what}; write a number and a unit, "
                         f"like '{dimension.example}'")
-    number, unit = float(match["number"]), match["unit"]
+    return match
+
+
+def _checked_unit(text: str, match: re.Match[str], dimension: Dimension, what: str) -> str:
+    """The unit of a read quantity, refused with the likely slip where it is none: no
+    unit, a decimal comma, percent as a factor, a number run into '1/min'."""
+    unit = match["unit"]
     if unit is None:
         raise UnitError(f"'{text}' has no unit: write it like '{dimension.example}'")
     if re.match(r"^,[0-9]", unit):
@@ -238,8 +259,12 @@ def parse_quantity(text: Any, dimension: Dimension) -> float:
                             f"'{dimension.example}'")
         raise UnitError(f"cannot read '{unit}' in '{text}' as a unit; write a number and a "
                         f"unit with nothing after it, like '{dimension.example}'")
-    if dimension is TEMPERATURE:
-        return _temperature(number, unit, text)
+    return unit
+
+
+def _in_si(number: float, unit: str, text: str, dimension: Dimension, what: str) -> float:
+    """``number`` ``unit`` in the SI unit of ``dimension`` (not a temperature), refused
+    when the unit is another quantity's or the value is out of range."""
     rpm_notation = re.sub(r"\s+", "", unit) in RPM_NOTATIONS
     if rpm_notation and dimension is ANGULAR_SPEED:
         unit = "rpm"

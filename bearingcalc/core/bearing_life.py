@@ -75,11 +75,12 @@ def with_ep_additives(a_iso: NDArray, ep_additives: ArrayLike, kappa: NDArray,
                     a_iso)
 
 
-def rating_life(inputs: Mapping[str, ArrayLike | str | None], thrust: bool, speed: NDArray,
-                c: NDArray | None, c0: NDArray | None, p: NDArray,
-                out: dict[str, ArrayLike], flags: dict[str, ArrayLike],
-                bad_checks: list[tuple[int, ArrayLike]], *, family: Family = "ball",
-                pair: bool = False) -> None:
+def rating_life(  # noqa: PLR0913  fills the ball and roller solvers' out, flags and checks
+        inputs: Mapping[str, ArrayLike | str | None], thrust: bool, speed: NDArray,
+        c: NDArray | None, c0: NDArray | None, p: NDArray,
+        out: dict[str, ArrayLike], flags: dict[str, ArrayLike],
+        bad_checks: list[tuple[int, ArrayLike]], *, family: Family = "ball",
+        pair: bool = False) -> None:
     r"""The modified rating life, into ``out``; its warnings into ``flags`` and the status
     checks it adds into ``bad_checks``.
 

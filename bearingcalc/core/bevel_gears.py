@@ -269,25 +269,31 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
         curvature = out["lengthwise_curvature_factor"] = bevel_rating.lengthwise_curvature_factor(
             inputs["spiral_angle"], inputs["cutter_radius"],  # type: ignore[arg-type]
             out["mean_cone_distance"])
-    rating = bevel_rating.agma_rating(
+    rating = bevel_rating.rate_pair(bevel_rating.PairRatingInput(
         torque, speed, inputs["module"], out["gear_a_outer_pitch_diameter"], face,  # type: ignore[arg-type]
         inputs["quality_number"], inputs["hardness"], inputs["mounting_factor"],  # type: ignore[arg-type]
         inputs["crowned"], inputs["geometry_factor_bending"],  # type: ignore[arg-type]
         inputs["geometry_factor_pitting"], inputs["overload_factor"], inputs["cycles"],  # type: ignore[arg-type]
-        inputs["reliability"], lengthwise_curvature_factor=curvature,
-        **gear_materials.rating_terms(inputs))  # type: ignore[arg-type]
-    out.update(rating)
+        inputs["reliability"], lengthwise_curvature_factor=curvature,  # type: ignore[arg-type]
+        **gear_materials.rating_terms(inputs)))
+    out.update(rating.as_results())
     # the rating's own v_et, at the pinion's outer pitch circle
     outer_speed = 0.5 * out["gear_a_outer_pitch_diameter"] * speed
     checks.append((9, outer_speed > bevel_rating.max_pitch_line_speed(
         inputs["quality_number"])))  # type: ignore[arg-type]
-    bending, contact = rating["bending_safety"], rating["contact_safety"]
-    if "gear_b_bending_safety" in rating:  # the weaker member of the two governs
-        bending = np.minimum(bending, rating["gear_b_bending_safety"])
-        contact = np.minimum(contact, rating["gear_b_contact_safety"])
-    out["bending_safety_margin"] = bending - np.asarray(inputs["min_bending_safety"])
-    out["contact_safety_margin"] = contact - np.asarray(inputs["min_contact_safety"])
+    out.update(_safety_margins(rating, inputs))
     return out, checks
+
+
+def _safety_margins(rating: bevel_rating.PairRating, inputs: Mapping[str, ArrayLike | None]
+                    ) -> dict[str, NDArray]:
+    """S − S_min in bending and in contact, of the weaker member where both are rated."""
+    bending, contact = rating.bending_safety, rating.contact_safety
+    if rating.gear_b is not None:  # the weaker member of the two governs
+        bending = np.minimum(bending, rating.gear_b.bending_safety)
+        contact = np.minimum(contact, rating.gear_b.contact_safety)
+    return {"bending_safety_margin": bending - np.asarray(inputs["min_bending_safety"]),
+            "contact_safety_margin": contact - np.asarray(inputs["min_contact_safety"])}
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,

@@ -9,6 +9,7 @@ that form is written.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -16,7 +17,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core import agma_life
 from bearingcalc.core.common import MM
-from bearingcalc.core.gear_materials import THROUGH_HARDENED
+from bearingcalc.core.gear_materials import THROUGH_HARDENED, GearMemberTerms
 
 #: AGMA 2003 load-distribution base factor Kmb by mounting.
 MOUNTING_FACTOR = {"both-straddle": 1.00, "one-straddle": 1.10, "neither-straddle": 1.25}
@@ -26,7 +27,6 @@ STEEL_ELASTIC_COEFFICIENT = 190.0
 
 #: AGMA 2003's bounds on the lengthwise curvature factor K_x of spiral teeth.
 CURVATURE_FACTOR_BOUNDS = (1.0, 1.15)
-
 
 
 def lengthwise_curvature_factor(spiral_angle: ArrayLike, cutter_radius: ArrayLike,
@@ -113,17 +113,76 @@ def life_factors(cycles: ArrayLike) -> tuple[NDArray, NDArray]:
             agma_life.life_factor(cycles, agma_life.CONTACT_LIFE_CURVE))
 
 
-def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: ArrayLike,
-                pinion_outer_diameter: ArrayLike, face_width: ArrayLike,
-                quality_number: ArrayLike, hardness: ArrayLike, mounting_factor: ArrayLike,
-                crowned: ArrayLike, bending_geometry_factor: ArrayLike,
-                pitting_geometry_factor: ArrayLike, overload_factor: ArrayLike,
-                cycles: ArrayLike, reliability: ArrayLike, *,
-                allowables: tuple[ArrayLike, ArrayLike] | None = None,
-                temperature_factor: ArrayLike = 1.0,
-                lengthwise_curvature_factor: ArrayLike = 1.0,
-                gear: tuple[Any, ...] | None = None
-                ) -> dict[str, NDArray]:
+@dataclass(frozen=True)
+class PairRatingInput:
+    """The terms of an AGMA 2003 rating of a bevel pair (SI, broadcasting arrays), in the
+    order of the worked examples' positional form (:func:`agma_rating`)."""
+
+    pinion_torque: ArrayLike  #: T. [N·m]
+    pinion_speed: ArrayLike  #: n of gear A (relative to its arm). [rad/s]
+    module: ArrayLike  #: m, outer. [m]
+    pinion_outer_diameter: ArrayLike  #: d_e1. [m]
+    face_width: ArrayLike  #: b. [m]
+    quality_number: ArrayLike  #: Qv, 5 to 11. [1]
+    hardness: ArrayLike  #: Brinell HB. [1]
+    mounting_factor: ArrayLike  #: Kmb. [1]
+    crowned: ArrayLike  #: true (1) for crowned teeth, Cxc = 1.5; else Cxc = 2.
+    bending_geometry_factor: ArrayLike  #: J. [1]
+    pitting_geometry_factor: ArrayLike  #: I. [1]
+    overload_factor: ArrayLike  #: Ko. [1]
+    cycles: ArrayLike  #: N, load cycles of the pinion. [1]
+    reliability: ArrayLike  #: R, 0.9 to 0.9999. [1]
+    #: (s_at, s_ac) of the steel [Pa] (:mod:`bearingcalc.core.gear_materials`); None:
+    #: those of through-hardened grade 1 steel of ``hardness``.
+    allowables: tuple[ArrayLike, ArrayLike] | None = None
+    temperature_factor: ArrayLike = 1.0  #: K_T. [1]
+    #: K_x, 1 for straight and Zerol teeth (:func:`lengthwise_curvature_factor`). [1]
+    lengthwise_curvature_factor: ArrayLike = 1.0
+    #: gear B's terms, to rate it as well; None: the pinion alone.
+    gear: GearMemberTerms | None = None
+
+
+@dataclass(frozen=True)
+class GearMemberRating:
+    """Gear B's bending stress [Pa] and its safety factors [1]."""
+
+    bending_stress: NDArray
+    bending_safety: NDArray
+    contact_safety: NDArray
+
+
+@dataclass(frozen=True)
+class PairRating:
+    """The AGMA 2003 rating of a pair: the pinion's stresses [Pa], safety factors [1]
+    and the powers at which they reach 1 [W]; gear B's where it was rated."""
+
+    bending_stress: NDArray
+    contact_stress: NDArray
+    bending_safety: NDArray
+    contact_safety: NDArray
+    bending_power_rating: NDArray
+    contact_power_rating: NDArray
+    gear_b: GearMemberRating | None = None
+
+    def as_results(self) -> dict[str, NDArray]:
+        """The rating under the kind's result keys (gear B's prefixed ``gear_b_``)."""
+        out = {name: getattr(self, name) for name in (
+            "bending_stress", "contact_stress", "bending_safety", "contact_safety",
+            "bending_power_rating", "contact_power_rating")}
+        if self.gear_b is not None:
+            out.update({"gear_b_bending_stress": self.gear_b.bending_stress,
+                        "gear_b_bending_safety": self.gear_b.bending_safety,
+                        "gear_b_contact_safety": self.gear_b.contact_safety})
+        return out
+
+
+def agma_rating(*terms: Any, **named: Any) -> dict[str, NDArray]:
+    """:func:`rate_pair` of ``PairRatingInput(*terms, **named)`` under the kind's result
+    keys: the positional form in which the worked examples are written."""
+    return rate_pair(PairRatingInput(*terms, **named)).as_results()
+
+
+def rate_pair(pair: PairRatingInput) -> PairRating:
     r"""AGMA 2003 bending and contact stresses, safety factors and power ratings of a
     bevel pair (straight, Zerol or spiral teeth), by default of through-hardened grade 1
     steel, in the SI form of Budynas & Nisbett ch. 15 and AGMA 2003-D19.
@@ -138,87 +197,75 @@ def agma_rating(pinion_torque: ArrayLike, pinion_speed: ArrayLike, module: Array
     0.70 − 0.15·log10(1 − R), C_R = √K_R, K_T = C_H = 1;
     S_F = s_at·K_L/(K_T·K_R·s_F), S_H = s_ac·C_L/(K_T·C_R·s_H). The power at which
     S = 1 at the same speed is P·S_F (bending, s_F ∝ Wt) and P·S_H² (contact,
-    s_H ∝ √Wt).
+    s_H ∝ √Wt). Gear B (``pair.gear``): s_F,G = s_F·J/J_G, its cycles N/(N/n),
+    S_H,G = s_ac,G·C_L,G·C_H/(K_T·C_R·s_H).
 
-    Parameters
-    ----------
-    pinion_torque : T. [N·m]
-    pinion_speed : n of gear A (relative to its arm). [rad/s]
-    module : m, outer. [m]
-    pinion_outer_diameter : d_e1. [m]
-    face_width : b. [m]
-    quality_number : Qv, 5 to 11. [1]
-    hardness : Brinell HB. [1]
-    mounting_factor : Kmb. [1]
-    crowned : true (1) for crowned teeth, Cxc = 1.5; else Cxc = 2.
-    bending_geometry_factor, pitting_geometry_factor : J, I. [1]
-    overload_factor : Ko. [1]
-    cycles : N, load cycles of the pinion. [1]
-    reliability : R, 0.9 to 0.9999. [1]
-    allowables : (s_at, s_ac) of the steel [Pa] (:mod:`bearingcalc.core.gear_materials`);
-        by default those of through-hardened grade 1 steel of ``hardness``.
-    temperature_factor : K_T. [1]
-    lengthwise_curvature_factor : K_x, 1 for straight and Zerol teeth. [1]
-    gear : (J_G, N/n, C_H, s_at,G, s_ac,G) to rate gear B as well: its geometry factor,
-        the gear ratio (its cycles are N·n/N), its hardness-ratio factor [1] and its own
-        allowable stress numbers [Pa] (None: the pinion's).
-
-    Returns
-    -------
-    dict with bending_stress and contact_stress [Pa], bending_safety and
-    contact_safety [1], bending_power_rating and contact_power_rating [W].
+    Parameters and units: :class:`PairRatingInput`; returns :class:`PairRating`.
 
     Source: ANSI/AGMA 2003-B97; Budynas & Nisbett, *Shigley's Mechanical Engineering
     Design*, 10th ed., §15-1 to 15-4, eqs. (15-1)–(15-23), SI form.
     """
-    torque = np.abs(np.asarray(pinion_torque, dtype=float))
-    speed = np.abs(np.asarray(pinion_speed, dtype=float))
-    m = np.asarray(module, dtype=float) * MM
-    de1 = np.asarray(pinion_outer_diameter, dtype=float) * MM
-    b = np.asarray(face_width, dtype=float) * MM
-    wt = 2.0 * torque * MM / de1                       # N, with T in N·mm
-    v = 0.5 * de1 / MM * speed                         # m/s
-    kv = dynamic_factor(quality_number, v)
-    ks = 0.4867 + 0.008339 * m
-    km = np.asarray(mounting_factor, dtype=float) + 5.6e-6 * b * b
-    ko = np.asarray(overload_factor, dtype=float)
-    bending = (wt / b * ks * km / np.asarray(bending_geometry_factor, dtype=float) * ko * kv / m
-               / np.asarray(lengthwise_curvature_factor, dtype=float))
-    cs = 0.00492 * b + 0.4375
-    cxc = np.where(np.asarray(crowned, dtype=bool), 1.5, 2.0)
-    contact = STEEL_ELASTIC_COEFFICIENT * np.sqrt(
-        wt * ko * kv * km * cs * cxc / (b * de1 * np.asarray(pitting_geometry_factor, dtype=float)))
-    if allowables is None:
-        hb = np.asarray(hardness, dtype=float)
-        bending_slope, bending_intercept, contact_slope, contact_intercept = (
-            THROUGH_HARDENED[1])
-        s_at, s_ac = bending_slope * hb + bending_intercept, contact_slope * hb + contact_intercept
-    else:
-        s_at, s_ac = (np.asarray(value, dtype=float) / 1e6 for value in allowables)
-    n = np.asarray(cycles, dtype=float)
-    r = np.asarray(reliability, dtype=float)
+    torque = np.abs(np.asarray(pair.pinion_torque, dtype=float))
+    speed = np.abs(np.asarray(pair.pinion_speed, dtype=float))
+    bending, contact = _stresses(pair, torque, speed)  # MPa
+    s_at, s_ac = _allowables(pair.allowables, pair.hardness)
+    n = np.asarray(pair.cycles, dtype=float)
+    r = np.asarray(pair.reliability, dtype=float)
     k_l, c_l = life_factors(n)
     k_r = np.where(r >= 0.99, 0.50 - 0.25 * np.log10(1.0 - r), 0.70 - 0.15 * np.log10(1.0 - r))
-    k_t = np.asarray(temperature_factor, dtype=float)
+    k_t = np.asarray(pair.temperature_factor, dtype=float)
     bending_safety = s_at * k_l / (k_t * k_r * bending)
     contact_safety = s_ac * c_l / (k_t * np.sqrt(k_r) * contact)
     power = torque * speed
-    out = {"bending_stress": bending * 1e6, "contact_stress": contact * 1e6,
-           "bending_safety": bending_safety, "contact_safety": contact_safety,
-           "bending_power_rating": power * bending_safety,
-           "contact_power_rating": power * contact_safety ** 2}
-    if gear is not None:
-        j_g, gear_ratio, c_h = (np.asarray(value, dtype=float) for value in gear[:3])
-        gear_s_at, gear_s_ac = ((s_at, s_ac) if gear[3] is None else
-                                (np.asarray(gear[3], dtype=float) / 1e6,
-                                 np.asarray(gear[4], dtype=float) / 1e6))
+    gear_b = None
+    if pair.gear is not None:
+        member = pair.gear
+        j_g, gear_ratio, c_h = (np.asarray(value, dtype=float) for value in (
+            member.bending_geometry_factor, member.gear_ratio, member.hardness_ratio_factor))
+        gear_s_at, gear_s_ac = ((s_at, s_ac) if member.allowables is None
+                                else _allowables(member.allowables, pair.hardness))
         gear_k_l, gear_c_l = life_factors(n / gear_ratio)  # gear B turns N/n times
-        gear_bending = bending * np.asarray(bending_geometry_factor, dtype=float) / j_g
-        out.update({
-            "gear_b_bending_stress": gear_bending * 1e6,
-            "gear_b_bending_safety": gear_s_at * gear_k_l / (k_t * k_r * gear_bending),
-            "gear_b_contact_safety": gear_s_ac * gear_c_l * c_h
-            / (k_t * np.sqrt(k_r) * contact)})
-    return out
+        gear_bending = bending * np.asarray(pair.bending_geometry_factor, dtype=float) / j_g
+        gear_b = GearMemberRating(
+            bending_stress=gear_bending * 1e6,
+            bending_safety=gear_s_at * gear_k_l / (k_t * k_r * gear_bending),
+            contact_safety=gear_s_ac * gear_c_l * c_h / (k_t * np.sqrt(k_r) * contact))
+    return PairRating(bending_stress=bending * 1e6, contact_stress=contact * 1e6,
+                      bending_safety=bending_safety, contact_safety=contact_safety,
+                      bending_power_rating=power * bending_safety,
+                      contact_power_rating=power * contact_safety ** 2, gear_b=gear_b)
 
 
+def _stresses(pair: PairRatingInput, torque: NDArray, speed: NDArray
+              ) -> tuple[NDArray, NDArray]:
+    """The pinion's bending and contact stresses s_F and s_H [MPa] (see :func:`rate_pair`),
+    in the mm, N and m/s of the SI form."""
+    m = np.asarray(pair.module, dtype=float) * MM
+    de1 = np.asarray(pair.pinion_outer_diameter, dtype=float) * MM
+    b = np.asarray(pair.face_width, dtype=float) * MM
+    wt = 2.0 * torque * MM / de1                       # N, with T in N·mm
+    v = 0.5 * de1 / MM * speed                         # m/s
+    kv = dynamic_factor(pair.quality_number, v)
+    ks = 0.4867 + 0.008339 * m
+    km = np.asarray(pair.mounting_factor, dtype=float) + 5.6e-6 * b * b
+    ko = np.asarray(pair.overload_factor, dtype=float)
+    bending = (wt / b * ks * km / np.asarray(pair.bending_geometry_factor, dtype=float) * ko
+               * kv / m / np.asarray(pair.lengthwise_curvature_factor, dtype=float))
+    cs = 0.00492 * b + 0.4375
+    cxc = np.where(np.asarray(pair.crowned, dtype=bool), 1.5, 2.0)
+    contact = STEEL_ELASTIC_COEFFICIENT * np.sqrt(
+        wt * ko * kv * km * cs * cxc
+        / (b * de1 * np.asarray(pair.pitting_geometry_factor, dtype=float)))
+    return bending, contact
+
+
+def _allowables(allowables: tuple[ArrayLike, ArrayLike] | None, hardness: ArrayLike
+                ) -> tuple[NDArray, NDArray]:
+    """The allowable bending and contact stress numbers s_at, s_ac [MPa]: those given
+    [Pa], else through-hardened grade 1 steel's of the Brinell ``hardness``."""
+    if allowables is not None:
+        s_at, s_ac = (np.asarray(value, dtype=float) / 1e6 for value in allowables)
+        return s_at, s_ac
+    hb = np.asarray(hardness, dtype=float)
+    bending_slope, bending_intercept, contact_slope, contact_intercept = THROUGH_HARDENED[1]
+    return bending_slope * hb + bending_intercept, contact_slope * hb + contact_intercept

@@ -66,14 +66,7 @@ def complete_elliptic_integrals(parameter: ArrayLike) -> tuple[NDArray, NDArray]
     """
     shape = np.shape(parameter)
     m = np.asarray(parameter, dtype=float).reshape(-1)   # arrays throughout, never scalars
-    with np.errstate(invalid="ignore"):                  # m > 1: NaN, set apart below
-        b0 = np.sqrt(1.0 - m)
-    smallest, largest = (float(b0.min()), float(b0.max())) if b0.size else (1.0, 1.0)
-    all_ordinary = smallest > 0.0 and largest < np.inf   # False with a NaN too
-    if not all_ordinary:
-        ordinary = (b0 > 0.0) & (b0 < np.inf)
-        b0 = np.where(ordinary, b0, 1.0)
-        smallest, largest = (float(b0.min()), float(b0.max())) if b0.size else (1.0, 1.0)
+    b0, ordinary, smallest, largest = _ordinary_start(m)
     steps = _steps_needed(smallest, largest)
 
     # Step 1 by hand: a₀b₀ = b₀, so b₁ = √b₀ with one rounding.
@@ -122,12 +115,27 @@ def complete_elliptic_integrals(parameter: ArrayLike) -> tuple[NDArray, NDArray]
     k = np.add(a, b, out=scratch)
     np.divide(np.pi, k, out=k)
     e = np.multiply(k, bracket, out=bracket)
-    if not all_ordinary:
+    if ordinary is not None:
         k = np.where(ordinary, k, np.where(m == 1.0, np.inf, np.where(m == -np.inf, 0.0,
                                                                           np.nan)))
         e = np.where(ordinary, e, np.where(m == 1.0, 1.0, np.where(m == -np.inf, np.inf,
                                                                        np.nan)))
     return k.reshape(shape), e.reshape(shape)
+
+
+def _ordinary_start(m: NDArray) -> tuple[NDArray, NDArray | None, float, float]:
+    """b₀ = √(1 − m) with m = 1, −∞, m > 1 and NaN set to 1 (their K and E are set
+    apart at the end), the mask of the ordinary m (None where all are), and the
+    smallest and largest b₀."""
+    with np.errstate(invalid="ignore"):                  # m > 1: NaN, set apart
+        b0 = np.sqrt(1.0 - m)
+    smallest, largest = (float(b0.min()), float(b0.max())) if b0.size else (1.0, 1.0)
+    if smallest > 0.0 and largest < np.inf:              # False with a NaN too
+        return b0, None, smallest, largest
+    ordinary = (b0 > 0.0) & (b0 < np.inf)
+    b0 = np.where(ordinary, b0, 1.0)
+    smallest, largest = (float(b0.min()), float(b0.max())) if b0.size else (1.0, 1.0)
+    return b0, ordinary, smallest, largest
 
 
 def _starts_series(b0: float) -> bool:

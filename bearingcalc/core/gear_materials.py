@@ -8,6 +8,7 @@ Every function takes SI values as floats or numpy arrays and returns arrays.
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -117,8 +118,22 @@ def hardness_ratio_factor(pinion_hardness: ArrayLike, gear_hardness: ArrayLike,
     return 1.0 + b1 * (np.maximum(np.asarray(gear_ratio, dtype=float), 1.0) - 1.0)
 
 
+@dataclass(frozen=True)
+class GearMemberTerms:
+    """What rating gear B as well takes beyond the pinion's terms."""
+
+    #: J_G, gear B's bending geometry factor. [1]
+    bending_geometry_factor: ArrayLike
+    #: N/n = z_gear/z_pinion: gear B turns N/n times less often than the pinion. [1]
+    gear_ratio: ArrayLike
+    #: C_H, the hardness-ratio factor of a softer gear B. [1]
+    hardness_ratio_factor: ArrayLike = 1.0
+    #: (s_at,G, s_ac,G), gear B's own allowable stress numbers [Pa]; None: the pinion's.
+    allowables: tuple[ArrayLike, ArrayLike] | None = None
+
+
 def rating_terms(inputs: Mapping[str, ArrayLike | None]) -> dict[str, Any]:
-    """The keyword terms of :func:`bearingcalc.core.bevel_rating.agma_rating` that the
+    """The terms of :class:`bearingcalc.core.bevel_rating.PairRatingInput` that the
     steel sets: its allowable stresses, the temperature factor and gear B's own terms,
     where the inputs [SI] give them (through-hardened grade 1 at normal temperature, the
     pinion alone, otherwise)."""
@@ -134,9 +149,10 @@ def rating_terms(inputs: Mapping[str, ArrayLike | None]) -> dict[str, Any]:
             inputs["gear_a_teeth"], dtype=float)
         gear_hardness = inputs.get("gear_hardness")
         if gear_hardness is None:  # gear B of the pinion's steel
-            terms["gear"] = (inputs["geometry_factor_bending_gear"], ratio, 1.0, None, None)
+            terms["gear"] = GearMemberTerms(inputs["geometry_factor_bending_gear"], ratio)
         else:  # a softer through-hardened gear B: its own allowables, and C_H
-            terms["gear"] = (inputs["geometry_factor_bending_gear"], ratio,
-                             hardness_ratio_factor(inputs["hardness"], gear_hardness, ratio),
-                             *allowable_stresses(str(material), grade, gear_hardness))
+            terms["gear"] = GearMemberTerms(
+                inputs["geometry_factor_bending_gear"], ratio,
+                hardness_ratio_factor(inputs["hardness"], gear_hardness, ratio),
+                allowable_stresses(str(material), grade, gear_hardness))
     return terms

@@ -203,16 +203,7 @@ def _solve(r: NDArray, theta: NDArray, b: NDArray, shaft_speed: ArrayLike,
     the geometry is possible) and ``cos`` (cosθ) may come from the caller's checks."""
     omega_s = np.asarray(shaft_speed, dtype=float)
     rho_max = np.asarray(max_spin_to_roll, dtype=float)
-    if cos is None:
-        cos = np.cos(theta)
-    if ok is None:
-        ok = geometry_possible(r, theta, b, cos)
-    all_ok = bool(np.all(ok))
-    if not all_ok:
-        # NaN where impossible: cos(NaN) is NaN, so masking cosθ equals taking the
-        # cosine of the masked θ, bit for bit.
-        r, theta, b, cos = (np.where(ok, x, np.nan) for x in (r, theta, b, cos))
-
+    r, theta, b, cos, ok, all_ok = _possible_geometry(r, theta, b, ok, cos)
     # Each shared term is computed once, in the order of operations the formulas
     # below were always evaluated in, so the numbers do not change.
     sin = np.sin(theta)
@@ -263,6 +254,23 @@ def _solve(r: NDArray, theta: NDArray, b: NDArray, shaft_speed: ArrayLike,
         results["ball_pass_frequency_race"] = z * np.abs(cage) / (2 * np.pi)
         results["ball_pass_frequency_shaft"] = z * np.abs(omega_s - cage) / (2 * np.pi)
     return broadcast_all(results)
+
+
+def _possible_geometry(r: NDArray, theta: NDArray, b: NDArray, ok: NDArray | None,
+                       cos: NDArray | None
+                       ) -> tuple[NDArray, NDArray, NDArray, NDArray, NDArray, bool]:
+    """r, θ, b and cosθ with NaN where the geometry is impossible, where it is possible
+    (``ok`` and ``cos`` computed unless given), and whether it is everywhere."""
+    if cos is None:
+        cos = np.cos(theta)
+    if ok is None:
+        ok = geometry_possible(r, theta, b, cos)
+    all_ok = bool(np.all(ok))
+    if not all_ok:
+        # NaN where impossible: cos(NaN) is NaN, so masking cosθ equals taking the
+        # cosine of the masked θ, bit for bit.
+        r, theta, b, cos = (np.where(ok, x, np.nan) for x in (r, theta, b, cos))
+    return r, theta, b, cos, ok, all_ok
 
 
 #: Results that :func:`evaluate` can compute alone, without every speed.

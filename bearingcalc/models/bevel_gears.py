@@ -9,10 +9,10 @@ from typing import Any, ClassVar, Literal
 
 from pydantic import Field
 
-from bearingcalc.core.bevel_rating import MOUNTING_FACTOR
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
-from bearingcalc.models.bevel_rating import BevelRating
+from bearingcalc.models.bevel_pair_rules import PairRules
+from bearingcalc.models.bevel_rating import BevelRating, rating_inputs
 from bearingcalc.models.duty import DutyCycleRules, bin_model
 from bearingcalc.models.plain_numbers import Ratio, ToothCount
 from bearingcalc.models.quantities import (
@@ -40,7 +40,7 @@ class BevelGearsLimits(SpecModel):
     min_contact_safety: Ratio = Field(1.0, description="smallest S_H")
 
 
-class BevelPair(Spec):
+class BevelPair(PairRules, Spec):
     """The fields of a bevel pair, its sizing and its rating, shared by the kinds that
     hold one (``bevel-gears``, ``bevel-drive``)."""
 
@@ -61,38 +61,6 @@ class BevelPair(Spec):
     rotation: Literal["clockwise", "counterclockwise"] | None = Field(
         None, description="the pinion's, seen from its back (large end) toward the apex")
     rating: BevelRating | None = None
-
-    @rule
-    def _spiral_given(self) -> SpecFieldError | None:
-        if self.spiral_angle is None:
-            for field in ("hand", "rotation"):
-                if getattr(self, field) is not None:
-                    return SpecFieldError(field, "applies to a spiral bevel pair: give "
-                                          "spiral_angle too, like 35 deg")
-            if self.rating is not None and self.rating.cutter_radius is not None:
-                return SpecFieldError("rating.cutter_radius", "applies to a spiral bevel "
-                                      "pair: give spiral_angle too, like 35 deg, or leave "
-                                      "it out (a straight pair's K_x is 1)")
-            return None
-        if not 0 <= self.spiral_angle <= math.radians(50):
-            return SpecFieldError("spiral_angle", "must be from 0 deg (Zerol) to 50 deg, "
-                                  "like 35 deg")
-        if self.face_width is None:  # the kinematics do not depend on the spiral
-            return SpecFieldError("face_width", "a spiral_angle gives a sized pair its "
-                                  "normal section and tooth forces: give face_width too, "
-                                  "like 15 mm (and a torque or power for the forces)",
-                                  at="spiral_angle")
-        for field, example in (("hand", "right"), ("rotation", "clockwise")):
-            if getattr(self, field) is None and self.spiral_angle > 0:
-                return SpecFieldError(field, f"a spiral bevel pair's forces need the "
-                                      f"pinion's {field}, like {field}: {example}",
-                                      at="spiral_angle")
-        if self.rating is not None and self.rating.cutter_radius is None and (
-                self.spiral_angle > 0):
-            return SpecFieldError("rating.cutter_radius", "a spiral pair's rating needs the "
-                                  "face cutter's radius for AGMA 2003's lengthwise curvature "
-                                  "factor K_x, like 114.3 mm (4.5 in)", at="spiral_angle")
-        return None
 
     @property
     def thrust_sign(self) -> float:
@@ -117,70 +85,6 @@ class BevelPair(Spec):
                 f"{', '.join(moved)} {'varies' if len(moved) == 1 else 'vary'}: the other "
                 "designs are rated with the factors of the spec's own tooth geometry"]
 
-    @rule
-    def _geometry_is_determined(self) -> SpecFieldError | None:
-        for label, gear in (("gear_a", self.gear_a), ("gear_b", self.gear_b)):
-            if gear.pitch_radius is None and gear.teeth is None:
-                return SpecFieldError(label, f"give {label}.pitch_radius, or {label}.teeth "
-                                      "with module")
-            if gear.pitch_radius is None and self.module is None:
-                return SpecFieldError("module", f"{label}.teeth without a pitch radius needs "
-                                      "the module, e.g. module: 2 mm", at=label)
-            if gear.pitch_radius is not None and gear.teeth is not None and self.module:
-                from_teeth = self.module * gear.teeth / 2.0
-                if not math.isclose(gear.pitch_radius, from_teeth, rel_tol=1e-9):
-                    return SpecFieldError(
-                        f"{label}.pitch_radius",
-                        f"disagrees with module × teeth / 2 = {from_teeth * 1e3:g} mm; "
-                        "give one or make them agree")
-        a, b = self.gear_a, self.gear_b
-        if (self.module is None and None not in (a.teeth, b.teeth, a.pitch_radius, b.pitch_radius)
-                and not math.isclose(a.pitch_radius * b.teeth, b.pitch_radius * a.teeth,
-                                     rel_tol=1e-9)):
-            # Meshing gears share a module, so their pitch radii are in the ratio of teeth.
-            return SpecFieldError(
-                "gear_b.teeth", f"the teeth ({a.teeth}/{b.teeth}) disagree with the pitch radii "
-                f"({a.pitch_radius * 1e3:g} mm/{b.pitch_radius * 1e3:g} mm): meshing gears "
-                "have pitch radii in the ratio of their teeth; leave the teeth or the radii "
-                "out, or make them agree")
-        return None
-
-    @rule
-    def _sizing_is_determined(self) -> SpecFieldError | None:
-        sizing = [name for name in ("face_width", "torque", "power", "rating")
-                  if getattr(self, name) is not None]
-        if sizing and (self.module is None or self.gear_a.teeth is None
-                       or self.gear_b.teeth is None):
-            return SpecFieldError(sizing[0], "sizing needs the teeth of both gears and the "
-                                  "(outer) module, not pitch radii alone")
-        if sizing and self.face_width is None:
-            return SpecFieldError(sizing[0], "sizing needs face_width, like 28 mm")
-        return None
-
-    @rule
-    def _one_load(self) -> SpecFieldError | None:
-        if self.torque is not None and self.power is not None:
-            return SpecFieldError("power", "give torque or power on gear A, not both")
-        if self.rating is not None and self.torque is None and self.power is None:
-            return SpecFieldError("rating", "the strength rating needs a load: give torque "
-                                  "(like 150 N*m) or power (like 9.4 kW) on gear A")
-        return None
-
-    @rule
-    def _pressure_angle(self) -> SpecFieldError | None:
-        if not 0 < self.pressure_angle < math.radians(45):
-            return SpecFieldError("pressure_angle", "must be between 0 deg and 45 deg, like "
-                                  "20 deg")
-        return None
-
-    @rule
-    def _axes_placed(self) -> SpecFieldError | None:
-        if self.shaft_angle is None and (self.gear_a.pitch_angle is None
-                                         or self.gear_b.pitch_angle is None):
-            return SpecFieldError("shaft_angle", "missing: give shaft_angle (90 deg for the "
-                                  "usual right-angle pair), or both pitch angles")
-        return None
-
     def pair_inputs(self, arm_speed: Any, gear_b_speed: Any, limits: BevelGearsLimits
                     ) -> dict[str, Any]:
         """SI inputs of :func:`bearingcalc.core.bevel_gears.evaluate`."""
@@ -200,30 +104,16 @@ class BevelPair(Spec):
         }
 
     def _sizing_inputs(self, limits: BevelGearsLimits) -> dict[str, Any]:
-        rating = self.rating
+        rating = rating_inputs(self.rating)
         return {
             "face_width": self.face_width,
             "pressure_angle": self.pressure_angle,
             "torque": self.torque,
             "power": self.power,
             "spiral_angle": self.spiral_angle,
-            "cutter_radius": rating.cutter_radius if rating else None,
+            "cutter_radius": rating["cutter_radius"],
             "thrust_sign": None if self.spiral_angle is None else self.thrust_sign,
-            "quality_number": rating.quality_number if rating else None,
-            "hardness": rating.hardness if rating else None,
-            "material": rating.material if rating else None,
-            "grade": rating.grade if rating else None,
-            "gear_hardness": rating.gear_hardness if rating else None,
-            "temperature": rating.temperature if rating else None,
-            "geometry_factor_bending_gear": (rating.geometry_factor_bending_gear
-                                             if rating else None),
-            "mounting_factor": MOUNTING_FACTOR[rating.mounting] if rating else None,
-            "crowned": float(rating.crowned) if rating else None,
-            "geometry_factor_bending": rating.geometry_factor_bending if rating else None,
-            "geometry_factor_pitting": rating.geometry_factor_pitting if rating else None,
-            "overload_factor": rating.overload_factor if rating else None,
-            "cycles": rating.cycles if rating else None,
-            "reliability": rating.reliability if rating else None,
+            **{key: value for key, value in rating.items() if key != "cutter_radius"},
             "max_face_width_ratio": limits.max_face_width_ratio,
             "min_bending_safety": limits.min_bending_safety,
             "min_contact_safety": limits.min_contact_safety,

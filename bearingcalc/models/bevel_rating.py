@@ -8,6 +8,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import Field, PlainValidator, WithJsonSchema
 
+from bearingcalc.core.bevel_rating import MOUNTING_FACTOR
 from bearingcalc.core.gear_materials import GRADES
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import SpecModel
@@ -146,3 +147,23 @@ class BevelRating(SpecModel):
                                           "stresses are fixed by its grade: leave the "
                                           "Brinell hardness out")
         return None
+
+
+#: The rating's solver inputs, in order (the face cutter's radius first).
+RATING_INPUTS = (
+    "cutter_radius", "quality_number", "hardness", "material", "grade", "gear_hardness",
+    "temperature", "geometry_factor_bending_gear", "mounting_factor", "crowned",
+    "geometry_factor_bending", "geometry_factor_pitting", "overload_factor", "cycles",
+    "reliability")
+
+
+def rating_inputs(rating: BevelRating | None) -> dict[str, Any]:
+    """The SI solver inputs of a pair's rating block (:data:`RATING_INPUTS`): the mounting
+    as its factor Kmb, crowning as 1 or 0; None each without a rating."""
+    if rating is None:
+        return dict.fromkeys(RATING_INPUTS)
+    values = {name: getattr(rating, name) for name in RATING_INPUTS
+              if name not in ("mounting_factor", "crowned")}
+    values["mounting_factor"] = MOUNTING_FACTOR[rating.mounting]
+    values["crowned"] = float(rating.crowned)
+    return {name: values[name] for name in RATING_INPUTS}

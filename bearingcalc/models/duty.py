@@ -210,7 +210,6 @@ class DutyCycleRules:
                                   at=problem.at or f"duty_cycle.{k}.time")
         return rename
 
-
     @whole_spec_rule
     def _cycle_given_right(self) -> SpecFieldError | None:
         bins = self.duty_cycle

@@ -53,8 +53,9 @@ class _ReadsElements:
         def _envelope_mm(self) -> tuple[float, float] | None: ...
 
 
-class ElementFitRules(_ReadsElements):
-    """Balls and rollers that fit their bearing; inclined rollers that are inclined."""
+class _ElementsInPlace(_ReadsElements):
+    """Balls and rollers that fit on their pitch circle, within the width and between
+    the rings, in the proportions the rating tables cover."""
 
     @rule
     def _elements_fit_on_pitch_circle(self) -> SpecFieldError | None:
@@ -171,6 +172,11 @@ class ElementFitRules(_ReadsElements):
                                   f"diameter ({outside:g} mm): the pitch circle lies nearer "
                                   f"the rings' mean, {(bore + outside) / 2:g} mm")
         return None
+
+
+class ElementFitRules(_ElementsInPlace):
+    """Balls and rollers that fit their bearing (their place: the base class; here the
+    rollers' own shape and angle); inclined rollers that are inclined."""
 
     @rule
     def _thrust_rollers_in_section(self) -> SpecFieldError | None:

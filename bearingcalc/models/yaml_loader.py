@@ -10,58 +10,31 @@ memory.
 
 from __future__ import annotations
 
-import math
 import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, ClassVar
+from typing import Any
 
 import yaml
 
 from bearingcalc.errors import SpecError
 from bearingcalc.models.field_path import FieldPath
 from bearingcalc.models.spec_files import MAX_FILE_BYTES, read_spec_text, wide_encoding
-from bearingcalc.number_grammar import NUMBER
+from bearingcalc.models.yaml_schema import (
+    _LOADER,
+    _MAP_TAG,
+    _PLAIN_TAGS,
+    _SEQ_TAG,
+    _core_value,
+    plain_scalar,
+)
 
 MAX_NODES = 10_000
 MAX_DEPTH = 20
 
 __all__ = ["MAX_DEPTH", "MAX_FILE_BYTES", "MAX_NODES", "Document", "is_spec_file",
            "load_documents", "plain_scalar", "read_spec_text", "wide_encoding"]
-
-_BASE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-
-
-class _Yaml12Loader(_BASE_LOADER):  # type: ignore[misc, valid-type]
-    """PyYAML's parser with the YAML 1.2 core schema's plain-scalar rules.
-
-    PyYAML resolves plain scalars by YAML 1.1 rules: ``1e-2`` is a string, ``014``
-    octal, ``1:00`` sexagesimal, ``2024-01-01`` a date and ``<<`` a merge key.
-    Editors and check-jsonschema follow YAML 1.2, so specs are read the same way.
-    """
-
-    yaml_implicit_resolvers: ClassVar[dict[str | None, list[tuple[str, re.Pattern[str]]]]] = {}
-
-
-# The YAML 1.2 core schema (https://yaml.org/spec/1.2.2/#1023-core-schema), tag by tag.
-_CORE_SCHEMA = {
-    "tag:yaml.org,2002:null": (r"^(?:~|null|Null|NULL|)$", [*"~nN", ""]),
-    "tag:yaml.org,2002:bool": (r"^(?:true|True|TRUE|false|False|FALSE)$", list("tTfF")),
-    "tag:yaml.org,2002:int": (r"^(?:[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+)$",
-                              list("-+0123456789")),
-    "tag:yaml.org,2002:float": (
-        rf"^(?:{NUMBER}|[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN))$", list("-+.0123456789")),
-}
-for _tag, (_pattern, _first) in _CORE_SCHEMA.items():
-    _Yaml12Loader.add_implicit_resolver(_tag, re.compile(_pattern), _first)
-_LOADER = _Yaml12Loader
-_PLAIN_TAGS = {
-    "tag:yaml.org,2002:str", "tag:yaml.org,2002:int", "tag:yaml.org,2002:float",
-    "tag:yaml.org,2002:bool", "tag:yaml.org,2002:null",
-}
-_MAP_TAG = "tag:yaml.org,2002:map"
-_SEQ_TAG = "tag:yaml.org,2002:seq"
 
 KeyPath = tuple[str | int, ...]
 
@@ -184,94 +157,98 @@ class _Builder:
         self.loader = loader
         self.label = label
         self.text = text
+        self._new_document(1)
+
+    def _new_document(self, start_line: int) -> None:
+        """Start a document's tree afresh: no open container, anchor, key line or value."""
+        self.stack: list[_Container] = []
+        self.anchors: dict[str, tuple[Any, int]] = {}
+        self.lines: dict[KeyPath, int] = {}
+        self.nodes = 0
+        self.root: Any = None
+        self.start_line = start_line
 
     def _fail(self, message: str, event: yaml.Event) -> SpecError:
         return SpecError(message, source=self.label, line=event.start_mark.line + 1)
 
     def documents(self) -> list[Document]:
-        loader = self.loader
+        """Every document of the stream: its data and the line of each key."""
         documents: list[Document] = []
-        stack: list[_Container] = []
-        anchors: dict[str, tuple[Any, int]] = {}
-        lines: dict[KeyPath, int] = {}
-        nodes = 0
-        start_line = 1
-        root: Any = None
-        while loader.check_event():
-            event = loader.get_event()
+        while self.loader.check_event():
+            event = self.loader.get_event()
             if isinstance(event, yaml.DocumentStartEvent):
-                stack, anchors, lines, nodes, root = [], {}, {}, 0, None
-                start_line = event.start_mark.line + 1
-                continue
-            if isinstance(event, yaml.DocumentEndEvent):
+                self._new_document(event.start_mark.line + 1)
+            elif isinstance(event, yaml.DocumentEndEvent):
                 documents.append(Document(source=self.label, path=self.label,
-                                          index=len(documents) + 1, data=root,
-                                          start_line=start_line, lines=lines))
-                continue
-            if isinstance(event, (yaml.StreamStartEvent, yaml.StreamEndEvent)):
-                continue
-            if isinstance(event, (yaml.MappingEndEvent, yaml.SequenceEndEvent)):
-                done = stack.pop()
-                if done.key_start is not None:
-                    raise self._key_error(done.value, done.key_start, event)
-                if done.anchor is not None:
-                    anchors[done.anchor] = (done.value, nodes - done.first_node + 1)
-                if not stack:
-                    root = done.value
-                continue  # attached to its parent when it started
-            if isinstance(event, yaml.AliasEvent):
-                if event.anchor not in anchors:
-                    raise self._fail(f"unknown alias '*{event.anchor}'", event)
-                value, size = anchors[event.anchor]
-            else:
-                size = 1
-                parent_path = stack[-1].key_path if stack else ()
-                if isinstance(event, yaml.MappingStartEvent):
-                    self._check_tag(event, _MAP_TAG)
-                    value = {}
-                elif isinstance(event, yaml.SequenceStartEvent):
-                    self._check_tag(event, _SEQ_TAG)
-                    value = []
-                else:
-                    value = self._scalar(event)
-            nodes += size
-            if nodes > MAX_NODES:
-                raise self._fail(f"document too large: more than {MAX_NODES} values "
-                                 "(YAML aliases count as copies)", event)
-            if isinstance(event, (yaml.MappingStartEvent, yaml.SequenceStartEvent)):
-                if len(stack) >= MAX_DEPTH:
-                    raise self._fail(_TOO_DEEP,
-                                     event)
-                key_path = self._child_path(stack, parent_path)
-                is_key = self._attach(stack, value, event, lines)
-                stack.append(_Container(value, key_path, event.anchor, nodes))
-                if is_key:  # refused at its end, when the whole key can be shown
-                    stack[-1].key_start = event
-                continue
-            if isinstance(event, yaml.ScalarEvent) and event.anchor is not None:
-                anchors[event.anchor] = (value, 1)
-            if stack:
-                self._attach(stack, value, event, lines)
-            else:
-                root = value
+                                          index=len(documents) + 1, data=self.root,
+                                          start_line=self.start_line, lines=self.lines))
+            elif isinstance(event, (yaml.MappingEndEvent, yaml.SequenceEndEvent)):
+                self._close(event)
+            elif not isinstance(event, (yaml.StreamStartEvent, yaml.StreamEndEvent)):
+                self._add(event)
         return documents
 
-    @staticmethod
-    def _child_path(stack: list[_Container], parent_path: KeyPath) -> KeyPath:
-        if not stack:
-            return ()
-        parent = stack[-1]
-        if isinstance(parent.value, list):
-            return (*parent_path, len(parent.value))
-        return (*parent_path, parent.pending_key)
+    def _close(self, event: yaml.Event) -> None:
+        """A list or mapping ends (attached to its parent when it started): refused if it
+        is a key, kept under its anchor with its size, or the document's root."""
+        done = self.stack.pop()
+        if done.key_start is not None:
+            raise self._key_error(done.value, done.key_start, event)
+        if done.anchor is not None:
+            self.anchors[done.anchor] = (done.value, self.nodes - done.first_node + 1)
+        if not self.stack:
+            self.root = done.value
 
-    def _attach(self, stack: list[_Container], value: Any, event: yaml.Event,
-                lines: dict[KeyPath, int]) -> bool:
+    def _add(self, event: Any) -> None:
+        """A scalar, an alias (its anchor's value, counted at its anchor's size) or a list
+        or mapping that starts: counted against the size limit, then attached."""
+        if isinstance(event, yaml.AliasEvent):
+            if event.anchor not in self.anchors:
+                raise self._fail(f"unknown alias '*{event.anchor}'", event)
+            value, size = self.anchors[event.anchor]
+        else:
+            size, value = 1, self._new_value(event)
+        self.nodes += size
+        if self.nodes > MAX_NODES:
+            raise self._fail(f"document too large: more than {MAX_NODES} values "
+                             "(YAML aliases count as copies)", event)
+        if isinstance(event, (yaml.MappingStartEvent, yaml.SequenceStartEvent)):
+            self._open(value, event)
+            return
+        if isinstance(event, yaml.ScalarEvent) and event.anchor is not None:
+            self.anchors[event.anchor] = (value, 1)
+        if self.stack:
+            self._attach(value, event)
+        else:
+            self.root = value
+
+    def _new_value(self, event: Any) -> Any:
+        """An empty mapping or list, or a scalar's value, once its tag is allowed."""
+        if isinstance(event, yaml.MappingStartEvent):
+            self._check_tag(event, _MAP_TAG)
+            return {}
+        if isinstance(event, yaml.SequenceStartEvent):
+            self._check_tag(event, _SEQ_TAG)
+            return []
+        return self._scalar(event)
+
+    def _open(self, value: Any, event: Any) -> None:
+        """A list or mapping starts: attached to its parent and open for its values."""
+        if len(self.stack) >= MAX_DEPTH:
+            raise self._fail(_TOO_DEEP, event)
+        parent_path = self.stack[-1].key_path if self.stack else ()
+        key_path = _child_path(self.stack, parent_path)
+        is_key = self._attach(value, event)
+        self.stack.append(_Container(value, key_path, event.anchor, self.nodes))
+        if is_key:  # refused at its end, when the whole key can be shown
+            self.stack[-1].key_start = event
+
+    def _attach(self, value: Any, event: yaml.Event) -> bool:
         """Put a value into the container on top of the stack; True where it is a
         mapping's key that is itself a list or mapping (refused once it is read)."""
-        if not stack:
+        if not self.stack:
             return False
-        parent = stack[-1]
+        parent = self.stack[-1]
         if isinstance(parent.value, list):
             parent.value.append(value)
             return False
@@ -285,7 +262,7 @@ class _Builder:
             if value in parent.value:
                 raise self._fail(f"duplicate key '{value}'", event)
             parent.pending_key = value
-            lines[(*parent.key_path, value)] = event.start_mark.line + 1
+            self.lines[(*parent.key_path, value)] = event.start_mark.line + 1
             return False
         parent.value[parent.pending_key] = value
         parent.pending_key = _NO_KEY
@@ -294,31 +271,12 @@ class _Builder:
     def _key_error(self, value: Any, start: yaml.Event, end: yaml.Event) -> SpecError:
         """A key that is no plain name (null, a number, true or false, a list, a mapping,
         an alias to one), named as written."""
-        if isinstance(start, yaml.AliasEvent):
-            written = f"*{start.anchor}"
-        elif isinstance(start, yaml.ScalarEvent):
-            written = start.value
-        else:
-            written = " ".join(self._written(start.start_mark, end.end_mark).split())
-            if not written.startswith(("[", "{")):  # a block list or mapping: in one line
-                written = yaml.safe_dump(value, default_flow_style=True, width=10**6).strip()
+        written = _key_as_written(self.text, value, start, end)
         shown = written if len(written) <= 40 else f"{written[:37]}..."
         what = ("the key is empty" if written == "" and value is None
                 else f"the key '{shown}' is {_kind_of(value)}")
         return self._fail(f"a key must be a plain name, like speed in 'speed: 1500 rpm'; "
                           f"{what}", start)
-
-    def _written(self, start: Any, end: Any) -> str:
-        """The text between two marks, found by line and column (counted in characters
-        by every YAML parser)."""
-        lines = _LINE_BREAKS.split(self.text)
-        if start.line >= len(lines):
-            return ""
-        if start.line == end.line:
-            return lines[start.line][start.column:end.column]
-        middle = lines[start.line + 1:end.line]
-        last = lines[end.line][:end.column] if end.line < len(lines) else ""
-        return "\n".join([lines[start.line][start.column:], *middle, last])
 
     def _check_tag(self, event: Any, default_tag: str) -> None:
         if event.tag is not None and event.tag not in (default_tag, "!"):
@@ -340,42 +298,39 @@ class _Builder:
                              event) from None
 
 
-def plain_scalar(text: str) -> Any:
-    """The value of ``text`` written as a plain (unquoted) YAML scalar in a spec: None,
-    true or false, an int, a float, or the text itself (``'90 %'``, ``'1 kN'``)."""
-    stripped = text.strip()
-    for tag, (pattern, _) in _CORE_SCHEMA.items():
-        if re.match(pattern, stripped) and stripped:
-            return _core_value(tag, stripped)
-    return stripped
+def _key_as_written(text: str, value: Any, start: yaml.Event, end: yaml.Event) -> str:
+    """A key as the spec writes it: an alias by its name, a list or mapping in one line."""
+    if isinstance(start, yaml.AliasEvent):
+        return f"*{start.anchor}"
+    if isinstance(start, yaml.ScalarEvent):
+        return start.value
+    written = " ".join(_written(text, start.start_mark, end.end_mark).split())
+    if not written.startswith(("[", "{")):  # a block list or mapping: in one line
+        written = yaml.safe_dump(value, default_flow_style=True, width=10**6).strip()
+    return written
 
 
-def _core_value(tag: str, text: str) -> Any:
-    """The value of a scalar by the YAML 1.2 core schema (explicit tags included)."""
-    if tag.endswith(":str"):
-        return text
-    if tag.endswith(":null"):
-        if text not in ("~", "null", "Null", "NULL", ""):
-            raise ValueError(text)
-        return None
-    if tag.endswith(":bool"):
-        lowered = text.lower()
-        if lowered not in ("true", "false"):
-            raise ValueError(text)
-        return lowered == "true"
-    if tag.endswith(":int"):
-        if text.startswith(("0o", "0x")):
-            return int(text[2:], 8 if text[1] == "o" else 16)
-        if not re.fullmatch(r"[-+]?[0-9]+", text):
-            raise ValueError(text)
-        # Decimal, whatever the leading zeros: YAML 1.2 has no implicit octal.
-        return int(text, 10)
-    special = {".inf": math.inf, "+.inf": math.inf, "-.inf": -math.inf, ".nan": math.nan}
-    if text.lower() in special:
-        return special[text.lower()]
-    if not re.fullmatch(NUMBER, text):
-        raise ValueError(text)
-    return float(text)
+def _child_path(stack: list[_Container], parent_path: KeyPath) -> KeyPath:
+    """The key path of a container that starts inside the one on top of ``stack``."""
+    if not stack:
+        return ()
+    parent = stack[-1]
+    if isinstance(parent.value, list):
+        return (*parent_path, len(parent.value))
+    return (*parent_path, parent.pending_key)
+
+
+def _written(text: str, start: Any, end: Any) -> str:
+    """The text between two marks, found by line and column (counted in characters
+    by every YAML parser)."""
+    lines = _LINE_BREAKS.split(text)
+    if start.line >= len(lines):
+        return ""
+    if start.line == end.line:
+        return lines[start.line][start.column:end.column]
+    middle = lines[start.line + 1:end.line]
+    last = lines[end.line][:end.column] if end.line < len(lines) else ""
+    return "\n".join([lines[start.line][start.column:], *middle, last])
 
 
 def is_spec_file(path: Path) -> bool:

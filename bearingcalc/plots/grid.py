@@ -31,33 +31,7 @@ def grid_sweep(sweep: Sweep, key: str, figure: Any, axes: Any) -> None:
         axes.text(0.5, 0.5, "no possible design in this range", ha="center",
                   transform=axes.transAxes)
     else:
-        # Colour by the central 96 % of the values: a few very negative margins far from
-        # the limit would otherwise squeeze the interesting band into one colour.
-        low, high = np.percentile(z.compressed(), [2.0, 98.0])
-        if not high > low:
-            low, high = float(z.min()), float(z.max()) + 1e-300
-        logarithmic = low > 0 and high > 100 * low  # decades: a log scale, round ticks
-        if logarithmic:
-            from matplotlib.colors import LogNorm
-            from matplotlib.ticker import LogLocator
-
-            norm = LogNorm(vmin=low, vmax=high)
-            levels = np.geomspace(low, high, 25)
-        else:  # round levels, so the colour bar's ticks read as numbers one would write
-            from matplotlib.ticker import MaxNLocator
-
-            norm, levels = None, MaxNLocator(nbins=20).tick_values(low, high)
-        if stepped:
-            filled = axes.pcolormesh(x, y, z, shading="nearest", cmap="viridis",
-                                     norm=norm, vmin=None if norm else low,
-                                     vmax=None if norm else high)
-        else:
-            filled = axes.contourf(x, y, np.ma.clip(z, low, high), levels=levels,
-                                   cmap="viridis", extend="both", norm=norm)
-        bar = figure.colorbar(filled, ax=axes, label=z_label, extend="both")
-        if logarithmic:
-            bar.locator = LogLocator()
-            bar.update_ticks()
+        _filled_result(figure, axes, x, y, z, stepped, z_label)
         ok = sweep.within_limits.reshape(shape)
         if sweep.kind.margins and ok.any():
             handles.append(_within_limits_overlay(axes, x, y, ok, stepped))
@@ -73,6 +47,39 @@ def grid_sweep(sweep: Sweep, key: str, figure: Any, axes: Any) -> None:
             target.get_major_locator().set_params(integer=True)
     if handles:
         legend_below(axes, handles)
+
+
+def _filled_result(figure: Any, axes: Any, x: NDArray, y: NDArray, z: Any, stepped: bool,
+                   z_label: str) -> None:
+    """The result in colour: cells (``stepped``) or filled contours, on a log scale where
+    it spans decades, with its colour bar."""
+    # Colour by the central 96 % of the values: a few very negative margins far from
+    # the limit would otherwise squeeze the interesting band into one colour.
+    low, high = np.percentile(z.compressed(), [2.0, 98.0])
+    if not high > low:
+        low, high = float(z.min()), float(z.max()) + 1e-300
+    logarithmic = low > 0 and high > 100 * low  # decades: a log scale, round ticks
+    if logarithmic:
+        from matplotlib.colors import LogNorm
+        from matplotlib.ticker import LogLocator
+
+        norm = LogNorm(vmin=low, vmax=high)
+        levels = np.geomspace(low, high, 25)
+    else:  # round levels, so the colour bar's ticks read as numbers one would write
+        from matplotlib.ticker import MaxNLocator
+
+        norm, levels = None, MaxNLocator(nbins=20).tick_values(low, high)
+    if stepped:
+        filled = axes.pcolormesh(x, y, z, shading="nearest", cmap="viridis",
+                                 norm=norm, vmin=None if norm else low,
+                                 vmax=None if norm else high)
+    else:
+        filled = axes.contourf(x, y, np.ma.clip(z, low, high), levels=levels,
+                               cmap="viridis", extend="both", norm=norm)
+    bar = figure.colorbar(filled, ax=axes, label=z_label, extend="both")
+    if logarithmic:
+        bar.locator = LogLocator()
+        bar.update_ticks()
 
 
 def _within_limits_overlay(axes: Any, x: NDArray, y: NDArray, ok: NDArray,

@@ -3,6 +3,7 @@ range within limits shaded out to where each drawn curve meets its drawn limit."
 
 from __future__ import annotations
 
+import itertools
 import textwrap
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
@@ -25,13 +26,12 @@ def line_sweep(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> Any
     axis = sweep.axes[0]
     x_scale, x_label = axis_label(axis.name, axis.unit)
     x = sweep.inputs[axis.name] * x_scale
-    units = sweep.units
     # A margin is an affine image of the quantity it judges: drawn beside it, it would
     # lie exactly over it; the quantity with its limit line says the same.
     keys = [key for key in keys if judged_quantity(sweep, key) not in keys] or list(keys)
     by_unit: dict[str, list[str]] = {}
     for key in keys:
-        by_unit.setdefault(units[key], []).append(key)
+        by_unit.setdefault(sweep.units[key], []).append(key)
     if len(by_unit) > 1:
         figure.delaxes(axes)
         figure.set_figheight(2.4 + 2.2 * len(by_unit))
@@ -39,42 +39,16 @@ def line_sweep(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> Any
     else:
         panels = [axes]
     log_x = any(power_law(x, sweep.results[key]) for key in keys) and bool(np.all(x > 0))
-    colours = iter(["#4c72b0", "#dd8452", "#55a868", "#c44e52", "#8172b3", "#937860"])
+    drawn = [key for members in by_unit.values() for key in members]
+    colours = dict(zip(drawn, itertools.chain(PALETTE, itertools.repeat("#333333")),
+                       strict=False))
     handles = []
     log_y: dict[str, bool] = {}
     for panel, (si_unit, members) in zip(panels, by_unit.items(), strict=True):
-        scale, unit = to_display(1.0, si_unit)
-        for key in members:
-            colour = next(colours, "#333333")
-            # A whole-number input has no values between its points: mark the points.
-            (line,) = panel.plot(x, sweep.results[key] * scale, color=colour,
-                                 label=words(key), marker="o" if axis.integer else None,
-                                 markersize=4)
-            handles.append(line)
-            # a swept limit is no one line: only a margin's 0 is
-            levels = ([] if limits_swept(sweep) and key not in sweep.kind.margins
-                      else sweep_limits(sweep, key))
-            for i, (level, named) in enumerate(levels):
-                label = f"{named} of {words(key)}" if named == "limit" else named
-                limit = panel.axhline(level * scale, color=colour, linestyle=":",
-                                      linewidth=1.4, label=label)
-                if i == 0:
-                    handles.append(limit)
-        # decades, or a power of a log input (a life against a load): log-log is straight
-        logarithmic = all(spans_decades(sweep.results[key])
-                          or (log_x and power_law(x, sweep.results[key])) for key in members)
+        drawn_handles, logarithmic = _draw_panel(panel, sweep, x, members, si_unit,
+                                                 colours, log_x)
+        handles += drawn_handles
         log_y.update(dict.fromkeys(members, logarithmic))
-        if logarithmic:
-            panel.set_yscale("log")
-            low, high = panel.get_ylim()
-            if low > 0 and high < 1000 * low:  # a few decades: 1, 2, 5, 10, not 10⁰, 10¹
-                plain_log_ticks(panel.yaxis, low, high)
-        # wrapped to the panel's height, so a long name stays beside its own panel
-        panel.set_ylabel(textwrap.fill(", ".join(words(key) for key in members)
-                                       + (f" [{unit}]" if unit else ""), 34))
-        panel.grid(alpha=0.3)
-        if logarithmic or log_x:
-            panel.grid(alpha=0.1, which="minor")
     if sweep.kind.margins and sweep.within_limits.any():
         for i, (start, stop) in enumerate(within_limit_spans(sweep, x, log_x, log_y)):
             for panel in panels:
@@ -82,6 +56,60 @@ def line_sweep(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> Any
                               label="within limits" if i == 0 else None)
         handles.append(panels[0].get_legend_handles_labels()[0][-1])
     bottom = panels[-1]
+    handles += _draw_input_axis(bottom, sweep, x, x_label, log_x)
+    legend_below(bottom, handles)
+    return panels[0]
+
+
+#: The curves' colours in the order they are drawn; grey after the sixth.
+PALETTE = ("#4c72b0", "#dd8452", "#55a868", "#c44e52", "#8172b3", "#937860")
+
+
+def _draw_panel(panel: Any, sweep: Sweep, x: NDArray, members: list[str], si_unit: str,
+                colours: dict[str, str], log_x: bool) -> tuple[list[Any], bool]:
+    """The curves of one unit's results with their limit lines; their legend handles,
+    and whether the panel's axis is logarithmic."""
+    integer = sweep.axes[0].integer
+    handles = []
+    scale, unit = to_display(1.0, si_unit)
+    for key in members:
+        colour = colours[key]
+        # A whole-number input has no values between its points: mark the points.
+        (line,) = panel.plot(x, sweep.results[key] * scale, color=colour,
+                             label=words(key), marker="o" if integer else None,
+                             markersize=4)
+        handles.append(line)
+        # a swept limit is no one line: only a margin's 0 is
+        levels = ([] if limits_swept(sweep) and key not in sweep.kind.margins
+                  else sweep_limits(sweep, key))
+        for i, (level, named) in enumerate(levels):
+            label = f"{named} of {words(key)}" if named == "limit" else named
+            limit = panel.axhline(level * scale, color=colour, linestyle=":",
+                                  linewidth=1.4, label=label)
+            if i == 0:
+                handles.append(limit)
+    # decades, or a power of a log input (a life against a load): log-log is straight
+    logarithmic = all(spans_decades(sweep.results[key])
+                      or (log_x and power_law(x, sweep.results[key])) for key in members)
+    if logarithmic:
+        panel.set_yscale("log")
+        low, high = panel.get_ylim()
+        if low > 0 and high < 1000 * low:  # a few decades: 1, 2, 5, 10, not 10⁰, 10¹
+            plain_log_ticks(panel.yaxis, low, high)
+    # wrapped to the panel's height, so a long name stays beside its own panel
+    panel.set_ylabel(textwrap.fill(", ".join(words(key) for key in members)
+                                   + (f" [{unit}]" if unit else ""), 34))
+    panel.grid(alpha=0.3)
+    if logarithmic or log_x:
+        panel.grid(alpha=0.1, which="minor")
+    return handles, logarithmic
+
+
+def _draw_input_axis(bottom: Any, sweep: Sweep, x: NDArray, x_label: str, log_x: bool
+                     ) -> list[Any]:
+    """The swept input's axis under the bottom panel, its range, scale and ticks; the
+    legend's note of the impossible points, if any."""
+    handles = []
     impossible = sweep.status != 0
     if impossible.any():
         # in the legend, where no curve runs under it
@@ -94,10 +122,9 @@ def line_sweep(sweep: Sweep, keys: Sequence[str], figure: Any, axes: Any) -> Any
     if log_x:
         bottom.set_xscale("log")
         plain_log_ticks(bottom.xaxis, float(np.nanmin(x)), float(np.nanmax(x)))
-    elif axis.integer:
+    elif sweep.axes[0].integer:
         bottom.xaxis.get_major_locator().set_params(integer=True)
-    legend_below(bottom, handles)
-    return panels[0]
+    return handles
 
 
 def plain_log_ticks(axis: Any, low: float, high: float) -> None:

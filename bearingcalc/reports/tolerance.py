@@ -31,23 +31,31 @@ def write_tolerance_json(report: StudyReport, stream: IO[str]) -> None:
 def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) -> None:
     """Worst case, RSS and Monte Carlo side by side (engineering units), the contribution
     table of the governing result, the yield and verdict, and a terminal histogram."""
-    from rich import box
-    from rich.markup import escape
-    from rich.table import Table
-
     record = report.record
     out = console(stream)
-    units = record["units"]
-
-    def to_display(value: float, si_unit: str, key: str | None = None) -> tuple[float, str]:
-        return _as_solve_shows(report, value, si_unit, key)
-
     print_whole(out, f"[bold]{safe_text(record['name'] or record['spec'])}[/] "
                      f"({record['kind']}, {safe_text(record['spec'])})")
     for key, value in record.items():
         if key.endswith("catalogue_source"):
             out.print(f"{key}: {safe_text(value)}")
+    _print_inputs(out, report)
+    _print_side_by_side(out, report)
+    _print_other_results(out, report)
+    lead = report.governing[0] if report.governing else None
+    if lead:
+        _print_contributions(out, report, lead)
+    _print_sobol_indices(out, record, report.governing)
+    _print_yield_and_verdict(out, report)
+    if lead and lead in report.histograms:
+        _terminal_histogram(out, lead, report, record["units"][lead])
 
+
+def _print_inputs(out: Any, report: StudyReport) -> None:
+    """The toleranced inputs: nominal, band and σ in the unit the spec wrote them in."""
+    from rich.table import Table
+
+    record = report.record
+    units = record["units"]
     inputs = Table(title="toleranced inputs", title_justify="left")
     for column in ("input", "nominal", "low", "high", "unit", "distribution", "σ"):
         # the name folds in a narrow terminal; numbers and units are read whole
@@ -56,27 +64,37 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
                           else "right")
     for name, entry in record["inputs"].items():
         shown = _as_written(entry, units[name]) or [
-            to_display(entry[k], units[name]) for k in ("nominal", "low", "high", "std")]
+            _as_solve_shows(report, entry[k], units[name])
+            for k in ("nominal", "low", "high", "std")]
         inputs.add_row(name, *(format_number(v) for v, _ in shown[:3]), shown[0][1],
                        entry["distribution"], format_number(shown[3][0]))
     out.print(inputs)
 
+
+def _print_side_by_side(out: Any, report: StudyReport) -> None:
+    """The studied results: nominal, worst case, RSS and Monte Carlo in one row each."""
+    from rich import box
+    from rich.markup import escape
+    from rich.table import Table
+
+    units = report.record["units"]
     table = Table(title="results: worst case, RSS and Monte Carlo side by side",
                   title_justify="left", box=box.SIMPLE_HEAD, pad_edge=False)
     for column in ("result", "nominal", "worst case\nmin\nmax", "RSS\nmean\nσ",
                    "Monte\nCarlo\nmean\nσ", "MC\nquantile\n0.135 %\n99.865 %"):
         table.add_column(column, justify="left" if column == "result" else "right",
                          no_wrap=True)
-    results = record["results"]
+    results = report.record["results"]
     for key in report.governing:
         entry = results[key]
-        unit = to_display(0.0, units[key], key)[1]
+        unit = _as_solve_shows(report, 0.0, units[key], key)[1]
 
         def cell(*values: float | None, key: str = key) -> str:
             if any(v is None for v in values):
                 return ""
             # Four digits keep six columns in 80; the JSON carries every digit.
-            return "\n".join(f"{to_display(v, units[key], key)[0]:.4g}" for v in values)
+            return "\n".join(f"{_as_solve_shows(report, v, units[key], key)[0]:.4g}"
+                             for v in values)
 
         wc, rss, mc = (entry.get(m) or {} for m in ("worst_case", "rss", "monte_carlo"))
         table.add_row(escape(f"{key}\n[{unit}]") if unit else key, cell(entry["nominal"]),
@@ -85,37 +103,57 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
                       cell(mc.get("p00135"), mc.get("p99865")))
     out.print(table)
 
+
+def _print_other_results(out: Any, report: StudyReport) -> None:
+    """The results not studied, at worst case only (the JSON has every method)."""
+    from rich.table import Table
+
+    units = report.record["units"]
+    results = report.record["results"]
     others = [key for key in results if key not in report.governing]
-    if others and _ran(results, "worst_case"):
-        rest = Table(title="other results at worst case (all methods: --format json)",
-                     title_justify="left")
-        for column in ("result", "unit", "nominal", "min", "max"):
-            rest.add_column(column, justify="left" if column in ("result", "unit") else "right",
-                            no_wrap=True)
-        for key in others:
-            wc = results[key].get("worst_case") or {}
-            shown = [to_display(v, units[key], key) if v is not None else (None, "")
-                     for v in (results[key]["nominal"], wc.get("min"), wc.get("max"))]
-            rest.add_row(key, to_display(0.0, units[key], key)[1],
-                         *("" if v is None else format_number(v) for v, _ in shown))
-        out.print(rest)
+    if not (others and _ran(results, "worst_case")):
+        return
+    rest = Table(title="other results at worst case (all methods: --format json)",
+                 title_justify="left")
+    for column in ("result", "unit", "nominal", "min", "max"):
+        rest.add_column(column, justify="left" if column in ("result", "unit") else "right",
+                        no_wrap=True)
+    for key in others:
+        wc = results[key].get("worst_case") or {}
+        shown = [_as_solve_shows(report, v, units[key], key) if v is not None else (None, "")
+                 for v in (results[key]["nominal"], wc.get("min"), wc.get("max"))]
+        rest.add_row(key, _as_solve_shows(report, 0.0, units[key], key)[1],
+                     *("" if v is None else format_number(v) for v, _ in shown))
+    out.print(rest)
 
-    lead = report.governing[0] if report.governing else None
-    rss_lead = (results.get(lead) or {}).get("rss") if lead else None
-    if rss_lead and rss_lead.get("contributions"):
-        shares = Table(title=f"which tolerance dominates {lead} (RSS)", title_justify="left")
-        unit = to_display(0.0, units[lead], lead)[1]
-        for column in ("input", "share", f"∂f/∂x · σ [{unit}]" if unit else "∂f/∂x · σ"):
-            shares.add_column(escape(column), justify="left" if column == "input" else "right")
-        ranked = sorted(rss_lead["contributions"].items(), key=lambda kv: -kv[1])
-        for name, share in ranked:
-            effect = rss_lead["sensitivities"][name] * record["inputs"][name]["std"]
-            shares.add_row(name, f"{100 * share:.2f} %", format_number(
-                to_display(effect, units[lead], lead)[0]))
-        out.print(shares)
 
-    _print_sobol_indices(out, record, report.governing)
+def _print_contributions(out: Any, report: StudyReport, lead: str) -> None:
+    """Which tolerance dominates the governing result: each input's share of its RSS
+    variance and its effect ∂f/∂x · σ, largest first."""
+    from rich.markup import escape
+    from rich.table import Table
 
+    record = report.record
+    units = record["units"]
+    rss_lead = (record["results"].get(lead) or {}).get("rss")
+    if not (rss_lead and rss_lead.get("contributions")):
+        return
+    shares = Table(title=f"which tolerance dominates {lead} (RSS)", title_justify="left")
+    unit = _as_solve_shows(report, 0.0, units[lead], lead)[1]
+    for column in ("input", "share", f"∂f/∂x · σ [{unit}]" if unit else "∂f/∂x · σ"):
+        shares.add_column(escape(column), justify="left" if column == "input" else "right")
+    ranked = sorted(rss_lead["contributions"].items(), key=lambda kv: -kv[1])
+    for name, share in ranked:
+        effect = rss_lead["sensitivities"][name] * record["inputs"][name]["std"]
+        shares.add_row(name, f"{100 * share:.2f} %", format_number(
+            _as_solve_shows(report, effect, units[lead], lead)[0]))
+    out.print(shares)
+
+
+def _print_yield_and_verdict(out: Any, report: StudyReport) -> None:
+    """The Monte Carlo yield line, PASS or FAIL at worst case, and the warnings."""
+    record = report.record
+    results = record["results"]
     if "yield" in record:
         out.print(f"Monte Carlo: {record['samples']} samples ({record['sampler']}, seed "
                   f"{record['seed']}): yield {_yield(record['yield'])}, "
@@ -137,8 +175,6 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
                   + (f": at worst case, {'; '.join(reached)}" if reached else ""))
     for warning in record["warnings"]:
         out.print(f"[yellow]warning[/]: {safe_text(warning)}")
-    if lead and lead in report.histograms:
-        _terminal_histogram(out, lead, report, units[lead])
 
 
 def _print_sobol_indices(out: Any, record: dict[str, Any], governing: list[str]) -> None:

@@ -61,11 +61,9 @@ def monte_carlo(study: Study, samples: int, seed: int = 0, sampler: str = "sobol
     if chunk % BLOCK:
         raise StudyError(f"the chunk size must be a multiple of {BLOCK}")
     keys = list(keys or study.keys)
-    limits = study.limit_values
     d = len(study.inputs)
-    normal_draws = samples * sum(item.tolerance.distribution == "normal"
-                                 for item in study.inputs)
-    quantile = normal_quantile_function(normal_draws)
+    quantile = normal_quantile_function(samples * sum(
+        item.tolerance.distribution == "normal" for item in study.inputs))
     # The pilot is the stream's first block: it sets the histogram ranges, and its
     # results are then counted as that block instead of being solved again.
     pilot_count = min(samples, BLOCK)
@@ -110,10 +108,22 @@ def monte_carlo(study: Study, samples: int, seed: int = 0, sampler: str = "sobol
         return accumulators, passed, infeasible
 
     outcomes = _run_workers(work, bounds, stop_now)
-    merged = template
-    passed = sum(outcome[1] for outcome in outcomes)
-    infeasible = sum(outcome[2] for outcome in outcomes)
-    for accumulators, _, _ in outcomes:
+    stats, histograms = _merged_statistics(template, [outcome[0] for outcome in outcomes],
+                                           keys, study.limit_values)
+    return MonteCarloResult(samples, seed, sampler, stats, histograms,
+                            sum(outcome[1] for outcome in outcomes),
+                            sum(outcome[2] for outcome in outcomes))
+
+
+def _merged_statistics(template: dict[str, _Accumulator],
+                       per_worker: list[dict[str, _Accumulator]], keys: Sequence[str],
+                       limits: dict[str, float]
+                       ) -> tuple[dict[str, dict[str, Any]], dict[str, Any]]:
+    """The workers' statistics merged, on the pilot's shift and bins (``template``, which
+    counts nothing): each result's summary, with its Cpk where it has a limit, and its
+    histogram."""
+    merged = {key: template[key].empty_like() for key in keys}
+    for accumulators in per_worker:
         for key in keys:
             merged[key].merge(accumulators[key])
     stats = {key: merged[key].summary() for key in keys}
@@ -121,7 +131,7 @@ def monte_carlo(study: Study, samples: int, seed: int = 0, sampler: str = "sobol
         if key in stats:
             stats[key]["cpk"] = _cpk(stats[key], limit)
     histograms = {key: merged[key].histogram() for key in keys}
-    return MonteCarloResult(samples, seed, sampler, stats, histograms, passed, infeasible)
+    return stats, histograms
 
 
 def _run_workers(work: Callable[[int, int], Any], bounds: list[int],

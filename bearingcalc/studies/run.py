@@ -87,15 +87,75 @@ def weakest_margin(record: dict[str, Any], margins: Sequence[str]) -> str:
     return min(margins, key=lowest)
 
 
-def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str],
-              samples: int = 100_000, seed: int = 0, sampler: str = "sobol",
-              sobol: bool = False, results: Sequence[str] = (), threads: int = 2,
-              progress: Callable[[int], None] | None = None) -> StudyReport:
+def run_study(  # noqa: PLR0913  the tolerance command's options, keyword-only, one per flag
+        kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str],
+        samples: int = 100_000, seed: int = 0, sampler: str = "sobol",
+        sobol: bool = False, results: Sequence[str] = (), threads: int = 2,
+        progress: Callable[[int], None] | None = None) -> StudyReport:
     """Run the chosen methods and assemble the report (SI units throughout).
 
     ``results`` narrows Monte Carlo and Sobol to those result keys (and names the
     governing results); worst case and RSS always cover every result.
     """
+    _check_options(methods, sampler, samples)
+    study = Study(kind, spec)
+    missing = [key for key in results if key not in study.keys]
+    if missing:
+        raise StudyError(f"{missing[0]!r} is not a result of this {kind.name} spec; "
+                         f"choose from {', '.join(study.keys)}", "--result")
+    governing = list(results) or [key for key in kind.governing if key in study.keys]
+    focus = list(results) or study.keys
+    record = _first_record(kind, spec, source, study)
+    by_method: dict[str, dict[str, Any]] = {}  # method -> result key -> its entry
+    if "worst-case" in methods:
+        by_method["worst_case"] = worst_case(study)
+        record["worst_case_verdicts"] = worst_case_verdicts(
+            study, {m: {"worst_case": by_method["worst_case"].get(m)} for m in study.margins})
+    else:
+        # Every method must know when the box crosses a validity edge, not only the
+        # worst case: RSS at the centre and a lucky sample would otherwise pass it.
+        study.scan_box()
+    if study.box_impossible is not None:
+        record["impossible_in_box"] = study.box_impossible
+        record["warnings"].append(_impossible_box_warning(study.box_impossible,
+                                                          record["units"], methods))
+    if "rss" in methods:
+        by_method["rss"] = rss(study)
+        record["warnings"] += _rss_switches_warning(by_method["rss"], methods)
+    histograms: dict[str, tuple[NDArray, NDArray]] = {}
+    if "monte-carlo" in methods:
+        mc = monte_carlo(study, samples, seed, sampler, threads=threads,
+                         keys=list(dict.fromkeys([*focus, *study.margins])),
+                         progress=progress)
+        by_method["monte_carlo"] = mc.stats
+        record.update({"samples": samples, "seed": seed, "sampler": sampler,
+                       "yield": mc.yield_fraction, "ppm_out": mc.ppm_out,
+                       "cpk": smallest_cpk(study, mc), "infeasible_samples": mc.infeasible,
+                       "capability": one_sided_capability(study, mc)})
+        if mc.infeasible:
+            record["warnings"].append(f"{mc.infeasible} of {samples} samples are impossible "
+                                      "designs; they count as out of spec")
+        histograms = mc.histograms
+    if sobol:
+        indices = sobol_indices(study, samples, seed, focus)
+        by_method["sobol"] = {k: e for k, e in indices.items() if not isinstance(e, str)}
+        record["warnings"] += [f"{key}: no Sobol indices, {entry}"
+                               for key, entry in indices.items() if isinstance(entry, str)]
+    # each result's entry: its nominal value, then the methods in the order they ran
+    record["results"] = {key: {**entry, **{method: found[key] for method, found
+                                           in by_method.items() if key in found}}
+                         for key, entry in record["results"].items()}
+    record = _finite(record)
+    if not results and study.margins:  # the margin nearest its limit leads the tables
+        weakest = weakest_margin(record, study.margins)
+        governing = [weakest, *(key for key in governing if key != weakest)]
+    return StudyReport(record, histograms, governing, study.limit_values,
+                       tuple(study.margins), dict(kind.display), study.layout({}).tables)
+
+
+def _check_options(methods: Sequence[str], sampler: str, samples: int) -> None:
+    """Refuse an empty or unknown method, an unknown sampler, and more Sobol' samples
+    than its 30-bit sequence has distinct points."""
     if not methods:
         raise StudyError(f"names no method; use one or more of {', '.join(METHODS)}",
                          "--method")
@@ -109,14 +169,12 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
     if sampler == "sobol" and "monte-carlo" in methods and samples > SOBOL_MAX_SAMPLES:
         raise StudyError(f"{samples} is more than the {SOBOL_MAX_SAMPLES} distinct Sobol' "
                          "points of 30 bits; use --sampler random for more", "--samples")
-    study = Study(kind, spec)
-    missing = [key for key in results if key not in study.keys]
-    if missing:
-        raise StudyError(f"{missing[0]!r} is not a result of this {kind.name} spec; "
-                         f"choose from {', '.join(study.keys)}", "--result")
-    governing = list(results) or [key for key in kind.governing if key in study.keys]
-    focus = list(results) or study.keys
-    record: dict[str, Any] = {
+
+
+def _first_record(kind: Kind, spec: SpecModel, source: str, study: Study) -> dict[str, Any]:
+    """The record before any method runs: the spec, its inputs, the nominal results,
+    every unit (SI) and the spec's own notes on the study."""
+    return {
         "spec": source, "kind": kind.name, "name": getattr(spec, "name", None),
         **spec.catalogue_sources(),  # type: ignore[attr-defined]
         "inputs": study.input_summary(),
@@ -125,65 +183,34 @@ def run_study(kind: Kind, spec: SpecModel, source: str, *, methods: Sequence[str
                   **{item.name: item.tolerance.unit for item in study.inputs}},
         "warnings": spec.study_notes([item.name for item in study.inputs]),
     }
-    if "worst-case" in methods:
-        for key, entry in worst_case(study).items():
-            record["results"][key]["worst_case"] = entry
-        record["worst_case_verdicts"] = worst_case_verdicts(study, record["results"])
-    else:
-        # Every method must know when the box crosses a validity edge, not only the
-        # worst case: RSS at the centre and a lucky sample would otherwise pass it.
-        study.scan_box()
-    if study.box_impossible is not None:
-        box = study.box_impossible
-        record["impossible_in_box"] = box
-        at = ", ".join("{} = {:.6g} {}".format(name, *to_display(value, record["units"][name]))
-                       for name, value in box["inputs"].items())
-        covers = ("worst case covers only the possible part, and " if "worst-case" in methods
-                  else "")
-        record["warnings"].append(
-            f"{100 * box['fraction']:.3g} % of the worst-case search of the tolerance box "
+
+
+def _impossible_box_warning(box: dict[str, Any], units: dict[str, str],
+                            methods: Sequence[str]) -> str:
+    """The share of the tolerance box that holds impossible designs, one of them, and
+    why: the study fails."""
+    at = ", ".join("{} = {:.6g} {}".format(name, *to_display(value, units[name]))
+                   for name, value in box["inputs"].items())
+    covers = ("worst case covers only the possible part, and " if "worst-case" in methods
+              else "")
+    return (f"{100 * box['fraction']:.3g} % of the worst-case search of the tolerance box "
             f"are impossible designs, e.g. at {at} ({box['reason']}); {covers}the study "
             "fails")
-    if "rss" in methods:
-        switches: list[str] = []
-        for key, entry in rss(study).items():
-            record["results"][key]["rss"] = entry
-            switches = switches or entry.get("switches", [])
-        if switches:
-            trusted = ("the worst case" if "worst-case" in methods else "") + (
-                " or Monte Carlo" if "monte-carlo" in methods else "")
-            record["warnings"].append(
-                f"RSS linearises at the centre, but the design switches within the "
-                f"tolerance band ({', '.join(switches)} change"
-                f"{'s' if len(switches) == 1 else ''} there): trust "
-                f"{trusted.removeprefix(' or ') or 'worst case or Monte Carlo'} instead")
-    histograms: dict[str, tuple[NDArray, NDArray]] = {}
-    if "monte-carlo" in methods:
-        mc = monte_carlo(study, samples, seed, sampler, threads=threads,
-                         keys=list(dict.fromkeys([*focus, *study.margins])),
-                         progress=progress)
-        for key, stats in mc.stats.items():
-            record["results"][key]["monte_carlo"] = stats
-        record.update({"samples": samples, "seed": seed, "sampler": sampler,
-                       "yield": mc.yield_fraction, "ppm_out": mc.ppm_out,
-                       "cpk": smallest_cpk(study, mc), "infeasible_samples": mc.infeasible,
-                       "capability": one_sided_capability(study, mc)})
-        if mc.infeasible:
-            record["warnings"].append(f"{mc.infeasible} of {samples} samples are impossible "
-                                      "designs; they count as out of spec")
-        histograms = mc.histograms
-    if sobol:
-        for key, entry in sobol_indices(study, samples, seed, focus).items():
-            if isinstance(entry, str):
-                record["warnings"].append(f"{key}: no Sobol indices, {entry}")
-            else:
-                record["results"][key]["sobol"] = entry
-    record = _finite(record)
-    if not results and study.margins:  # the margin nearest its limit leads the tables
-        weakest = weakest_margin(record, study.margins)
-        governing = [weakest, *(key for key in governing if key != weakest)]
-    return StudyReport(record, histograms, governing, study.limit_values,
-                       tuple(study.margins), dict(kind.display), study.layout({}).tables)
+
+
+def _rss_switches_warning(entries: dict[str, Any], methods: Sequence[str]) -> list[str]:
+    """RSS linearises at the centre: where the design switches inside the band (the first
+    result that says so), the methods that sample the band are to be trusted instead."""
+    switches = next((entry["switches"] for entry in entries.values()
+                     if entry.get("switches")), [])
+    if not switches:
+        return []
+    trusted = ("the worst case" if "worst-case" in methods else "") + (
+        " or Monte Carlo" if "monte-carlo" in methods else "")
+    return [f"RSS linearises at the centre, but the design switches within the "
+            f"tolerance band ({', '.join(switches)} change"
+            f"{'s' if len(switches) == 1 else ''} there): trust "
+            f"{trusted.removeprefix(' or ') or 'worst case or Monte Carlo'} instead"]
 
 
 def _finite(value: Any) -> Any:
