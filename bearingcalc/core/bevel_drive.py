@@ -23,15 +23,12 @@ from bearingcalc.core.arrangements import (
     induced_axial_factor_tapered,
     supports_positive,
 )
+from bearingcalc.core.bearing_life import ROLLER_WEIBULL_SLOPE, WEIBULL_SLOPE, system_life
 from bearingcalc.core.common import broadcast_all, first_failure
 from bearingcalc.core.duty_cycle_gears import DRIVE_COLUMNS, DRIVE_CYCLE_RESULTS, drive_cycle
 from bearingcalc.core.roller_bearing import TYPES as ROLLER_TYPES
 from bearingcalc.core.solver import DutyCycle, Members, Solution, Solver
 
-#: The Weibull slope of bearing makers' system-life formula: 10/9 when every bearing is a
-#: ball bearing, 9/8 when any is a roller bearing.
-WEIBULL_SLOPE = 10.0 / 9.0
-ROLLER_WEIBULL_SLOPE = 9.0 / 8.0
 #: How a shaft's two bearings share its axial force.
 ARRANGEMENTS = ("locating-floating", "back-to-back", "face-to-face")
 #: The load cases of an adjusted pair, as the table shows them.
@@ -196,17 +193,6 @@ def shaft_bending_moments(x: ArrayLike, positions: tuple[float, float], mesh_pos
         + axial * mesh_radius * (x > mesh_position)
     moment_z = sum(rz * arm(at) for at, _, rz in reactions) - tangential * arm(mesh_position)
     return np.asarray(moment_y), np.asarray(moment_z)
-
-
-def system_life(lives: list[NDArray], slope: float = WEIBULL_SLOPE) -> NDArray:
-    r"""L_sys = (Σ L_i^(−e))^(−1/e), e the Weibull slope: 10/9 for ball bearings, 9/8
-    when any bearing is a roller bearing.
-
-    Source: Lundberg & Palmgren; the system-life formula of bearing makers' catalogues
-    (e.g. SKF, *Rolling bearings*, "System life").
-    """
-    stacked = np.stack(np.broadcast_arrays(*(np.asarray(life, dtype=float) for life in lives)))
-    return np.sum(stacked ** -slope, axis=0) ** (-1.0 / slope)
 
 
 def induced_axial_factor(bearing: Mapping[str, Any]) -> NDArray:

@@ -20,6 +20,7 @@ from bearingcalc.core.agma_life import (
     spectrum_damage,
     spectrum_safety,
 )
+from bearingcalc.core.bearing_life import ROLLER_WEIBULL_SLOPE, WEIBULL_SLOPE, system_life
 from bearingcalc.core.duty_cycle import (
     LIFE_EXPONENT,
     ROLLER_TYPES,
@@ -134,8 +135,6 @@ def drive_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
     """The cycle of a drive: the pair's as :func:`gear_pair_cycle`, each bearing's life
     over the cycle (1/L = Σ tᵢ/Lᵢ over the bins that turn, in time; P_m by its family's
     exponent), the system life of those, the smallest static safety."""
-    from bearingcalc.core import bevel_drive
-
     results = per_bin.results
     shares, mean_speed = _shares(inputs)
     # Time at rest counts in the hours, not in the damage: 1/L = Σ tᵢ/Lᵢ over the bins
@@ -168,9 +167,9 @@ def drive_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
             if f"{name}_static_safety_factor" in results:
                 out[f"{name}_static_safety_factor"] = np.min(
                     results[f"{name}_static_safety_factor"], axis=0)
-    slope = bevel_drive.ROLLER_WEIBULL_SLOPE if rollers else bevel_drive.WEIBULL_SLOPE
-    out["system_basic_rating_life"] = bevel_drive.system_life(basic, slope)
-    out["system_modified_rating_life"] = bevel_drive.system_life(modified, slope)
+    slope = ROLLER_WEIBULL_SLOPE if rollers else WEIBULL_SLOPE
+    out["system_basic_rating_life"] = system_life(basic, slope)
+    out["system_modified_rating_life"] = system_life(modified, slope)
     if "life_margin" in results:
         out["life_margin"] = out["system_modified_rating_life"] / np.asarray(
             inputs["min_rating_life"], dtype=float)[0] - 1.0
