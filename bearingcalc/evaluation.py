@@ -29,7 +29,7 @@ from bearingcalc.models.yaml_loader import (
     load_documents,
 )
 from bearingcalc.parsing import parse_document
-from bearingcalc.verdicts import Verdict, judge
+from bearingcalc.verdicts import Verdict, judge, verdict_line
 from bearingcalc.wording import plural
 
 
@@ -59,8 +59,6 @@ class Evaluation:
     @property
     def violations(self) -> list[str]:
         """A line per limit broken, the worst first, in engineering terms."""
-        from bearingcalc.reports.formatting import verdict_line
-
         named = {verdict.key for verdict in self.verdicts}
         return [verdict_line(verdict) for verdict in self.verdicts if not verdict.passed] + [
             f"{key} is {value:.4g} (below 0)" for key, value in self.margins.items()
@@ -238,7 +236,7 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
     name = spec.name or _default_name(document)
     warnings += spec.result_notes(results)
     return Evaluation(document.source, kind.name, name, results, units, margins, warnings,
-                      spec.row_names(), judge(kind, results, margins),
+                      spec.row_names(), judge(kind.judged, kind.results, results, margins),
                       spec.catalogue_sources())
 
 
