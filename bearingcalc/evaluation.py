@@ -30,7 +30,7 @@ from bearingcalc.models.yaml_loader import (
 )
 from bearingcalc.parsing import parse_document
 from bearingcalc.result_keys import FlatResults, ResultTable
-from bearingcalc.verdicts import Verdict, judge
+from bearingcalc.verdicts import Verdict, judge, verdict_line
 from bearingcalc.wording import plural
 
 
@@ -64,8 +64,6 @@ class Evaluation:
     @property
     def violations(self) -> list[str]:
         """A line per limit broken, the worst first, in engineering terms."""
-        from bearingcalc.reports.formatting import verdict_line
-
         named = {verdict.key for verdict in self.verdicts}
         return [verdict_line(verdict) for verdict in self.verdicts if not verdict.passed] + [
             f"{key} is {value:.4g} (below 0)" for key, value in self.margins.items()
@@ -256,10 +254,10 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
                if (value := results.get(key)) is not None}
     name = spec.name or _default_name(document)
     warnings += spec.result_notes(results, layout.tables)
-    judged = judge(kind, FlatResults(results, layout.names, layout.tables), margins)
+    judged = judge(kind.judged, kind.results,
+                   FlatResults(results, layout.names, layout.tables), margins)
     return Evaluation(document.source, kind.name, name, results, units, margins, warnings,
-                      spec.row_names(), judged,
-                      spec.catalogue_sources(),
+                      spec.row_names(), judged, spec.catalogue_sources(),
                       {key: layout.names[key][1] for key in results}, layout.tables)
 
 

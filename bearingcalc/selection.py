@@ -30,9 +30,8 @@ from bearingcalc.errors import SpecError
 from bearingcalc.evaluation import evaluate_document, load_selected, parse_document
 from bearingcalc.kinds import KINDS, Kind, unknown_kind
 from bearingcalc.models.yaml_loader import Document
-from bearingcalc.reports.formatting import verdict_line
 from bearingcalc.variation import evaluate_with
-from bearingcalc.verdicts import PAIR, Verdict, judge
+from bearingcalc.verdicts import PAIR, Verdict, judge, verdict_line
 
 #: A bearing's fields a catalogue row stands for, dropped from the spec before a row
 #: fills them (the spec's shaft and envelope are read first).
@@ -274,7 +273,8 @@ def _solve_group(kind: Kind, document: Document, base: dict[str, Any], position:
             continue
         scalar = dict(zip(keys, values, strict=True))
         margins = {key: scalar[key] for key in margin_keys}
-        candidates.append(Candidate(row, ok, judge(kind, solved.with_values(scalar), margins)))
+        candidates.append(Candidate(row, ok, judge(kind.judged, kind.results,
+                                                   solved.with_values(scalar), margins)))
     return candidates
 
 
@@ -289,7 +289,8 @@ def _note_the_pair(kind: Kind, results: dict[str, Any], status: Any,
     scalar = {key: float(value[i]) for key, value in results.items()}
     margins = {key: scalar[key] for key in kind.margins
                if key in scalar and key not in judged}
-    missed = [verdict_line(v) for v in judge(kind, scalar, margins) if not v.passed]
+    missed = [verdict_line(v) for v in judge(kind.judged, kind.results, scalar, margins)
+              if not v.passed]
     note = f"the gear pair misses its own limits, whatever the bearing: {'; '.join(missed)}"
     if missed and note not in notes:  # the same pair under every type's rows
         notes.append(note)

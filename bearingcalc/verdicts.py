@@ -1,15 +1,14 @@
 """Verdicts in engineering terms: what each margin judges (:class:`Judged`, in the
-registry), and each limit judged as a value against its limit (:class:`Verdict`)."""
+registry), each limit judged as a value against its limit (:class:`Verdict`), and the
+line that says a verdict (:func:`verdict_line`)."""
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
-if TYPE_CHECKING:  # the registry's type only: the registry imports this module
-    from bearingcalc.kinds import Kind
+from bearingcalc.units import to_display
 
 
 @dataclass(frozen=True)
@@ -93,24 +92,58 @@ class Verdict:
         return self.margin >= 0
 
 
-def judge(kind: Kind, results: Mapping[str, float | None],
-              margins: Mapping[str, float]) -> list[Verdict]:
-    """Each judged margin as a :class:`Verdict`, the worst first."""
+def judge(judges: Mapping[str, Judged], declared: Mapping[str, tuple[str, str]],
+          results: Mapping[str, float | None], margins: Mapping[str, float]) -> list[Verdict]:
+    """Each judged margin as a :class:`Verdict`, the worst first.
+
+    ``judges`` is what each margin judges (a kind's ``judged``), ``declared`` the result
+    key -> (SI unit, meaning) the units are read from (a kind's ``results``). A margin
+    with no judge, or whose value or limit the results do not give, is left out.
+    """
     verdicts = []
     for key, margin in margins.items():
-        judged = kind.judged.get(key)
+        judged = judges.get(key)
         value = None if judged is None else judged.value(results)
         if judged is None or value is None:
             continue
         limit = judged.limit(value, margin)
         if not math.isfinite(limit):  # said as the plain margin instead
             continue
-        unit = (kind.results[judged.quantity][0] if isinstance(judged.quantity, str)
-                else kind.results[key][0])
+        unit = (declared[judged.quantity][0] if isinstance(judged.quantity, str)
+                else declared[key][0])
         verdicts.append(Verdict(key, judged.named(results), value, limit, unit,
                                 judged.fraction(margin, limit), judged.at_least,
                                 judged.limit_word))
     return sorted(verdicts, key=lambda verdict: verdict.margin)
+
+
+#: Between a number's groups of three digits: a narrow no-break space (SI brochure).
+THOUSANDS = "\u202f"
+#: Between a number and its unit: a no-break space, so that "20 000 h" is read whole.
+BEFORE_UNIT = "\u00a0"
+
+
+def verdict_line(verdict: Verdict) -> str:
+    """"modified rating life 5 981 h < required 20 000 h (margin −70 %)": the value and
+    limit in display units, each number whole with its unit (no-break spaces)."""
+    value, unit = to_display(verdict.value, verdict.unit)
+    limit, _ = to_display(verdict.limit, verdict.unit)
+    unit = f"{BEFORE_UNIT}{unit}" if unit else ""
+    word = verdict.limit_word
+    if verdict.passed:
+        sign = "≥" if verdict.at_least else "≤"
+    else:
+        sign = "<" if verdict.at_least else ">"
+    return (f"{verdict.name} {_engineering(value)}{unit} {sign} {word} "
+            f"{_engineering(limit)}{unit} (margin "
+            f"{f'{100 * verdict.margin:+.3g}'.replace('-', '−')}{BEFORE_UNIT}%)")
+
+
+def _engineering(value: float) -> str:
+    """A number as an engineer writes it: 5 981, 20 000, 1.018, 0.0012."""
+    if abs(value) >= 1000:
+        return f"{value:,.0f}".replace(",", THOUSANDS)
+    return f"{value:.4g}"
 
 
 #: What the margins the kinds share judge.

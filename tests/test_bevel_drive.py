@@ -11,7 +11,8 @@ import math
 import numpy as np
 import pytest
 
-from bearingcalc.core.bevel_drive import shaft_reactions, system_life
+from bearingcalc.core.bearing_life import system_life
+from bearingcalc.core.bevel_drive import shaft_reactions
 from tests.conftest import ROOT, csv_column, solve_json
 
 DRIVE = (ROOT / "specs" / "bevel-drive.yaml").read_text()

@@ -26,7 +26,7 @@ import pytest
 
 from bearingcalc.core import arrangements, iso281
 from bearingcalc.core import roller_ratings as rr
-from bearingcalc.core.bevel_drive import ROLLER_WEIBULL_SLOPE, system_life
+from bearingcalc.core.bearing_life import ROLLER_WEIBULL_SLOPE, system_life
 from tests.conftest import solve_json
 
 HOUR = 3600.0

@@ -12,8 +12,8 @@ import shutil
 import pytest
 
 from bearingcalc.reports import formatting
-from bearingcalc.reports.formatting import BEFORE_UNIT, THOUSANDS, console, verdict_line
-from bearingcalc.verdicts import Verdict
+from bearingcalc.reports.formatting import console
+from bearingcalc.verdicts import BEFORE_UNIT, THOUSANDS, Verdict, verdict_line
 from tests.conftest import ROOT
 
 #: A number as verdicts write it, with its unit: 20 000 h, −70 %, 1.018.

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import os
 import sys
-from collections.abc import Callable
 from enum import Enum
 from pathlib import Path
 from typing import Annotated
@@ -21,12 +20,18 @@ os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
 
 import typer
 
+from bearingcalc.cli.app import (
+    CatalogueOption,
+    DebugOption,
+    OutputOption,
+    app,
+    whole_number,
+    worker_count,
+)
 from bearingcalc.cli_output import (
     EXIT_INVALID,
     EXIT_LIMIT,
-    EXIT_OK,
     HelpListsKinds,
-    OneLineUsageErrors,
     WordedHelp,
     Writer,
     bad_option,
@@ -38,74 +43,16 @@ from bearingcalc.cli_output import (
     with_progress,
     write_stdout,
 )
-from bearingcalc.errors import OptionError, SpecError
+from bearingcalc.errors import SpecError
 from bearingcalc.output import StagedFiles
 
-app = typer.Typer(cls=OneLineUsageErrors, add_completion=False, pretty_exceptions_enable=False,
-                  no_args_is_help=True,
-                  context_settings={"help_option_names": ["-h", "--help"]},
-                  help="Rolling-contact machine design: thrust bearings, bevel gears and more.")
-
-MAX_JOBS_PER_CORE = 4
+__all__ = ["app"]
 
 
 class SolveFormat(str, Enum):
     table = "table"
     json = "json"
     csv = "csv"
-
-
-DebugOption = Annotated[bool, typer.Option("--debug", help="Show tracebacks of internal errors.")]
-# Folders are refused by check_targets, in one line like every other unwritable target.
-OutputOption = Annotated[Path | None, typer.Option(
-    "--output", "-o", metavar="FILE",
-    help="Write to this file instead of stdout (atomically: a failed run leaves "
-    "an existing file as it was; never a file the run reads, a spec or a catalogue).")]
-PlotOption = Annotated[Path | None, typer.Option(
-    "--plot", metavar="FILE", help="Draw a chart to this .png or .svg file.")]
-
-
-def whole_number(low: int, high: int | None = None) -> Callable[[int | None], int | None]:
-    """An option's check that its whole number is at least ``low`` (and at most
-    ``high``): said in one line, and in the help's own words rather than a range token."""
-    def check(value: int | None) -> int | None:
-        if value is not None and (value < low or (high is not None and value > high)):
-            span = f"from {low} to {high}" if high is not None else f"of at least {low}"
-            raise typer.BadParameter(f"{value}: give a whole number {span}")
-        return value
-
-    return check
-
-
-def _use_catalogue(path: Path | None) -> Path | None:
-    from bearingcalc.catalogue.fill import set_default_catalogue
-
-    set_default_catalogue(None if path is None else str(path))
-    return path
-
-
-CatalogueOption = Annotated[Path | None, typer.Option(
-    "--catalogue", callback=_use_catalogue, show_default=False, metavar="FILE",
-    help="The bearing catalogue (CSV) of specs that name a designation but no catalogue "
-    "(default: the file the environment variable BEARINGCALC_CATALOGUE names).")]
-
-
-def _print_version(value: bool) -> None:
-    if value:
-        from bearingcalc import __version__
-
-        with errors_as_exit(debug=False):
-            write_stdout(lambda stream: stream.write(f"bearingcalc {__version__}\n"))
-        raise typer.Exit(EXIT_OK)
-
-
-@app.callback()
-def main(
-    version: Annotated[bool, typer.Option(
-        "--version", "-V", callback=_print_version, is_eager=True,
-        help="Print the version and exit.")] = False,
-) -> None:
-    """Rolling-contact machine design from YAML specs."""
 
 
 @app.command(cls=HelpListsKinds)
@@ -182,7 +129,7 @@ def check(
     with errors_as_exit(debug):
         from bearingcalc import batch, reports
 
-        workers = _workers(jobs)
+        workers = worker_count(jobs)
         entries = batch.discover(paths)
         report = output_target(output, "report", _CHECK_SUFFIXES[output_format])
         refuse_unwritable("check", batch.files_read(entries), report)
@@ -253,18 +200,6 @@ def new(
         print("bearingcalc new: give a KIND, one of those above (see 'bearingcalc new -h')",
               file=sys.stderr)
         raise typer.Exit(EXIT_INVALID)
-
-
-def _workers(jobs: int | None) -> int:
-    """The number of workers: ``--jobs``, or the cores; at most ``MAX_JOBS_PER_CORE`` per
-    core, since more only fight over the same cores (and hundreds of processes can
-    exhaust a shared machine)."""
-    cores = os.cpu_count() or 1
-    most = MAX_JOBS_PER_CORE * cores
-    if jobs is not None and jobs > most:
-        raise OptionError("--jobs", f"{jobs} is more than {most} ({MAX_JOBS_PER_CORE} per "
-                          f"core on this machine's {cores}); leave it out to use every core")
-    return jobs or cores
 
 
 _CHECK_SUFFIXES = {CheckFormat.table: ".txt", CheckFormat.json: ".jsonl",

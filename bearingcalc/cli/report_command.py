@@ -8,7 +8,7 @@ from typing import Annotated
 
 import typer
 
-from bearingcalc.cli import CatalogueOption, DebugOption, OutputOption, app
+from bearingcalc.cli.app import CatalogueOption, DebugOption, OutputOption, app
 from bearingcalc.cli_output import (
     WordedHelp,
     emit,

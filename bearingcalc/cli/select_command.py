@@ -9,15 +9,9 @@ from typing import Annotated
 
 import typer
 
-from bearingcalc.cli import (
-    EXIT_LIMIT,
-    CatalogueOption,
-    DebugOption,
-    OutputOption,
-    app,
-    whole_number,
-)
+from bearingcalc.cli.app import CatalogueOption, DebugOption, OutputOption, app, whole_number
 from bearingcalc.cli_output import (
+    EXIT_LIMIT,
     WordedHelp,
     Writer,
     emit,

@@ -10,18 +10,18 @@ from typing import Annotated
 
 import typer
 
-from bearingcalc.cli import (
-    EXIT_LIMIT,
-    EXIT_OK,
+from bearingcalc.cli.app import (
     CatalogueOption,
     DebugOption,
     OutputOption,
     PlotOption,
-    _workers,
     app,
     whole_number,
+    worker_count,
 )
 from bearingcalc.cli_output import (
+    EXIT_LIMIT,
+    EXIT_OK,
     WordedHelp,
     Writer,
     check_parquet_output,
@@ -114,7 +114,7 @@ def tolerance(
         refuse_unwritable("tolerance", [batch.spec_file(spec_path)], table_or_json, histogram)
         kind, spec, document = load_one_spec(spec_path)
         evaluate_document(document)  # a nominal design that solve refuses is refused here too
-        threads = _workers(jobs)
+        threads = worker_count(jobs)
         try:
             check_band_ends(document, spec)
             report = with_progress(lambda tick: run_study(

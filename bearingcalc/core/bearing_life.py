@@ -1,6 +1,6 @@
 """The rating life of a rolling bearing, ball or roller: ISO 281:2007's L10, a1 and,
-with the lubrication, κ, Cu and aISO, composed into Lnm (``docs/physics.md`` §5); and
-the operating point both families' solvers read."""
+with the lubrication, κ, Cu and aISO, composed into Lnm (``docs/physics.md`` §5); the
+operating point both families' solvers read; and the system life of several bearings."""
 
 from __future__ import annotations
 
@@ -137,3 +137,20 @@ def rating_life(  # noqa: PLR0913  fills the ball and roller solvers' out, flags
     min_life = inputs.get("min_rating_life")
     if min_life is not None:
         out["life_margin"] = life_margin(lnm / revolutions_per_second, min_life)
+
+
+#: The Weibull slope of bearing makers' system-life formula: 10/9 when every bearing is a
+#: ball bearing, 9/8 when any is a roller bearing.
+WEIBULL_SLOPE = 10.0 / 9.0
+ROLLER_WEIBULL_SLOPE = 9.0 / 8.0
+
+
+def system_life(lives: list[NDArray], slope: float = WEIBULL_SLOPE) -> NDArray:
+    r"""L_sys = (Σ L_i^(−e))^(−1/e), e the Weibull slope: 10/9 for ball bearings, 9/8
+    when any bearing is a roller bearing.
+
+    Source: Lundberg & Palmgren; the system-life formula of bearing makers' catalogues
+    (e.g. SKF, *Rolling bearings*, "System life").
+    """
+    stacked = np.stack(np.broadcast_arrays(*(np.asarray(life, dtype=float) for life in lives)))
+    return np.sum(stacked ** -slope, axis=0) ** (-1.0 / slope)

@@ -20,7 +20,12 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core import bevel_gears, rolling_bearing
-from bearingcalc.core.bearing_life import life_margin
+from bearingcalc.core.bearing_life import (
+    ROLLER_WEIBULL_SLOPE,
+    WEIBULL_SLOPE,
+    life_margin,
+    system_life,
+)
 from bearingcalc.core.common import broadcast_all, first_failure
 from bearingcalc.core.duty_cycle import (
     BIN_MEANING,
@@ -45,10 +50,6 @@ from bearingcalc.core.shaft_statics import (  # noqa: F401  (the drive's statics
 )
 from bearingcalc.core.solver import Along, AxisResults, DutyCycle, Members, Solution, Solver
 
-#: The Weibull slope of bearing makers' system-life formula: 10/9 when every bearing is a
-#: ball bearing, 9/8 when any is a roller bearing.
-WEIBULL_SLOPE = 10.0 / 9.0
-ROLLER_WEIBULL_SLOPE = 9.0 / 8.0
 #: The load cases of an adjusted pair, as the table shows them.
 LOAD_CASES = {1.0: "1a", 2.0: "1b", 3.0: "1c", 4.0: "2a", 5.0: "2b", 6.0: "2c"}
 SHAFTS = ("pinion", "gear")
@@ -142,17 +143,6 @@ BEARINGS = Members(rolling_bearing.SOLVER,
                    tuple(f"{shaft}_bearings.{i}" for shaft in SHAFTS for i in (1, 2)),
                    {"lubrication": "lubrication", "speed": "input_speed",
                     "radial_load": "torque", "axial_load": "torque"})
-
-
-def system_life(lives: list[NDArray], slope: float = WEIBULL_SLOPE) -> NDArray:
-    r"""L_sys = (Σ L_i^(−e))^(−1/e), e the Weibull slope: 10/9 for ball bearings, 9/8
-    when any bearing is a roller bearing.
-
-    Source: Lundberg & Palmgren; the system-life formula of bearing makers' catalogues
-    (e.g. SKF, *Rolling bearings*, "System life").
-    """
-    stacked = np.stack(np.broadcast_arrays(*(np.asarray(life, dtype=float) for life in lives)))
-    return np.sum(stacked ** -slope, axis=0) ** (-1.0 / slope)
 
 
 

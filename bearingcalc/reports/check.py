@@ -6,7 +6,8 @@ import json
 from collections.abc import Iterable, Sequence
 from typing import IO, TYPE_CHECKING, Any
 
-from bearingcalc.reports.formatting import console, format_number, safe_text, verdict_line
+from bearingcalc.reports.formatting import console, format_number, safe_text
+from bearingcalc.verdicts import verdict_line
 from bearingcalc.wording import plural, printable
 
 if TYPE_CHECKING:  # the report type only; its module loads with the command

@@ -3,13 +3,9 @@ spec-supplied text made safe to print."""
 
 from __future__ import annotations
 
-from typing import IO, TYPE_CHECKING, Any
+from typing import IO, Any
 
-from bearingcalc.units import to_display
 from bearingcalc.wording import printable
-
-if TYPE_CHECKING:  # the report type only
-    from bearingcalc.verdicts import Verdict
 
 #: Width of tables when the output is not a terminal (a pipe, a CI log, a file): wide
 #: enough that a row stays one line, instead of rich's 80 columns.
@@ -108,32 +104,3 @@ def format_number(value: float) -> str:
     if value == 0:
         return "0"
     return f"{value:.7g}"
-
-
-#: Between a number's groups of three digits: a narrow no-break space (SI brochure).
-THOUSANDS = "\u202f"
-#: Between a number and its unit: a no-break space, so that "20 000 h" is read whole.
-BEFORE_UNIT = "\u00a0"
-
-
-def verdict_line(verdict: Verdict) -> str:
-    """"modified rating life 5 981 h < required 20 000 h (margin −70 %)": the value and
-    limit in display units, each number whole with its unit (no-break spaces)."""
-    value, unit = to_display(verdict.value, verdict.unit)
-    limit, _ = to_display(verdict.limit, verdict.unit)
-    unit = f"{BEFORE_UNIT}{unit}" if unit else ""
-    word = verdict.limit_word
-    if verdict.passed:
-        sign = "≥" if verdict.at_least else "≤"
-    else:
-        sign = "<" if verdict.at_least else ">"
-    return (f"{verdict.name} {_engineering(value)}{unit} {sign} {word} "
-            f"{_engineering(limit)}{unit} (margin "
-            f"{f'{100 * verdict.margin:+.3g}'.replace('-', '−')}{BEFORE_UNIT}%)")
-
-
-def _engineering(value: float) -> str:
-    """A number as an engineer writes it: 5 981, 20 000, 1.018, 0.0012."""
-    if abs(value) >= 1000:
-        return f"{value:,.0f}".replace(",", THOUSANDS)
-    return f"{value:.4g}"

@@ -18,8 +18,9 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from html import escape
 from typing import TYPE_CHECKING, Any
 
-from bearingcalc.reports.formatting import format_number, verdict_line
+from bearingcalc.reports.formatting import format_number
 from bearingcalc.units import to_display
+from bearingcalc.verdicts import verdict_line
 
 if TYPE_CHECKING:
     from bearingcalc.evaluation import Evaluation

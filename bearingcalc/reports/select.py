@@ -9,14 +9,9 @@ from typing import IO, TYPE_CHECKING, Any
 
 from bearingcalc.core.common import MM
 from bearingcalc.reports.csv_cells import Cell, write_csv_rows
-from bearingcalc.reports.formatting import (
-    console,
-    format_number,
-    print_whole,
-    safe_text,
-    verdict_line,
-)
+from bearingcalc.reports.formatting import console, format_number, print_whole, safe_text
 from bearingcalc.reports.solve import verdict_record
+from bearingcalc.verdicts import verdict_line
 from bearingcalc.wording import plural, printable
 
 if TYPE_CHECKING:

@@ -8,20 +8,14 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import IO, TYPE_CHECKING, Any
 
 from bearingcalc.reports.csv_cells import write_csv_rows
-from bearingcalc.reports.formatting import (
-    console,
-    format_number,
-    print_whole,
-    safe_text,
-    verdict_line,
-)
+from bearingcalc.reports.formatting import console, format_number, print_whole, safe_text
 from bearingcalc.units import to_display
+from bearingcalc.verdicts import Verdict, verdict_line
 
 if TYPE_CHECKING:  # the report types only; their modules load with their commands
     from bearingcalc.evaluation import Evaluation
     from bearingcalc.kinds import Kind
     from bearingcalc.result_keys import ResultTable
-    from bearingcalc.verdicts import Verdict
 
 
 def evaluation_record(evaluation: Evaluation) -> dict[str, Any]:

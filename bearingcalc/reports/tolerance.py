@@ -8,16 +8,10 @@ import math
 import re
 from typing import IO, TYPE_CHECKING, Any
 
-from bearingcalc.reports.formatting import (
-    console,
-    format_number,
-    print_whole,
-    safe_text,
-    verdict_line,
-)
+from bearingcalc.reports.formatting import console, format_number, print_whole, safe_text
 from bearingcalc.units import DIMENSIONS, TEMPERATURE_UNITS, UnitError, unit_scale
 from bearingcalc.units import to_display as si_display
-from bearingcalc.verdicts import Verdict
+from bearingcalc.verdicts import Verdict, verdict_line
 
 if TYPE_CHECKING:  # the report type only; its module loads with the command
     from bearingcalc.studies import StudyReport

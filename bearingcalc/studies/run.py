@@ -238,5 +238,6 @@ def worst_case_verdicts(study: Study, results: dict[str, Any]) -> list[dict[str,
     verdicts = []
     for i, (margin, entry) in enumerate(worst.items()):
         at = {key: float(np.asarray(column).reshape(-1)[i]) for key, column in values.items()}
-        verdicts += judge(study.kind, study.layout(at), {margin: entry["min"]})
+        verdicts += judge(study.kind.judged, study.kind.results, study.layout(at),
+                          {margin: entry["min"]})
     return [asdict(verdict) for verdict in sorted(verdicts, key=lambda v: v.margin)]
