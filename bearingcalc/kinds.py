@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import functools
 import importlib
-from collections.abc import Collection, Mapping
+from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -41,6 +41,23 @@ OUT_OF_RANGE_REASON = ("", "the design's numbers are out of the range of double 
 
 
 @dataclass(frozen=True)
+class Plot:
+    """A drawing of the kind's calculation report: its name among the report's drawings
+    (:data:`bearingcalc.plots.report.DRAWINGS`) and, for a drawing that evaluates more
+    than the results, the solver function it calls ("module:function", imported on
+    first use), so that the drawings reach the solvers through the registry only."""
+
+    name: str
+    solver_function: str = ""
+
+    @property
+    def function(self) -> Callable[..., Any]:
+        """The solver function the drawing calls."""
+        module, _, name = self.solver_function.partition(":")
+        return getattr(importlib.import_module(module), name)  # type: ignore[no-any-return]
+
+
+@dataclass(frozen=True)
 class Kind:
     """What every command needs to know of one spec kind."""
 
@@ -58,6 +75,8 @@ class Kind:
     unbounded: tuple[str, ...] = ()
     #: margin key -> what it judges, for verdicts in engineering terms
     judged: Mapping[str, Judged] = field(default_factory=dict)
+    #: the drawings of its calculation report, in the report's order
+    plots: tuple[Plot, ...] = ()
 
     @property
     def model(self) -> type[Spec]:
@@ -256,7 +275,8 @@ KINDS: dict[str, Kind] = {
                governing=("life_margin", "modified_rating_life", "static_safety_factor"),
                judged={"life_margin": LIFE, "static_safety_margin": STATIC,
                        "contact_pressure_margin": CONTACT,
-                       "spin_to_roll_margin": SPIN_TO_ROLL})
+                       "spin_to_roll_margin": SPIN_TO_ROLL},
+               plots=(Plot("duty-damage"), Plot("life-against-load")))
           for name, summary in (
               ("rolling-bearing", "a ball or roller bearing, single or paired: ISO 281 "
                "rating life, ISO 76 static safety"),
@@ -272,7 +292,9 @@ KINDS: dict[str, Kind] = {
                                                    "system_modified_rating_life", True,
                                                    "ratio", "required"),
                      "static_safety_margin": Judged("smallest static safety s0",
-                                                    smallest_bearing_safety, True)}),
+                                                    smallest_bearing_safety, True)},
+             plots=(Plot("duty-damage"), Plot("bearing-lives"),
+                    Plot("shaft-bending", "bearingcalc.core.bevel_drive:shaft_bending_lines"))),
     )
 }
 

@@ -57,7 +57,7 @@ def test_the_report_of_a_drive_draws_its_shafts(cli, tmp_path):
 def test_a_drive_with_bearings_on_one_shaft_draws_that_shaft(cli, tmp_path, monkeypatch):
     import yaml
 
-    from bearingcalc import report
+    from bearingcalc.plots import report
 
     panels = []
     real = report.svg_of

@@ -1,5 +1,5 @@
 """The ``report`` command: a spec file's calculation report as one self-contained HTML
-file (:mod:`bearingcalc.report`)."""
+file (:mod:`bearingcalc.reports.calculation`)."""
 
 from __future__ import annotations
 
@@ -36,7 +36,7 @@ def report_command(
     """
     with errors_as_exit(debug):
         from bearingcalc import batch
-        from bearingcalc.report import report_of
+        from bearingcalc.reports.calculation import report_of
 
         target = output_target(output, "report", ".html")
         refuse_unwritable("report", [batch.spec_file(spec_path)], target)

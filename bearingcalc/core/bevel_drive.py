@@ -45,6 +45,7 @@ from bearingcalc.core.shaft_statics import (  # noqa: F401  (the drive's statics
     ARRANGEMENTS,
     mean_pitch_point,
     shaft_axial_loads,
+    shaft_bending_lines,
     shaft_bending_moments,
     shaft_reactions,
 )

@@ -110,6 +110,32 @@ def shaft_bending_moments(x: ArrayLike, positions: tuple[float, float], mesh_pos
     return np.asarray(moment_y), np.asarray(moment_z)
 
 
+def shaft_bending_lines(shafts: Mapping[str, list[Mapping[str, Any]]],
+                        results: Mapping[str, float], points: int = 801
+                        ) -> list[tuple[str, NDArray, NDArray, tuple[float, ...], float]]:
+    """Each shaft's resultant bending moment |M| = √(M_y² + M_z²) [N·m] along its axis,
+    for a drawing: (shaft, x [m], |M| [N·m], its bearings' positions [m], the mean pitch
+    point [m]), x from the outermost of those over ``points`` positions and at each of
+    them; shafts with no bearings left out. ``shafts`` are the solver inputs' shafts,
+    ``results`` one design's results (:func:`shaft_bending_moments`, §9)."""
+    drawn = []
+    for shaft, gear in (("pinion", "a"), ("gear", "b")):
+        if shaft not in shafts:
+            continue
+        positions = tuple(float(bearing["position"]) for bearing in shafts[shaft])
+        angle = results[f"gear_{gear}_pitch_angle"]
+        mesh, radius = (float(v) for v in mean_pitch_point(results["mean_cone_distance"],
+                                                             angle))
+        ends = [*positions, mesh]
+        x = np.linspace(min(ends), max(ends), points)
+        x = np.unique(np.concatenate([x, ends]))
+        moment_y, moment_z = shaft_bending_moments(
+            x, positions, mesh, radius, results["tangential_force"],
+            results[f"gear_{gear}_radial_force"], results[f"gear_{gear}_axial_force"])
+        drawn.append((shaft, x, np.hypot(moment_y, moment_z), positions, mesh))
+    return drawn
+
+
 def induced_axial_factor(bearing: Mapping[str, Any]) -> NDArray:
     """R of one bearing of an adjusted pair: the spec's ``induced_axial_factor``, else
     0.5/Y for a tapered roller bearing (the catalogue's Y above e, or ISO's 0.4·cotα) and

@@ -12,11 +12,9 @@ from __future__ import annotations
 
 import datetime
 import hashlib
-import io
-import re
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from html import escape
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from bearingcalc.reports.formatting import format_number
 from bearingcalc.units import to_display
@@ -169,25 +167,3 @@ def _result_tables(evaluation: Evaluation, kind: Kind) -> Iterator[str]:
                    f"<td class=\"number si\" data-key=\"{escape(key)}\" "
                    f"data-si=\"{escape(si)}\">{escape(short)}</td></tr>")
         yield "</table>"
-
-
-def svg_of(draw: Callable[[Any], None], panels: int | None = None) -> str:
-    """A matplotlib figure drawn by ``draw(axes)`` as inline SVG (no XML declaration);
-    given a number of ``panels``, stacked, ``axes`` is their list."""
-    from bearingcalc.plots.common import pyplot
-
-    plt = pyplot()
-    count = panels or 1
-    figure, grid = plt.subplots(count, 1, figsize=(7, 3.6 if count == 1 else 2.8 * count),
-                                dpi=100, squeeze=False)
-    axes = grid[0, 0] if panels is None else list(grid[:, 0])
-    try:
-        draw(axes)
-        figure.tight_layout()
-        buffer = io.StringIO()
-        figure.savefig(buffer, format="svg")
-    finally:
-        plt.close(figure)
-    text = buffer.getvalue()
-    # The drawing alone: no XML declaration, and no metadata naming outside addresses.
-    return re.sub(r"<metadata>.*?</metadata>", "", text[text.index("<svg"):], flags=re.S)

@@ -1,105 +1,43 @@
-"""The calculation report of a spec file: each document solved as ``solve`` solves it,
-its inputs read back as written and in SI, the plots that fit its kind made from the
-same solver, all written by :func:`bearingcalc.reports.html.report_html`."""
+"""The drawings of the calculation report, each an inline SVG with its caption; a kind
+names the drawings its report makes (:attr:`bearingcalc.kinds.Kind.plots`), each a key
+of :data:`DRAWINGS`. A drawing that evaluates more than the results (a shaft's bending
+moment along its axis) calls the solver function its plot names, never a solver module.
+"""
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-from pathlib import Path
-from typing import Any
+import io
+import re
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from bearingcalc import __version__
 from bearingcalc.errors import SpecError
-from bearingcalc.evaluation import evaluate_document, load_selected, parse_document
-from bearingcalc.kinds import KINDS
-from bearingcalc.models.base import field_parser
-from bearingcalc.models.field_path import FieldPathError, resolve_field
-from bearingcalc.models.quantities import Measured
-from bearingcalc.models.yaml_loader import read_spec_text
-from bearingcalc.reports.html import report_html, svg_of
+from bearingcalc.plots.common import pyplot
+
+if TYPE_CHECKING:
+    from bearingcalc.evaluation import Evaluation
+    from bearingcalc.kinds import Kind, Plot
+    from bearingcalc.result_keys import ResultTable
 
 #: The life-against-load curve runs from this fraction of the operating load to this
 #: multiple of it.
 LOAD_SPAN = (0.25, 4.0)
 
 
-def report_of(path: str | Path) -> str:
-    """The HTML report of every document of the spec file at ``path``; SpecError where
-    a document cannot be read or solved (as ``solve`` would refuse it)."""
-    documents = load_selected(path)
-    text = read_spec_text(str(path).rpartition("#")[0] if not Path(path).exists()
-                          else path)
-    evaluations, inputs, plots = [], [], []
-    for document in documents:
-        evaluation = evaluate_document(document)
-        kind, spec = parse_document(document)
-        evaluations.append(evaluation)
-        inputs.append(list(_inputs(document.data, spec)))
-        plots.append(_plots(kind, spec, evaluation))
-    return report_html(evaluations, KINDS, text, str(path), __version__, inputs, plots)
+def _bins(evaluation: Evaluation) -> ResultTable | None:
+    """The table of a duty cycle's bins where it has each bin's damage share (none
+    without a duty cycle)."""
+    bins = next((table for table in evaluation.tables if table.axis == "bin"), None)
+    return bins if bins is not None and "damage_share" in bins.columns else None
 
 
-def _leaves(data: Any, prefix: str = "") -> Iterator[tuple[str, Any]]:
-    if isinstance(data, dict):
-        if {"nominal"} <= set(data):  # a toleranced value, as one input
-            yield prefix, data
-            return
-        for key, value in data.items():
-            yield from _leaves(value, f"{prefix}.{key}" if prefix else str(key))
-    elif isinstance(data, list):
-        for i, value in enumerate(data, 1):
-            yield from _leaves(value, f"{prefix}.{i}")
-    else:
-        yield prefix, data
-
-
-def _inputs(data: Any, spec: Any) -> Iterator[tuple[str, str, str]]:
-    """(field, as written, in SI) of every input the spec gives."""
-    for name, written in _leaves(data):
-        if name in ("kind", "name"):
-            continue
-        shown = written if isinstance(written, str) else (
-            "{" + ", ".join(f"{k}: {v}" for k, v in written.items()) + "}"
-            if isinstance(written, dict) else str(written))
-        try:
-            found = resolve_field(spec, name)
-        except FieldPathError:
-            yield name, shown, ""
-            continue
-        value = found.value
-        if isinstance(value, Measured):  # a toleranced input: its nominal value
-            value = float(value)
-        parsed = field_parser(found.info) if found.info is not None else None
-        unit = "" if parsed is None or parsed[2] == "1" else f" {parsed[2]}"
-        if isinstance(value, bool):
-            si = "true" if value else "false"
-        elif isinstance(value, float):
-            si = f"{value:.10g}{unit}"  # ten digits: the float's own, not its last bits
-        else:
-            si = str(value)
-        yield name, shown, si
-
-
-def _plots(kind: Any, spec: Any, evaluation: Any) -> list[tuple[str, str]]:
-    """The plots that fit the kind: a bearing's life against its load, a drive's
-    bearings' lives against the required life, a duty cycle's damage per bin."""
-    plots = []
-    bins = _table(evaluation, "bin")
-    shares = bins is not None and "damage_share" in bins.columns
-    if shares:
-        plots.append(_damage_plot(evaluation, bins))
-    elif kind.name in ("rolling-bearing", "ball-bearing"):
-        curve = _life_against_load(kind, spec, evaluation)
-        if curve is not None:
-            plots.append(curve)
-    if kind.name == "bevel-drive":
-        plots.append(_drive_lives(evaluation))
-        diagram = None if shares else _shaft_loads(spec, evaluation)
-        if diagram is not None:  # a duty cycle's shafts carry a load per bin, not one
-            plots.append(diagram)
-    return plots
+def _damage_shares(evaluation: Evaluation) -> list[str]:
+    """The keys of a duty cycle's damage share per bin, in the bins' order (none without
+    a duty cycle)."""
+    bins = _bins(evaluation)
+    return [] if bins is None else [key for key in bins.column("damage_share") if key]
 
 
 def _required_life(evaluation: Any) -> float | None:
@@ -110,9 +48,15 @@ def _required_life(evaluation: Any) -> float | None:
     return None
 
 
-def _life_against_load(kind: Any, spec: Any, evaluation: Any) -> tuple[str, str] | None:
+def life_against_load(kind: Kind, spec: Any, evaluation: Evaluation, plot: Plot
+                      ) -> tuple[str, str] | None:
+    """A bearing's modified rating life against its radial load, the other inputs as
+    given (a sweep of the same solver), with the operating point and the required life;
+    none for a duty cycle, whose damage per bin is drawn instead."""
     from bearingcalc.sweeps import parse_axis, run_sweep
 
+    if _damage_shares(evaluation):
+        return None
     load = float(spec.radial_load)  # a toleranced load's nominal value
     life = evaluation.results.get("modified_rating_life")
     if not load > 0 or life is None:
@@ -151,12 +95,9 @@ def _life_against_load(kind: Any, spec: Any, evaluation: Any) -> tuple[str, str]
             "(ISO 281, the same solver as the results above).", svg_of(draw))
 
 
-def _table(evaluation: Any, axis: str) -> Any:
-    """The first table of the results along ``axis``, or None."""
-    return next((table for table in evaluation.tables if table.axis == axis), None)
-
-
-def _drive_lives(evaluation: Any) -> tuple[str, str]:
+def drive_lives(kind: Kind, spec: Any, evaluation: Evaluation, plot: Plot
+                ) -> tuple[str, str] | None:
+    """Each bearing's modified rating life and the system's, against the required life."""
     results = evaluation.results
     bearings = [(row, key) for table in evaluation.tables if table.axis == "member"
                 for row, key in zip(table.rows, table.column("modified_rating_life"),
@@ -186,7 +127,13 @@ def _drive_lives(evaluation: Any) -> tuple[str, str]:
             "life.", svg_of(draw))
 
 
-def _damage_plot(evaluation: Any, table: Any) -> tuple[str, str]:
+def duty_damage(kind: Kind, spec: Any, evaluation: Evaluation, plot: Plot
+                ) -> tuple[str, str] | None:
+    """Each bin's share of the time and of the fatigue damage, where the design runs a
+    duty cycle (else none)."""
+    table = _bins(evaluation)
+    if table is None:
+        return None
     results = evaluation.results
     shares = table.column("damage_share")
     bins = [evaluation.row_names.get(row, str(position + 1))
@@ -208,30 +155,20 @@ def _damage_plot(evaluation: Any, table: Any) -> tuple[str, str]:
             svg_of(draw))
 
 
-def _shaft_loads(spec: Any, evaluation: Any) -> tuple[str, str] | None:
-    """Each shaft's bending moment along its axis, with its bearings and its gear."""
-    from bearingcalc.core.bevel_drive import mean_pitch_point, shaft_bending_moments
-
+def shaft_bending(kind: Kind, spec: Any, evaluation: Evaluation, plot: Plot
+                  ) -> tuple[str, str] | None:
+    """Each shaft's bending moment along its axis, with its bearings and its gear, by the
+    solver function the plot names; none for a duty cycle, whose shafts carry a load per
+    bin, not one."""
+    if _damage_shares(evaluation):
+        return None
     results = evaluation.results
-    shafts = spec.solver_inputs()["shafts"]
-    # the bearings' tables come a shaft each, in the shafts' order
-    tables = iter(table for table in evaluation.tables if table.axis == "member")
-    drawn = []
-    for shaft, gear in (("pinion", "a"), ("gear", "b")):
-        if shaft not in shafts:
-            continue
-        loads = [results[key] for key in next(tables).column("radial_load")]
-        positions = tuple(float(bearing["position"]) for bearing in shafts[shaft])
-        angle = results[f"gear_{gear}_pitch_angle"]
-        mesh, radius = (float(v) for v in mean_pitch_point(results["mean_cone_distance"],
-                                                             angle))
-        ends = [*positions, mesh]
-        x = np.linspace(min(ends), max(ends), 801)
-        x = np.unique(np.concatenate([x, ends]))
-        moment_y, moment_z = shaft_bending_moments(
-            x, positions, mesh, radius, results["tangential_force"],
-            results[f"gear_{gear}_radial_force"], results[f"gear_{gear}_axial_force"])
-        drawn.append((shaft, x, np.hypot(moment_y, moment_z), positions, mesh, loads))
+    lines = plot.function(spec.solver_inputs()["shafts"], results)
+    # the bearings' tables come a shaft each, in the shafts' order, as the lines do
+    tables = [table for table in evaluation.tables if table.axis == "member"]
+    drawn = [(shaft, x, moment, positions, mesh,
+              [results[key] for key in table.column("radial_load")])
+             for (shaft, x, moment, positions, mesh), table in zip(lines, tables, strict=True)]
     if not drawn:
         return None
 
@@ -259,3 +196,40 @@ def _shaft_loads(spec: Any, evaluation: Any) -> tuple[str, str] | None:
             "its bearings with their radial loads and the gear's mean pitch point. Rigid "
             "shaft on two simple supports, as the bearing loads above.",
             svg_of(draw, panels=len(drawn)))
+
+
+def svg_of(draw: Callable[[Any], None], panels: int | None = None) -> str:
+    """A matplotlib figure drawn by ``draw(axes)`` as inline SVG (no XML declaration);
+    given a number of ``panels``, stacked, ``axes`` is their list."""
+    plt = pyplot()
+    count = panels or 1
+    figure, grid = plt.subplots(count, 1, figsize=(7, 3.6 if count == 1 else 2.8 * count),
+                                dpi=100, squeeze=False)
+    axes = grid[0, 0] if panels is None else list(grid[:, 0])
+    try:
+        draw(axes)
+        figure.tight_layout()
+        buffer = io.StringIO()
+        figure.savefig(buffer, format="svg")
+    finally:
+        plt.close(figure)
+    text = buffer.getvalue()
+    # The drawing alone: no XML declaration, and no metadata naming outside addresses.
+    return re.sub(r"<metadata>.*?</metadata>", "", text[text.index("<svg"):], flags=re.S)
+
+
+#: A drawing's name -> the function that draws it for one evaluation, or gives None where
+#: it does not apply to the design (a life curve of a duty cycle).
+DRAWINGS: dict[str, Callable[[Kind, Any, Evaluation, Plot], tuple[str, str] | None]] = {
+    "duty-damage": duty_damage,
+    "life-against-load": life_against_load,
+    "bearing-lives": drive_lives,
+    "shaft-bending": shaft_bending,
+}
+
+
+def report_plots(kind: Kind, spec: Any, evaluation: Evaluation) -> list[tuple[str, str]]:
+    """(caption, SVG) of each drawing the kind names that applies to the design, in the
+    kind's order."""
+    drawn = (DRAWINGS[plot.name](kind, spec, evaluation, plot) for plot in kind.plots)
+    return [plot for plot in drawn if plot is not None]
