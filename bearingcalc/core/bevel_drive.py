@@ -23,9 +23,9 @@ from bearingcalc.core.arrangements import (
     induced_axial_factor_tapered,
     supports_positive,
 )
+from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.common import broadcast_all, first_failure
 from bearingcalc.core.duty_cycle_gears import DRIVE_COLUMNS, DRIVE_CYCLE_RESULTS, drive_cycle
-from bearingcalc.core.roller_bearing import TYPES as ROLLER_TYPES
 from bearingcalc.core.solver import DutyCycle, Members, Solution, Solver
 
 #: The Weibull slope of bearing makers' system-life formula: 10/9 when every bearing is a
@@ -91,9 +91,9 @@ WARNINGS: dict[str, str] = {
        "that runs both ways needs a locating bearing that carries both)"
        for name in _bearing_names() for way in ("away_from", "toward")},
 }
-#: Bearing types that carry thrust one way only in a single row, and the arrangements
-#: in which they still do (a back-to-back or face-to-face pair carries it both ways).
-ONE_WAY_TYPES = ("angular-contact", "tapered-roller")
+#: The arrangements in which a type that carries thrust one way only in a single row
+#: (its trait ``one_way``) still does (a back-to-back or face-to-face pair carries it
+#: both ways).
 ONE_WAY_ARRANGEMENTS = ("single", "tandem")
 
 #: The drive's own status codes: the pair's (1-8), then a shaft's coinciding bearings.
@@ -216,7 +216,7 @@ def induced_axial_factor(bearing: Mapping[str, Any]) -> NDArray:
     if bearing.get("induced_axial_factor") is not None:
         return np.asarray(bearing["induced_axial_factor"], dtype=float)
     alpha = np.asarray(bearing["contact_angle"], dtype=float)
-    if bearing["bearing_type"] == "tapered-roller":
+    if traits(bearing["bearing_type"]).family == "roller":  # a tapered roller bearing
         y = bearing.get("load_y")
         return induced_axial_factor_tapered(0.4 / np.tan(alpha) if y is None else y)
     return induced_axial_factor_ball(alpha)
@@ -281,7 +281,7 @@ def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -
         for i, (bearing, radial, axial) in enumerate(zip(bearings, loads, axial_loads,
                                                          strict=True), 1):
             name = f"{shaft}_bearing_{i}"
-            if (bearing.get("locating") == "locating" and bearing["bearing_type"] in ONE_WAY_TYPES
+            if (bearing.get("locating") == "locating" and traits(bearing["bearing_type"]).one_way
                     and bearing.get("arrangement", "single") in ONE_WAY_ARRANGEMENTS):
                 # rows, like every number, may vary along a duty cycle's bins or a study
                 single_row = np.asarray(1.0 if bearing.get("rows") is None
@@ -292,7 +292,7 @@ def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -
                 **bearing, "radial_load": radial, "axial_load": axial, "speed": speed,
                 "inner_speed": speed, "outer_speed": 0.0, "min_rating_life": None})
             members[f"{shaft}_bearings.{i}"] = solved.status
-            rollers |= bearing["bearing_type"] in ROLLER_TYPES
+            rollers |= traits(bearing["bearing_type"]).family == "roller"
             out[f"{name}_radial_load"] = radial
             out[f"{name}_axial_load"] = axial
             for key, values in adjusted.items():

@@ -13,11 +13,9 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.iso281 import LIFE_EXPONENT
-from bearingcalc.core.roller_ratings import RADIAL_ROLLER_TYPES, THRUST_ROLLER_TYPES
 from bearingcalc.core.solver import BIN_PREFIX, Solution
-
-ROLLER_TYPES = RADIAL_ROLLER_TYPES + THRUST_ROLLER_TYPES
 
 #: Per-bin results: column -> (SI unit, meaning); keyed ``duty_{k}_{column}``.
 BEARING_COLUMNS: dict[str, tuple[str, str]] = {
@@ -134,8 +132,7 @@ def rolling_bearing_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solut
     governing = np.argmax(damage, axis=0)
     modified = miner_life(shares, lives, governing)
     basic = miner_life(shares, results["basic_rating_life_revolutions"], governing)
-    exponent = LIFE_EXPONENT["roller" if str(inputs["bearing_type"]) in ROLLER_TYPES
-                             else "ball"]
+    exponent = LIFE_EXPONENT[traits(str(inputs["bearing_type"])).family]
     p_mean = mean_load(shares, results["equivalent_dynamic_load"], exponent, governing)
     revolutions_per_second = mean_speed / (2.0 * np.pi)
     out: dict[str, NDArray] = {}

@@ -20,9 +20,9 @@ from bearingcalc.core.agma_life import (
     spectrum_damage,
     spectrum_safety,
 )
+from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.duty_cycle import (
     LIFE_EXPONENT,
-    ROLLER_TYPES,
     at_bin,
     cycle_solution,
     mean_load,
@@ -151,7 +151,7 @@ def drive_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
     for shaft, bearings in inputs["shafts"].items():
         for i, bearing in enumerate(bearings, 1):
             name = f"{shaft}_bearing_{i}"
-            family = "roller" if bearing["bearing_type"] in ROLLER_TYPES else "ball"
+            family = traits(bearing["bearing_type"]).family
             rollers |= family == "roller"
             for key, life in (("basic_rating_life", basic), ("modified_rating_life", modified)):
                 lives = results[f"{name}_{key}"]

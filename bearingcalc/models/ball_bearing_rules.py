@@ -1,5 +1,5 @@
 """The cross-field rules of a ball bearing, mixed into its spec model
-(:class:`bearingcalc.models.ball_bearing.BallBearingSpec`), which a drive's bearings
+(:class:`bearingcalc.models.rolling_bearing.RollingBearingSpec`), which a drive's bearings
 share (``docs/physics.md`` §5)."""
 
 from __future__ import annotations
@@ -7,15 +7,10 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
-from bearingcalc.core.roller_ratings import THRUST_ROLLER_TYPES
+from bearingcalc.core.bearing_types import AngleRule, BearingTraits, LoadRule
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.rules import rule
 
-#: Bearing types whose rolling elements are balls; thrust ball bearings by both names.
-BALL_TYPES = ("deep-groove", "angular-contact", "self-aligning-ball", "thrust", "thrust-ball")
-THRUST_BALL = ("thrust", "thrust-ball")
-#: Every thrust type, ball and roller: their e of ISO 281 has no bound.
-THRUST_TYPES = (*THRUST_BALL, *THRUST_ROLLER_TYPES)
 #: ISO 281's largest e of a radial bearing: 1.5·tanα at α = 45° (7.2.1).
 LARGEST_RADIAL_E = 1.5
 
@@ -26,6 +21,7 @@ class _ReadsBallBearing:
     if TYPE_CHECKING:  # the spec model's fields and properties these rules read; not
         # annotations pydantic would see, or it would take them for fields of its own
         type: str
+        type_traits: BearingTraits
         arrangement: str
         speed: Any
         inner_speed: Any
@@ -70,6 +66,11 @@ class _ReadsBallBearing:
                               f"the {element} must be smaller than "
                               f"(outside_diameter − bore_diameter)/2 = {section:g} mm")
 
+    @property
+    def _axial_only(self) -> bool:
+        """A thrust ball bearing (α = 90°): P = Fa, and it carries no radial load."""
+        return self.type_traits.load_rule is LoadRule.AXIAL_ONLY
+
     def _envelope_mm(self) -> tuple[float, float] | None:
         """(d, D) in mm where both are given and in order, else None."""
         if self.bore_diameter is None or self.outside_diameter is None or not (
@@ -103,7 +104,7 @@ class OperatingRules(_ReadsBallBearing):
         if self.radial_load == 0 and self.axial_load == 0:
             return SpecFieldError("radial_load", "both loads are zero, so the life is "
                                   "undefined: give radial_load or axial_load, like 10 kN")
-        if self.type in THRUST_BALL and self.radial_load > 0:
+        if self._axial_only and self.radial_load > 0:
             return SpecFieldError("radial_load", "a thrust ball bearing (α = 90°) carries no "
                                   "radial load; use angular-contact, or set it to 0 kN")
         return None
@@ -120,7 +121,7 @@ class OperatingRules(_ReadsBallBearing):
                 return SpecFieldError(f"load_factors.{name}", f"{name.upper()} = 0 leaves the "
                                       "axial load out of the equivalent load P = X·Fr + Y·Fa: "
                                       f"give the catalogue's {name.upper()}, above 0")
-        if factors.x == 0 and self.radial_load > 0 and self.type not in THRUST_BALL:
+        if factors.x == 0 and self.radial_load > 0 and not self._axial_only:
             return SpecFieldError("load_factors.x", "X = 0 leaves the radial load out of the "
                                   "equivalent load P = X·Fr + Y·Fa above e: give the "
                                   "catalogue's X, above 0 (0.4 to 0.76 in ISO 281's tables)")
@@ -134,7 +135,7 @@ class OperatingRules(_ReadsBallBearing):
         and 0.87, steep tapered rollers at 30°). A thrust bearing's e grows without bound
         as α nears 90°."""
         factors = self.load_factors
-        if factors is None or factors.e is None or self.type in THRUST_TYPES or (
+        if factors is None or factors.e is None or self.type_traits.thrust or (
                 factors.e <= LARGEST_RADIAL_E):
             return None
         return SpecFieldError("load_factors.e", f"{factors.e:g} is above {LARGEST_RADIAL_E:g}, "
@@ -144,14 +145,14 @@ class OperatingRules(_ReadsBallBearing):
 
     @rule
     def _contact_angle(self) -> SpecFieldError | None:
-        if self.type not in BALL_TYPES:  # a roller bearing's angle: RollerRules
+        if self.type_traits.family != "ball":  # a roller bearing's angle: RollerRules
             return None
-        thrust = self.type in THRUST_BALL
+        thrust = self._axial_only
         if thrust and self.contact_angle is not None and not math.isclose(
                 self.contact_angle, math.pi / 2, rel_tol=1e-12):
             return SpecFieldError("contact_angle", "a thrust ball bearing has α = 90 deg; "
                                   "leave contact_angle out")
-        if self.type == "angular-contact" and self.contact_angle is None:
+        if self.type_traits.angle_rule is AngleRule.GIVEN and self.contact_angle is None:
             return SpecFieldError("contact_angle", "an angular-contact bearing needs its "
                                   "contact angle, like 40 deg")
         if not thrust and not 0 <= self.angle < math.pi / 2:
@@ -163,7 +164,7 @@ class OperatingRules(_ReadsBallBearing):
     def _angle_in_tables(self) -> SpecFieldError | None:
         alpha = self.angle
         # A missing angle is its own problem (_contact_angle): the tables are not one.
-        if self.type != "angular-contact" or self.contact_angle is None or (
+        if self.type_traits.load_rule is not LoadRule.ANGLE_TABLE or self.contact_angle is None or (
                 math.radians(20) - 1e-12 <= alpha <= math.radians(45) + 1e-12):
             return None
         factors = self.load_factors
@@ -179,7 +180,7 @@ class OperatingRules(_ReadsBallBearing):
 
     @rule
     def _axial_factors_found(self) -> SpecFieldError | None:
-        if self.type != "deep-groove" or not self.axial_load > 0 or (
+        if self.type_traits.load_rule is not LoadRule.GROOVE_TABLE or not self.axial_load > 0 or (
                 self.load_factors is not None or self.has_geometry):
             return None
         if self.static_load_rating is not None and self.static_factor is not None:
@@ -212,7 +213,7 @@ class OperatingRules(_ReadsBallBearing):
                                   "for ν1: give pitch_diameter, or bore_diameter and "
                                   "outside_diameter", at="lubrication")
         if (self.fatigue_load_limit is None and self.static_load_rating is None
-                and (self.type in THRUST_BALL or not self.has_geometry)):
+                and (self._axial_only or not self.has_geometry)):
             return SpecFieldError("fatigue_load_limit", "aISO needs Cu: give "
                                   "fatigue_load_limit, or static_load_rating to find it",
                                   at="lubrication")
@@ -256,7 +257,7 @@ class GeometryRules(_ReadsBallBearing):
 
     @rule
     def _rated(self) -> SpecFieldError | None:
-        if self.type not in BALL_TYPES:  # a roller bearing's ratings: RollerRules
+        if self.type_traits.family != "ball":  # a roller bearing's ratings: RollerRules
             return None
         if self.dynamic_load_rating is None and not self.has_geometry:
             return SpecFieldError("dynamic_load_rating", "missing: give dynamic_load_rating "
@@ -267,7 +268,7 @@ class GeometryRules(_ReadsBallBearing):
 
     @rule
     def _grooves(self) -> SpecFieldError | None:
-        if self.type not in BALL_TYPES:  # no grooves: RollerRules refuses the fields
+        if self.type_traits.family != "ball":  # no grooves: RollerRules refuses the fields
             return None
         if (self.inner_groove_conformity is None) != (self.outer_groove_conformity is None):
             missing, given = (("inner_groove_conformity", "outer_groove_conformity")

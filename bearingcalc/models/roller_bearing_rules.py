@@ -1,5 +1,5 @@
 """The cross-field rules of a rolling bearing's family, arrangement and load factors, mixed
-into its spec model (:class:`bearingcalc.models.ball_bearing.BallBearingSpec`): which
+into its spec model (:class:`bearingcalc.models.rolling_bearing.RollingBearingSpec`): which
 fields belong to balls and which to rollers, the roller bearings' contact angles,
 ratings and loads, and which bearings pair (``docs/physics.md`` §5)."""
 
@@ -9,18 +9,10 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from bearingcalc.catalogue.designation import parse_designation
-from bearingcalc.core.roller_ratings import (
-    RADIAL_ROLLER_TYPES,
-    STRAIGHT_ROLLER_TYPES,
-    THRUST_ROLLER_TYPES,
-)
+from bearingcalc.core.bearing_types import AngleRule, BearingTraits, LoadRule, RatingFormula
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.models.ball_bearing_rules import BALL_TYPES
 from bearingcalc.models.rules import rule
 
-ROLLER_TYPES = RADIAL_ROLLER_TYPES + THRUST_ROLLER_TYPES
-#: Bearings that pair as back-to-back, face-to-face or tandem sets.
-PAIRABLE = ("angular-contact", "tapered-roller")
 #: Ball field -> the roller field in its place, and the other way round.
 _BALL_TO_ROLLER = {"ball_count": "roller_count", "ball_diameter": "roller_diameter"}
 _BALL_ONLY = ("inner_groove_conformity", "outer_groove_conformity", "static_factor",
@@ -32,6 +24,8 @@ _TOLERANCE = 1e-12
 class _ReadsRollerBearing:
     if TYPE_CHECKING:  # the spec model's fields these rules read (see _ReadsBallBearing)
         type: str
+        type_traits: BearingTraits
+        rollers: bool
         arrangement: str
         rows: int
         contact_angle: float | None
@@ -61,17 +55,22 @@ class _ReadsRollerBearing:
 class RollerRules(_ReadsRollerBearing):
     """Balls or rollers, the roller bearings' own rules, pairs and catalogue factors."""
 
+    @property
+    def _straight(self) -> bool:
+        """A cylindrical or needle roller bearing: no contact angle, and ISO 281's P = Fr."""
+        return self.type_traits.load_rule is LoadRule.RADIAL_ONLY
+
     @rule
     def _ribless_ring_takes_no_thrust(self) -> SpecFieldError | None:
         """An NU bearing has no ribs on its inner ring, an N bearing none on its outer:
         neither carries an axial load (NJ, NUP and NF do)."""
         parsed = parse_designation(self.designation) if self.designation else None
-        if parsed is None or self.type != "cylindrical-roller" or not self.axial_load > 0:
+        if parsed is None or not self.axial_load > 0:
             return None
         form = parsed.basic.rstrip("0123456789")
-        if form not in ("NU", "N"):
+        ring = dict(self.type_traits.ribless_forms).get(form)
+        if ring is None:
             return None
-        ring = "inner" if form == "NU" else "outer"
         return SpecFieldError("axial_load", f"{self.designation} is an {form} bearing, with "
                               f"no ribs on its {ring} ring: it carries no axial load; choose "
                               "an NJ or NUP bearing, or let another bearing take the thrust",
@@ -81,7 +80,7 @@ class RollerRules(_ReadsRollerBearing):
     def _straight_rollers_loaded_radially(self) -> SpecFieldError | None:
         """ISO 281 rates a cylindrical or needle roller bearing on P = Fr: its ribs carry
         an axial load, but not into the life."""
-        if self.type not in STRAIGHT_ROLLER_TYPES or self.radial_load > 0 or not (
+        if not self._straight or self.radial_load > 0 or not (
                 self.axial_load > 0):
             return None
         return SpecFieldError("radial_load", f"a {self.type} bearing's life counts only the "
@@ -93,7 +92,7 @@ class RollerRules(_ReadsRollerBearing):
         """Each family's fields on its own types only, naming the field that fits."""
         given = self.model_fields_set
         problems = []
-        if self.type in ROLLER_TYPES:
+        if self.rollers:
             for ball, roller in _BALL_TO_ROLLER.items():
                 if ball in given:
                     problems.append(SpecFieldError(ball, f"a {self.type} bearing has "
@@ -111,39 +110,41 @@ class RollerRules(_ReadsRollerBearing):
                 if field in given:
                     problems.append(SpecFieldError(field, f"applies to roller bearings only, "
                                                    f"not to a {self.type} ball bearing"))
-        if self.type in ROLLER_TYPES and self.limits.max_spin_to_roll is not None:
+        if self.rollers and self.limits.max_spin_to_roll is not None:
             problems.append(SpecFieldError("limits.max_spin_to_roll", "judges the spin of "
                                            "balls on their races; a roller bearing's rollers "
                                            "do not spin so: leave it out"))
-        if "rows" in given and self.type in THRUST_ROLLER_TYPES and self.rows != 1:
+        if "rows" in given and self.rollers and self.rows not in self.type_traits.rows:
             problems.append(SpecFieldError("rows", "a thrust roller bearing here has one "
                                            "row: give 1"))
         return problems
 
     @rule
     def _roller_angle(self) -> SpecFieldError | None:
-        if self.type not in ROLLER_TYPES:
+        if not self.rollers:
             return None
+        kind = self.type_traits
         if self.contact_angle is None:
-            if self.type in STRAIGHT_ROLLER_TYPES or self.type == "thrust-cylindrical-roller":
+            if kind.angle_rule is AngleRule.FIXED:
                 return None
             return SpecFieldError("contact_angle", f"a {self.type} bearing needs its contact "
-                                  "angle, like "
-                                  f"{'50 deg' if self.type in THRUST_ROLLER_TYPES else '15 deg'}"
+                                  f"angle, like {kind.example_angle}"
                                   " (the outer raceway's, for tapered rollers)")
         alpha = self.contact_angle
-        if self.type in STRAIGHT_ROLLER_TYPES and abs(alpha) > _TOLERANCE:
+        if kind.angle_rule is AngleRule.FIXED and kind.contact_angle == 0 and (
+                abs(alpha) > _TOLERANCE):
             return SpecFieldError("contact_angle", f"a {self.type} bearing has α = 0 deg; "
                                   "leave contact_angle out (a tapered-roller bearing has "
                                   "an angle)")
-        if self.type == "thrust-cylindrical-roller" and abs(alpha - math.pi / 2) > _TOLERANCE:
-            return SpecFieldError("contact_angle", "a thrust-cylindrical-roller bearing has "
+        if kind.angle_rule is AngleRule.FIXED and kind.thrust and (
+                abs(alpha - math.pi / 2) > _TOLERANCE):
+            return SpecFieldError("contact_angle", f"a {self.type} bearing has "
                                   "α = 90 deg; leave contact_angle out")
-        if self.type in RADIAL_ROLLER_TYPES and not 0 <= alpha <= math.pi / 4 + _TOLERANCE:
+        if not kind.thrust and not 0 <= alpha <= math.pi / 4 + _TOLERANCE:
             return SpecFieldError("contact_angle", f"{math.degrees(alpha):g} deg is outside "
                                   "0 to 45 deg, the radial roller bearings of ISO 281; above "
                                   "45 deg use a thrust roller type")
-        if self.type in THRUST_ROLLER_TYPES and not (
+        if kind.thrust and not (
                 math.pi / 4 + _TOLERANCE < alpha <= math.pi / 2 + _TOLERANCE):
             return SpecFieldError("contact_angle", f"{math.degrees(alpha):g} deg is outside "
                                   "45 to 90 deg, the thrust roller bearings of ISO 281; at "
@@ -152,7 +153,7 @@ class RollerRules(_ReadsRollerBearing):
 
     @rule
     def _roller_rated(self) -> SpecFieldError | None:
-        if self.type not in ROLLER_TYPES:
+        if not self.rollers:
             return None
         geometry = {"roller_count": self.roller_count, "roller_diameter": self.roller_diameter,
                     "roller_length": self.roller_length}
@@ -177,14 +178,14 @@ class RollerRules(_ReadsRollerBearing):
     def _roller_in_section(self) -> SpecFieldError | None:
         # A thrust roller's diameter lies along the axis: the ring section does not bound it.
         return self._element_fits("roller_diameter", "roller",
-                                  in_section=self.type not in THRUST_ROLLER_TYPES)
+                                  in_section=not self.type_traits.thrust)
 
     @rule
     def _spherical_profile(self) -> SpecFieldError | None:
         crowned = (self.roller_profile_radius, self.raceway_radius)
         if crowned == (None, None):
             return None
-        if self.type not in ("spherical-roller", "thrust-spherical-roller"):
+        if not self.type_traits.crowned:
             field = "roller_profile_radius" if crowned[0] is not None else "raceway_radius"
             return SpecFieldError(field, "applies to spherical roller bearings only")
         if None in crowned:
@@ -200,7 +201,7 @@ class RollerRules(_ReadsRollerBearing):
     def _paired(self) -> SpecFieldError | None:
         if self.arrangement == "single":
             return None
-        if self.type not in PAIRABLE:
+        if not self.type_traits.pairable:
             return SpecFieldError("arrangement", f"{self.arrangement} pairs single-row "
                                   "angular-contact ball or tapered-roller bearings, not "
                                   f"{self.type}: use arrangement: single")
@@ -211,8 +212,8 @@ class RollerRules(_ReadsRollerBearing):
 
     @rule
     def _thrust_roller_loads(self) -> SpecFieldError | None:
-        if self.type not in THRUST_ROLLER_TYPES or (self.contact_angle is None and (
-                self.type != "thrust-cylindrical-roller")):
+        if not (self.rollers and self.type_traits.thrust) or (self.contact_angle is None and (
+                self.type_traits.angle_rule is not AngleRule.FIXED)):
             return None
         alpha = self.angle
         if abs(alpha - math.pi / 2) <= _TOLERANCE:
@@ -236,22 +237,16 @@ class RollerRules(_ReadsRollerBearing):
         """The catalogue factors of the bearing's form: x, y, e (ball, single row); e, y
         (roller, single row); e, y1, y2 (double row, a pair, self-aligning)."""
         factors = self.load_factors
+        self_aligning = self.type_traits.load_rule is LoadRule.SELF_ALIGNING
         double = (self.rows == 2 or self.arrangement in ("back-to-back", "face-to-face")
-                  or self.type == "self-aligning-ball")
+                  or self_aligning)
         if factors is None:
-            if self.type == "self-aligning-ball" and self.axial_load > 0:
+            if self_aligning and self.axial_load > 0:
                 return SpecFieldError("load_factors", "a self-aligning ball bearing under "
                                       "axial load needs the catalogue's factors: "
                                       "load_factors: {e, y1, y2, y0}", at="axial_load")
             return None
-        if self.type == "self-aligning-ball":
-            needed: tuple[str, ...] = ("e", "y1", "y2", "y0")
-        elif double:
-            needed = ("e", "y1", "x", "y2") if self.type in BALL_TYPES else ("e", "y1", "y2")
-        elif self.type in ROLLER_TYPES:
-            needed = ("e", "y")
-        else:
-            needed = ("x", "y", "e")
+        needed = self.type_traits.load_factor_names(double)
         missing = [name for name in needed if getattr(factors, name) is None]
         if not missing:
             return None
@@ -263,7 +258,7 @@ class RollerRules(_ReadsRollerBearing):
 
     @rule
     def _self_aligning_rated(self) -> SpecFieldError | None:
-        if self.type != "self-aligning-ball":
+        if self.type_traits.rating_formula is not RatingFormula.CATALOGUE:
             return None
         if self.dynamic_load_rating is None:
             return SpecFieldError("dynamic_load_rating", "missing: a self-aligning ball "
@@ -279,11 +274,11 @@ class RollerRules(_ReadsRollerBearing):
     def roller_notes(self) -> list[str]:
         """What the reader of a roller bearing's results should know."""
         notes = []
-        if self.type in STRAIGHT_ROLLER_TYPES and self.axial_load > 0:
+        if self._straight and self.axial_load > 0:
             notes.append(f"the axial load of a {self.type} bearing is carried by its ribs "
                          "and is not part of ISO 281's P = Fr: check it against the maker's "
                          "permissible axial load")
-        if self.type in ROLLER_TYPES and None not in (
+        if self.rollers and None not in (
                 self.roller_count, self.roller_diameter, self.roller_length) and (
                 self.roller_profile_radius is None):
             notes.append("the contact pressures are those of a straight line contact: they "
