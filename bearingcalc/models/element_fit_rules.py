@@ -11,12 +11,11 @@ one holds a slip (a length in the wrong unit, a field for another), not a design
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
 
 from bearingcalc.core import iso281, roller_ratings
-from bearingcalc.core.bearing_types import BearingTraits
 from bearingcalc.core.common import FIT_SLACK
 from bearingcalc.errors import SpecFieldError
+from bearingcalc.models.bearing_reads import ReadsBearing
 from bearingcalc.models.rules import rule
 
 #: The smallest contact angle of the tapered and spherical roller bearings in makers'
@@ -28,30 +27,7 @@ SHALLOWEST_ANGLE = math.radians(5.0)
 LONG_ROLLER = 2.5
 
 
-class _ReadsElements:
-    if TYPE_CHECKING:  # the spec model's fields these rules read (see _ReadsBallBearing)
-        type: str
-        type_traits: BearingTraits
-        rows: int
-        rollers: bool
-        angle: float
-        contact_angle: float | None
-        ball_count: int | None
-        ball_diameter: float | None
-        roller_count: int | None
-        roller_diameter: float | None
-        roller_length: float | None
-        roller_profile_radius: float | None
-        raceway_radius: float | None
-        pitch_diameter: float | None
-        width: float | None
-        dynamic_load_rating: float | None
-        has_geometry: bool
-
-        def _envelope_mm(self) -> tuple[float, float] | None: ...
-
-
-class ElementFitRules(_ReadsElements):
+class ElementFitRules(ReadsBearing):
     """Balls and rollers that fit their bearing; inclined rollers that are inclined."""
 
     @rule

@@ -12,8 +12,15 @@ from pydantic import BeforeValidator, Field, StringConstraints, WithJsonSchema
 
 from bearingcalc.core.bearing_types import SPEC_NAMES, BearingTraits, traits, type_name
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.models.ball_bearing_rules import GeometryRules, OperatingRules
 from bearingcalc.models.base import Spec, SpecModel
+from bearingcalc.models.bearing_geometry_rules import GeometryRules
+from bearingcalc.models.bearing_load_rules import LoadFactorRules, LoadRules
+from bearingcalc.models.bearing_operating_rules import (
+    ArrangementRules,
+    LubricationRules,
+    OperatingRules,
+)
+from bearingcalc.models.bearing_rating_rules import AngleRules, RatingRules
 from bearingcalc.models.duty import (
     OIL_BIN_FIELDS,
     OIL_BIN_PATHS,
@@ -42,7 +49,6 @@ from bearingcalc.models.quantities import (
     PositiveStress,
     PositiveTime,
 )
-from bearingcalc.models.roller_bearing_rules import RollerRules
 from bearingcalc.models.rules import rule
 
 RELIABILITY_RANGE = (0.90, 0.9995)
@@ -183,8 +189,9 @@ BearingBin = bin_model("BearingBin", {
     "outer_speed": (AngularSpeed, "outer ring, fixed frame"), **OIL_BIN_FIELDS})
 
 
-class RollingBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, RollerRules,
-                      OperatingRules, GeometryRules, BearingFields, Spec):
+class RollingBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, LubricationRules,
+                         ArrangementRules, LoadFactorRules, LoadRules, OperatingRules,
+                         AngleRules, RatingRules, GeometryRules, BearingFields, Spec):
     """A rolling bearing sized by ISO 281 (life) and ISO 76 (static safety), at one
     operating point or over a duty cycle."""
 
