@@ -58,7 +58,7 @@ class GeometryRules(ReadsBearing):
 
     @rule
     def _grooves(self) -> SpecFieldError | None:
-        if self.type_traits.family != "ball":  # no grooves: RollerRules refuses the fields
+        if self.type_traits.family != "ball":  # no grooves: _family_fields refuses the fields
             return None
         if (self.inner_groove_conformity is None) != (self.outer_groove_conformity is None):
             missing, given = (("inner_groove_conformity", "outer_groove_conformity")

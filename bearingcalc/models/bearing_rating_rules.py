@@ -19,7 +19,7 @@ class RatingRules(ReadsBearing):
 
     @rule
     def _rated(self) -> SpecFieldError | None:
-        if self.type_traits.family != "ball":  # a roller bearing's ratings: RollerRules
+        if self.type_traits.family != "ball":  # a roller bearing's ratings: _roller_rated
             return None
         if self.dynamic_load_rating is None and not self.has_geometry:
             return SpecFieldError("dynamic_load_rating", "missing: give dynamic_load_rating "
@@ -72,7 +72,7 @@ class AngleRules(ReadsBearing):
 
     @rule
     def _contact_angle(self) -> SpecFieldError | None:
-        if self.type_traits.family != "ball":  # a roller bearing's angle: RollerRules
+        if self.type_traits.family != "ball":  # a roller bearing's angle: _roller_angle
             return None
         thrust = self._axial_only
         if thrust and self.contact_angle is not None and not math.isclose(
