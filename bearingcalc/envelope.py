@@ -9,10 +9,9 @@ from typing import Any
 
 from bearingcalc.catalogue.catalogue import Catalogue, CatalogueRow
 from bearingcalc.catalogue.designation import normal_form
-from bearingcalc.catalogue.fill import TYPE_ALIASES
 from bearingcalc.catalogue.reader import ROW_TYPES
+from bearingcalc.core.bearing_types import traits, type_name
 from bearingcalc.errors import OptionError, SpecError
-from bearingcalc.models.bevel_drive import THRUST_TYPES
 from bearingcalc.models.field_path import FieldPath
 from bearingcalc.models.yaml_loader import Document
 from bearingcalc.units import LENGTH, UnitError, parse_quantity, to_display
@@ -39,7 +38,7 @@ def envelope_from_options(types: Sequence[str], series: Sequence[str],
                           ) -> Envelope:
     """The envelope of ``select``'s options; an OptionError naming the option at fault."""
     for name in types:
-        if TYPE_ALIASES.get(name, name) not in ROW_TYPES:
+        if type_name(name) not in ROW_TYPES:
             raise OptionError("--type", f"{name!r}: not a bearing type"
                               f"{did_you_mean(name, ROW_TYPES)}; one of {', '.join(ROW_TYPES)}")
     bounds = []
@@ -103,7 +102,7 @@ def fitting_rows(document: Document, catalogue: Catalogue, envelope: Envelope,
     outside = _smaller(given_outside, envelope.max_outside_diameter)
     width = _smaller(given_width, envelope.max_width)
     given_type = bearing.get("type")
-    types = tuple(TYPE_ALIASES.get(name, name) for name in (
+    types = tuple(type_name(name) for name in (
         envelope.types or ((given_type,) if isinstance(given_type, str) else ())))
     # (words, the spec's field or the option that set the bound, which rows it keeps)
     steps: list[tuple[str, str, Any]] = [
@@ -111,7 +110,7 @@ def fitting_rows(document: Document, catalogue: Catalogue, envelope: Envelope,
          "--type" if envelope.types else f"{prefix}type",
          lambda row: not types or row.type in types),
         ("that a drive's shaft can take (no thrust bearings)" if position else "", "",
-         lambda row: not position or row.type not in THRUST_TYPES),
+         lambda row: not position or not traits(row.type).thrust),
         (f"of the series {', '.join(envelope.series)}" if envelope.series else "",
          "--series", lambda row: not envelope.series or _in_series(row, envelope.series)),
         (f"with the bore {_shown(bore)}",

@@ -268,7 +268,7 @@ KINDS: dict[str, Kind] = {
              governing=("bending_safety_margin", "contact_safety_margin", "apex_mismatch",
                         "slip_margin"),
              limits={"apex_mismatch": "max_apex_mismatch"}, judged=PAIR),
-        *(Kind(name, summary, "bearingcalc.models.ball_bearing:BallBearingSpec",
+        *(Kind(name, summary, "bearingcalc.models.rolling_bearing:RollingBearingSpec",
                "bearingcalc.core.rolling_bearing",
                margins=("life_margin", "static_safety_margin", "contact_pressure_margin",
                         "spin_to_roll_margin"),

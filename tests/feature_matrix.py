@@ -3,9 +3,9 @@
 of the registry that take bearings, so that a new type, arrangement or bearing kind
 joins the matrix by itself (``tests/test_feature_matrix.py`` runs it).
 
-A case's values come from what the type tables say of its type: a ball or roller
-bearing (``ROLLER_TYPES``), radial or thrust (``THRUST_TYPES``), and the contact angle
-the type takes by default, else a usual one for its family.
+A case's values come from what the type table (``bearingcalc.core.bearing_types``) says
+of its type: a ball or roller bearing, radial or thrust, and the contact angle the type
+takes by default, else a usual one for its family.
 """
 
 from __future__ import annotations
@@ -20,15 +20,10 @@ from typing import Any, get_args
 
 import yaml
 
+from bearingcalc.core.bearing_types import traits
 from bearingcalc.kinds import KINDS
-from bearingcalc.models.ball_bearing import (
-    DEFAULT_CONTACT_ANGLE,
-    Arrangement,
-    BearingFields,
-    BearingType,
-)
-from bearingcalc.models.bevel_drive import THRUST_TYPES, ShaftArrangement
-from bearingcalc.models.roller_bearing_rules import ROLLER_TYPES
+from bearingcalc.models.bevel_drive import ShaftArrangement
+from bearingcalc.models.rolling_bearing import Arrangement, BearingFields, BearingType
 
 ROOT = Path(__file__).resolve().parent.parent
 CATALOGUE = ROOT / "specs" / "catalogues" / "example.csv"
@@ -54,8 +49,8 @@ CATALOGUE_FACTORS = {"self-aligning-ball": {"e": 0.27, "y1": 2.3, "y2": 3.6, "y0
 
 def family(bearing_type: str) -> tuple[str, str]:
     """(ball or roller, radial or thrust), from the type tables."""
-    return ("roller" if bearing_type in ROLLER_TYPES else "ball",
-            "thrust" if bearing_type in THRUST_TYPES else "radial")
+    own = traits(bearing_type)
+    return own.family, "thrust" if own.thrust else "radial"
 
 
 def catalogue_rows() -> dict[str, dict[str, str]]:
@@ -75,7 +70,7 @@ def bearing_fields(bearing_type: str, arrangement: str, source: str) -> dict[str
     fields: dict[str, Any] = {"type": bearing_type}
     if arrangement != "single":
         fields["arrangement"] = arrangement
-    if bearing_type not in DEFAULT_CONTACT_ANGLE:
+    if traits(bearing_type).contact_angle is None:
         fields["contact_angle"] = f"{USUAL_ANGLE[rolling, direction]:g} deg"
     if source == "catalogue":
         row = catalogue_rows().get(bearing_type)

@@ -22,8 +22,8 @@ from bearingcalc.core.roller_ratings import THRUST_FC
 from bearingcalc.errors import SpecError
 from bearingcalc.evaluation import evaluate_documents
 from bearingcalc.kinds import OUT_OF_RANGE_REASON
-from bearingcalc.models.ball_bearing import BallBearingSpec, BearingBin
 from bearingcalc.models.base import field_parser, nested_model
+from bearingcalc.models.rolling_bearing import BearingBin, RollingBearingSpec
 from bearingcalc.models.yaml_loader import load_documents
 
 #: The lines that name no field: the overflow guard's, an internal error's, and a NaN's.
@@ -64,11 +64,11 @@ _FACTORS = {"self-aligning-ball": {"e": 0.3, "y1": 2.1, "y2": 3.3, "y0": 2.2}}
 
 
 #: The spec's fields that a bin may set (its own, or the lubrication's).
-_BIN_SETS = {path.split(".")[0] for path in BallBearingSpec.BIN_FIELDS.values()}
+_BIN_SETS = {path.split(".")[0] for path in RollingBearingSpec.BIN_FIELDS.values()}
 
 
 def bearing_types() -> tuple[str, ...]:
-    return typing.get_args(BallBearingSpec.model_fields["type"].annotation)
+    return typing.get_args(RollingBearingSpec.model_fields["type"].annotation)
 
 
 def base_specs() -> Iterator[tuple[str, dict[str, Any]]]:
@@ -135,7 +135,7 @@ def _set(spec: dict[str, Any], path: str, value: Any) -> dict[str, Any]:
 def fuzzed() -> Iterator[tuple[str, dict[str, Any]]]:
     """Every base spec with each field, and each field of its duty cycle's bins, at each
     edge value; and the bins' time shares at their edges."""
-    spec_fields = list(_numeric_fields(BallBearingSpec))
+    spec_fields = list(_numeric_fields(RollingBearingSpec))
     bin_fields = [(name, values) for name, values in _numeric_fields(BearingBin)]
     for label, spec in base_specs():
         cycle = "duty_cycle" in spec

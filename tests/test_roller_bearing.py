@@ -12,6 +12,7 @@ import pytest
 from bearingcalc.core import arrangements, iso281
 from bearingcalc.core import roller_bearing_contacts as rbc
 from bearingcalc.core import roller_ratings as rr
+from bearingcalc.core.bearing_types import names_where
 from tests.conftest import solve_json
 
 DEG = math.pi / 180.0
@@ -89,7 +90,7 @@ def test_table_7_is_smooth_concave_with_one_maximum():
 @pytest.mark.parametrize(("kind", "dwe", "alpha", "finite"), [
     *[("cylindrical-roller", dwe, 0.0, ok) for dwe, ok in ((0.5, False), (1.0, True),
                                                           (30.0, True), (31.0, False))],
-    *[(kind, dwe, alpha, ok) for kind in rr.THRUST_ROLLER_TYPES
+    *[(kind, dwe, alpha, ok) for kind in names_where(family="roller", thrust=True)
       for dwe, alpha, ok in ((10.0, 50.0, True), (10.0, 90.0, True), (31.0, 90.0, False),
                              (0.5, 90.0, False), (45.0, 50.0, False))]])
 def test_fc_is_nan_outside_tables_7_and_10(kind, dwe, alpha, finite):

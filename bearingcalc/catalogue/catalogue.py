@@ -16,6 +16,7 @@ from bearingcalc.catalogue.columns import COLUMNS, NUMERIC
 from bearingcalc.catalogue.designation import Designation, normal_form, parse_designation
 from bearingcalc.catalogue.iso import iso_series, iso_table
 from bearingcalc.catalogue.reader import RawCatalogue, read_csv
+from bearingcalc.core.bearing_types import TABLE, traits
 from bearingcalc.errors import SpecError
 from bearingcalc.units import DIMENSIONLESS, MAX_MAGNITUDE, to_display, unit_scale
 
@@ -24,7 +25,7 @@ from bearingcalc.units import DIMENSIONLESS, MAX_MAGNITUDE, to_display, unit_sca
 DIMENSION_TOLERANCE = 1e-5
 ISO_CHECKED = ("bore_diameter", "outside_diameter", "width")
 #: The type whose outer ring is a cup with a chamfer of its own (``cup_r_min``).
-CUPPED_TYPE = "tapered-roller"
+CUPPED_TYPE = next(entry.name for entry in TABLE if entry.cupped)
 
 
 class CatalogueRow:
@@ -236,7 +237,7 @@ def _numbers(raw: RawCatalogue) -> dict[str, NDArray]:
 def _check_cup(row: CatalogueRow, path: str) -> None:
     """A cup chamfer belongs to a tapered roller bearing (whose ``r_min`` is the cone's);
     on any other type it is a misplaced value. Raises SpecError."""
-    if "cup_r_min" in row.values and row.type != CUPPED_TYPE:
+    if "cup_r_min" in row.values and not traits(row.type).cupped:
         raise SpecError(f"{row.label} is {row.type}, which has no cup: cup_r_min is the cup's "
                         f"chamfer of a {CUPPED_TYPE} bearing; leave it empty",
                         source=path, line=row.line, field="cup_r_min")

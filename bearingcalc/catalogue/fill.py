@@ -25,26 +25,13 @@ from bearingcalc.catalogue.catalogue import (
     normal_designation,
 )
 from bearingcalc.catalogue.columns import COLUMNS
-from bearingcalc.core.roller_ratings import RADIAL_ROLLER_TYPES, THRUST_ROLLER_TYPES
+from bearingcalc.core.bearing_types import traits, type_name
 from bearingcalc.errors import SpecError
 from bearingcalc.number_grammar import UNSIGNED_DECIMAL
 from bearingcalc.units import DIMENSIONLESS, UnitError, parse_quantity
 
 #: The environment variable that names a default catalogue.
 CATALOGUE_VARIABLE = "BEARINGCALC_CATALOGUE"
-#: Roller bearings.
-ROLLER_TYPES = RADIAL_ROLLER_TYPES + THRUST_ROLLER_TYPES
-#: Types whose catalogue e, Y and Y0 are their load factors: the roller bearings and the
-#: self-aligning ball bearing (the other ball bearings' come from ISO 281's and ISO 76's
-#: tables).
-FACTOR_TYPES = (*ROLLER_TYPES, "self-aligning-ball")
-#: Roller types of two rows by their form (ISO 281 rates them as double row); a row of
-#: another roller type that gives y1 (Y for Fa/Fr <= e) is of a double-row bearing too.
-DOUBLE_ROW_TYPES = ("spherical-roller",)
-#: Earlier names of types, as specs may still write them.
-TYPE_ALIASES = {"thrust": "thrust-ball"}
-#: Radial roller types whose contact angle follows from e = 1.5·tanα (ISO 281 Table 8).
-ANGLED_ROLLER_TYPES = ("tapered-roller", "spherical-roller")
 #: Load-factor columns -> the field of a bearing's ``load_factors``: single row, double.
 FACTOR_FIELDS = {"e": ("e", "e"), "y1": (None, "y1"), "y2": ("y", "y2"), "y0": ("y0", "y0")}
 #: ``catalogue`` as a field's whole value, or before a tolerance (``catalogue ± 5 %``):
@@ -199,13 +186,14 @@ def row_fields(row: CatalogueRow, arrangement: str = "single", rows: int | None 
     values = row.values
     fields = {_DIRECT[name]: (name, value) for name, value in values.items()
               if name in _DIRECT}
-    if row.type not in FACTOR_TYPES or "e" not in values:
+    kind = traits(row.type)
+    if not kind.catalogue_factors or "e" not in values:
         return fields
-    if "contact_angle" not in fields and row.type in ANGLED_ROLLER_TYPES:
+    if "contact_angle" not in fields and kind.inclined:
         fields["contact_angle"] = ("e", math.atan(values["e"] / 1.5))
     if arrangement in PAIRS:
         return fields
-    double = row.type == "self-aligning-ball" or (
+    double = (kind.family == "ball" and kind.double_row_form) or (
         rows if rows is not None else row_count(row)) == 2
     for column, targets in FACTOR_FIELDS.items():
         if column in values and targets[double] is not None:
@@ -216,7 +204,10 @@ def row_fields(row: CatalogueRow, arrangement: str = "single", rows: int | None 
 def row_count(row: CatalogueRow) -> int:
     """The rows of rollers of a row's bearing: 2 for a spherical roller bearing, or where
     the row gives y1 (a double row's Y for Fa/Fr <= e), else 1."""
-    double = row.type in DOUBLE_ROW_TYPES or (row.type in ROLLER_TYPES and "y1" in row.values)
+    kind = traits(row.type)
+    # of two rows by its form (ISO 281 rates it as double row), or a roller bearing whose
+    # row gives y1 (Y for Fa/Fr <= e), a double row's
+    double = kind.family == "roller" and (kind.double_row_form or "y1" in row.values)
     return 2 if double else 1
 
 
@@ -233,7 +224,7 @@ def written_fields(row: CatalogueRow, arrangement: str = "single", rows: int | N
 def _fill_bearing(bearing: dict[str, Any], row: CatalogueRow, prefix: str, use: CatalogueUse,
                   error: Any, path: str) -> None:
     given_type = bearing.get("type")
-    if given_type is not None and TYPE_ALIASES.get(given_type, given_type) != row.type:
+    if given_type is not None and type_name(given_type) != row.type:
         raise error(f"the catalogue's {row.label} is {row.type}, not {given_type}: leave type "
                     "out, or choose another designation", f"{prefix}type")
     bearing["type"] = row.type
@@ -254,7 +245,7 @@ def _fill_bearing(bearing: dict[str, Any], row: CatalogueRow, prefix: str, use: 
         if bearing.get(target) is None:
             use.filled[f"{prefix}{target}"] = source
         _put(bearing, target, written, row, None if column == "e" else column, prefix, use)
-    if arrangement in PAIRS and "e" in row.values and row.type in ROLLER_TYPES and (
+    if arrangement in PAIRS and "e" in row.values and traits(row.type).family == "roller" and (
             not factors_given):
         use.notes.append(f"{prefix or 'the bearing'}: a pair's load factors are ISO 281's "
                          f"for its contact angle, not {row.label}'s own e and Y (a single "

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from bearingcalc.catalogue.columns import COLUMNS, REQUIRED, Column
-from bearingcalc.core.rolling_bearing import TYPES
+from bearingcalc.core.bearing_types import TYPE_NAMES
 from bearingcalc.errors import SpecError
 from bearingcalc.models.spec_files import refuse_wide_text
 from bearingcalc.number_grammar import NUMBER
@@ -30,9 +30,9 @@ MAX_FILE_BYTES = 32 * 1024 * 1024
 MAX_ROWS = 200_000
 MAX_CELL_CHARS = 1_000
 MAX_COLUMNS = 64
-#: The bearing types a catalogue row may have: a rolling bearing's, the thrust ball
-#: bearing by its spec name ``thrust-ball`` (the solvers' ``thrust``).
-ROW_TYPES = tuple("thrust-ball" if name == "thrust" else name for name in TYPES)
+#: The bearing types a catalogue row may have, by their own names (``thrust-ball``, not
+#: the spec's other spelling ``thrust``).
+ROW_TYPES = TYPE_NAMES
 
 _HEADER_CELL = re.compile(r"^\s*(?P<name>[A-Za-z_][A-Za-z0-9_]*)\s*(?:\[(?P<unit>[^\[\]]*)\])?\s*$")
 _PLAIN_NUMBER = re.compile(NUMBER)

@@ -25,6 +25,7 @@ from bearingcalc.core.arrangements import (
 from bearingcalc.core.ball_bearing_contacts import ball_contacts
 from bearingcalc.core.ball_bearing_kinematics import ball_kinematics
 from bearingcalc.core.bearing_life import operating_point, rating_life
+from bearingcalc.core.bearing_types import LoadRule, traits
 from bearingcalc.core.common import DerivedTest, Family, balls_fit, packed
 from bearingcalc.core.iso76 import static_equivalent_load, static_load_rating, static_safety_factor
 from bearingcalc.core.iso281 import dynamic_load_rating, equivalent_dynamic_load
@@ -33,9 +34,6 @@ from bearingcalc.core.solver import Solution, Solver
 #: The rolling elements of every bearing this solver takes.
 FAMILY: Family = "ball"
 
-#: Bearing types, as the spec names them, and their codes in solver inputs.
-TYPES = ("deep-groove", "angular-contact", "self-aligning-ball", "thrust")
-SELF_ALIGNING = "self-aligning-ball"
 #: ISO 281:2007 Table 3, self-aligning ball bearings: X for Fa/Fr > e.
 SELF_ALIGNING_X = 0.65
 
@@ -173,13 +171,13 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
              wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results, warning flags and status codes from SI inputs.
 
-    ``inputs`` (see :meth:`bearingcalc.models.ball_bearing.BallBearingSpec.solver_inputs`)
+    ``inputs`` (see :meth:`bearingcalc.models.rolling_bearing.RollingBearingSpec.solver_inputs`)
     may leave optional groups out (None): ratings given or geometry, lubrication,
     load factors, limits. Which results exist depends only on which inputs are
     given, so specs stacked into one call share their result keys.
     """
     bearing_type = str(inputs["bearing_type"])
-    thrust = bearing_type == "thrust"
+    thrust = traits(bearing_type).thrust
     z, dw, dpw = (inputs.get(k) for k in ("ball_count", "ball_diameter", "pitch_diameter"))
     has_geometry = z is not None and dw is not None and dpw is not None
     alpha, fr, fa, speed = operating_point(inputs)
@@ -197,7 +195,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
     c0 = _given_or(inputs.get("static_load_rating"), c0_iso)
     f0 = _given_or(inputs.get("static_factor"), f0_iso)
     arrangement = str(inputs.get("arrangement") or "single")
-    double_row = arrangement in DOUBLE_ROW_PAIRS or bearing_type == SELF_ALIGNING
+    double_row = arrangement in DOUBLE_ROW_PAIRS or traits(bearing_type).double_row_form
     c_used, c0_used = pair_ratings_used(arrangement, c, c0, FAMILY, out)
     if double_row:
         p = _double_row_load(inputs, bearing_type, alpha, fr, fa, out, bad_checks)
@@ -264,7 +262,7 @@ def _equivalent_dynamic_load(inputs: Mapping[str, ArrayLike | str | None], beari
                                          static_load_rating=c0, load_factors=given,
                                          family=FAMILY)
     p = equivalent.load
-    if bearing_type == "thrust":
+    if traits(bearing_type).thrust:
         out["radial_factor"], out["axial_factor"] = np.zeros_like(p), np.ones_like(p)
         return p
     if equivalent.ratio_below_table is not None:
@@ -285,7 +283,7 @@ def _static(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str, alp
     if double_row:
         y0 = inputs.get("load_y0")
         if y0 is None:
-            y0 = 0.0 if bearing_type == SELF_ALIGNING else double_row_ball_factors(alpha).y0
+            y0 = 0.0 if _self_aligning(bearing_type) else double_row_ball_factors(alpha).y0
         p0 = fr + np.asarray(y0, dtype=float) * fa
     else:
         p0 = static_equivalent_load(fr, fa, bearing_type, alpha,
@@ -310,11 +308,12 @@ def _double_row_load(inputs: Mapping[str, ArrayLike | str | None], bearing_type:
     bearing has X2 = 0.65 and takes its Y from the catalogue (or none: a radial load)."""
     table = double_row_ball_factors(alpha)
     given = inputs.get("load_e") is not None
-    if not given and bearing_type == SELF_ALIGNING:
+    self_aligning = _self_aligning(bearing_type)
+    if not given and self_aligning:
         table = table._replace(y_below=0.0, y_above=0.0, e=np.inf + 0.0 * alpha)
     e = np.asarray(inputs["load_e"], dtype=float) if given else table.e
     y_below = np.asarray(inputs["load_y1"], dtype=float) if given else table.y_below
-    x_default = SELF_ALIGNING_X if bearing_type == SELF_ALIGNING else table.x_above
+    x_default = SELF_ALIGNING_X if self_aligning else table.x_above
     x_above = (np.asarray(inputs["load_x"], dtype=float)
                if inputs.get("load_x") is not None else x_default)
     y_above = np.asarray(inputs["load_y2"], dtype=float) if given else table.y_above
@@ -325,9 +324,14 @@ def _double_row_load(inputs: Mapping[str, ArrayLike | str | None], bearing_type:
     p = x * fr + y * fa
     bad_checks.append((12, ~(p > 0) & ((fr > 0) | (fa > 0))))
     out.update(radial_factor=x, axial_factor=y)
-    if given or bearing_type != SELF_ALIGNING:
+    if given or not self_aligning:
         out["axial_ratio_limit"] = e + 0.0 * p
     return p
+
+
+def _self_aligning(bearing_type: str) -> bool:
+    """A self-aligning ball bearing: its P is a double row's, X = 0.65 above e."""
+    return traits(bearing_type).load_rule is LoadRule.SELF_ALIGNING
 
 
 def _given_or(given: ArrayLike | None, computed: NDArray | None) -> NDArray | None:

@@ -13,20 +13,15 @@ bins by their own kinds' rules. Inputs are SI floats or broadcasting arrays.
 from __future__ import annotations
 
 from collections.abc import Collection, Mapping
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core import bevel_gears, rolling_bearing
-from bearingcalc.core.bearing_life import (
-    ROLLER_WEIBULL_SLOPE,
-    WEIBULL_SLOPE,
-    life_margin,
-    system_life,
-)
+from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.common import broadcast_all, first_failure
+from bearingcalc.core.drive_bearings import BEARING_RESULTS, MountedBearing, assemble
 from bearingcalc.core.duty_cycle import (
     BIN_MEANING,
     at_bin,
@@ -40,7 +35,6 @@ from bearingcalc.core.duty_cycle_gears import (
     gear_pair_cycle,
     normalised,
 )
-from bearingcalc.core.roller_bearing import TYPES as ROLLER_TYPES
 from bearingcalc.core.shaft_statics import (  # noqa: F401  (the drive's statics, re-exported)
     ARRANGEMENTS,
     mean_pitch_point,
@@ -54,18 +48,6 @@ from bearingcalc.core.solver import Along, AxisResults, DutyCycle, Members, Solu
 #: The load cases of an adjusted pair, as the table shows them.
 LOAD_CASES = {1.0: "1a", 2.0: "1b", 3.0: "1c", 4.0: "2a", 5.0: "2b", 6.0: "2c"}
 SHAFTS = ("pinion", "gear")
-BEARING_RESULTS: dict[str, tuple[str, str]] = {
-    "radial_load": ("N", "radial load from the shaft's statics"),
-    "axial_load": ("N", "axial load (a locating bearing takes the gear's whole thrust; an "
-                        "adjusted pair shares it by the load cases)"),
-    "induced_axial_load": ("N", "R·Fr, the axial force the radial load induces in an "
-                                "adjusted bearing"),
-    "load_case": ("1", "the adjusted pair's load case, 1 to 6 (1a to 2c)"),
-    "equivalent_dynamic_load": ("N", "P (ISO 281)"),
-    "basic_rating_life": ("s", "L10 in time"),
-    "modified_rating_life": ("s", "Lnm in time"),
-    "static_safety_factor": ("1", "s0 = C0/P0"),
-}
 
 
 #: A shaft's statics take this many bearings (more is statically indeterminate).
@@ -118,9 +100,9 @@ WARNINGS: dict[str, str] = {
        "that runs both ways needs a locating bearing that carries both)"
        for name in _bearing_names() for way in ("away_from", "toward")},
 }
-#: Bearing types that carry thrust one way only in a single row, and the arrangements
-#: in which they still do (a back-to-back or face-to-face pair carries it both ways).
-ONE_WAY_TYPES = ("angular-contact", "tapered-roller")
+#: The arrangements in which a type that carries thrust one way only in a single row
+#: (its trait ``one_way``) still does (a back-to-back or face-to-face pair carries it
+#: both ways).
 ONE_WAY_ARRANGEMENTS = ("single", "tandem")
 
 #: The drive's own status codes: the pair's (1-8), then a shaft's coinciding bearings,
@@ -145,24 +127,6 @@ BEARINGS = Members(rolling_bearing.SOLVER,
                    {"lubrication": "lubrication", "speed": "input_speed",
                     "radial_load": "torque", "axial_load": "torque"})
 
-
-
-@dataclass(frozen=True)
-class MountedBearing:
-    """One bearing on its shaft, solved: its row along the member axis, its name in the
-    spec, the shaft's heading, the loads from the statics [N], and its own solution as
-    a rolling bearing (per bin, in a duty cycle)."""
-
-    row: str
-    member: str
-    heading: str
-    inputs: Mapping[str, Any]
-    loads: dict[str, NDArray]
-    solved: Solution
-
-    @property
-    def roller(self) -> bool:
-        return self.inputs["bearing_type"] in ROLLER_TYPES
 
 
 def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -> Solution:
@@ -195,6 +159,7 @@ def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -
     results, along, weakest = assemble(pair.results, gear_speed, mounted,
                                        inputs.get("min_rating_life"),
                                        inputs["min_static_safety"])
+    results = {key: results[key] for key in RESULTS if key in results}
     warnings.update(weakest)
     shape = np.broadcast_shapes(np.shape(pair.status), *(np.shape(v) for v in results.values()),
                                 *(np.shape(c) for _, c in checks))
@@ -256,68 +221,13 @@ def _shaft(inputs: Mapping[str, Any], pair: Solution, shaft: str, gear: str,
 def _one_way(row: str, bearing: Mapping[str, Any], axial_force: NDArray) -> dict[str, NDArray]:
     """Where a locating bearing that carries thrust one way only takes the gear's thrust
     the other way (``rows``, like every number, may vary along bins or a study)."""
-    if (bearing.get("locating") != "locating" or bearing["bearing_type"] not in ONE_WAY_TYPES
+    if (bearing.get("locating") != "locating" or not traits(bearing["bearing_type"]).one_way
             or bearing.get("arrangement", "single") not in ONE_WAY_ARRANGEMENTS):
         return {}
     single_row = np.asarray(1.0 if bearing.get("rows") is None else bearing["rows"],
                             dtype=float) == 1
     return {f"one_way_{row}_away_from": single_row & (axial_force >= 0),
             f"one_way_{row}_toward": single_row & (axial_force < 0)}
-
-
-#: The bearings' results taken from each one's own solution as a rolling bearing.
-OWN_RESULTS = ("equivalent_dynamic_load", "basic_rating_life", "modified_rating_life",
-               "static_safety_factor")
-
-
-def assemble(pair: Mapping[str, NDArray], gear_speed: NDArray,
-             mounted: list[MountedBearing], min_rating_life: ArrayLike | None,
-             min_static_safety: ArrayLike
-             ) -> tuple[dict[str, NDArray], Along, dict[str, NDArray]]:
-    """The drive's results from the pair's and the bearings' (of one operating point,
-    or of a whole duty cycle): the results of one value per design, the bearings'
-    along the member axis, and where each bearing is the weakest.
-
-    L_sys = (Σ Lᵢ^(−e))^(−1/e) (:func:`system_life`); life_margin = L_sys,nm/L_req − 1;
-    static_safety_margin = min s0ᵢ − s0_req.
-    """
-    out: dict[str, NDArray] = {**pair, "gear_speed": gear_speed}
-    slope = ROLLER_WEIBULL_SLOPE if any(bearing.roller for bearing in mounted) \
-        else WEIBULL_SLOPE
-    modified = [bearing.solved.results["modified_rating_life"] for bearing in mounted]
-    out["system_basic_rating_life"] = system_life(
-        [bearing.solved.results["basic_rating_life"] for bearing in mounted], slope)
-    out["system_modified_rating_life"] = system_life(modified, slope)
-    if min_rating_life is not None:
-        out["life_margin"] = life_margin(out["system_modified_rating_life"], min_rating_life)
-    safety = [bearing.solved.results["static_safety_factor"] for bearing in mounted
-              if "static_safety_factor" in bearing.solved.results]
-    if safety:
-        out["static_safety_margin"] = np.min(np.stack(np.broadcast_arrays(*safety)), axis=0) \
-            - np.asarray(min_static_safety, dtype=float)
-    weakest = np.argmin(np.stack(np.broadcast_arrays(*modified)), axis=0)
-    flags = {f"weakest_{bearing.row}": weakest == i for i, bearing in enumerate(mounted)}
-    return {key: out[key] for key in RESULTS if key in out}, _member_rows(mounted), flags
-
-
-def _member_rows(mounted: list[MountedBearing]) -> Along:
-    """The bearings' results along the member axis, a row per bearing (a column that a
-    bearing lacks, as an adjusted pair's load case on a located shaft, is absent in
-    that row)."""
-    columns: dict[str, list[ArrayLike | None]] = {}
-    for i, bearing in enumerate(mounted):
-        own = {key: bearing.solved.results[key] for key in OWN_RESULTS
-               if key in bearing.solved.results}
-        for key, values in {**bearing.loads, **own}.items():
-            columns.setdefault(key, [None] * len(mounted))[i] = values
-    columns = {key: columns[key] for key in BEARING_RESULTS if key in columns}
-    present = {key: tuple(value is not None for value in values)
-               for key, values in columns.items()}
-    values = {key: np.stack(np.broadcast_arrays(*(np.nan if value is None else value
-                                                  for value in rows)))
-              for key, rows in columns.items()}
-    return Along(tuple(bearing.row for bearing in mounted), values,
-                 tuple(bearing.heading for bearing in mounted), present)
 
 
 def drive_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
@@ -347,6 +257,7 @@ def drive_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
         pair_results, at_bin(per_bin.results["gear_speed"], governing), mounted,
         None if min_life is None else np.asarray(min_life, dtype=float)[0],
         first["min_static_safety"])
+    out = {key: out[key] for key in RESULTS if key in out}
     out.update({key: pair.results[key] for key in ("bending_damage", "contact_damage")
                 if key in pair.results})
     out["mean_speed"] = _mean_speed(inputs)

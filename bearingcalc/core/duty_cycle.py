@@ -14,11 +14,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core.bearing_life import life_margin
+from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.iso281 import LIFE_EXPONENT
-from bearingcalc.core.roller_ratings import RADIAL_ROLLER_TYPES, THRUST_ROLLER_TYPES
 from bearingcalc.core.solver import BIN_PREFIX, Along, AxisResults, Solution
-
-ROLLER_TYPES = RADIAL_ROLLER_TYPES + THRUST_ROLLER_TYPES
 
 #: Per-bin results: column -> (SI unit, meaning).
 BEARING_COLUMNS: dict[str, tuple[str, str]] = {
@@ -140,8 +138,7 @@ def rolling_bearing_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solut
     governing = np.argmax(damage, axis=0)
     modified = miner_life(shares, lives, governing)
     basic = miner_life(shares, results["basic_rating_life_revolutions"], governing)
-    exponent = LIFE_EXPONENT["roller" if str(inputs["bearing_type"]) in ROLLER_TYPES
-                             else "ball"]
+    exponent = LIFE_EXPONENT[traits(str(inputs["bearing_type"])).family]
     p_mean = mean_load(shares, results["equivalent_dynamic_load"], exponent, governing)
     revolutions_per_second = mean_speed / (2.0 * np.pi)
     out: dict[str, NDArray] = {}

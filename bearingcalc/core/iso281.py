@@ -20,6 +20,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from bearingcalc.core.bearing_types import LoadRule, traits
 from bearingcalc.core.common import (
     MM,
     NEWTON,
@@ -153,7 +154,8 @@ def equivalent_dynamic_load(radial_load: ArrayLike, axial_load: ArrayLike,
     Parameters
     ----------
     radial_load, axial_load : Fr, Fa. [N]
-    bearing_type : "deep-groove", "angular-contact" or "thrust".
+    bearing_type : a ball bearing's type (:mod:`bearingcalc.core.bearing_types`): its
+        load rule, Table 3's in f0·Fa/C0 or in α, or P = Fa.
     contact_angle : α. [rad]
     static_factor, static_load_rating : f0 [1] and C0 [N], for deep-groove bearings with an
         axial load.
@@ -171,12 +173,13 @@ def equivalent_dynamic_load(radial_load: ArrayLike, axial_load: ArrayLike,
     ball_family_only(family, "ISO 281's equivalent dynamic load P")
     fr = np.asarray(radial_load, dtype=float)
     fa = np.asarray(axial_load, dtype=float)
-    if bearing_type == "thrust":
+    rule = traits(bearing_type).load_rule
+    if rule is LoadRule.AXIAL_ONLY:
         return EquivalentLoad(fa, None, None, None, None, None, None)
     below = above = None
     if load_factors is not None:
         x, y, e = (np.asarray(factor, dtype=float) for factor in load_factors)
-    elif bearing_type == "angular-contact":
+    elif rule is LoadRule.ANGLE_TABLE:
         degrees = np.degrees(np.asarray(contact_angle, dtype=float))
         x, y, e = (table_lookup(degrees, ANGULAR_ALPHA_DEG, t)
                    for t in (ANGULAR_X, ANGULAR_Y, ANGULAR_E))

@@ -14,6 +14,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from bearingcalc.core.bearing_types import LoadRule, traits
 from bearingcalc.core.common import MM, NEWTON, Family, ball_family_only, table_lookup
 
 #: ISO 76:2006 Table 1: f0 of radial and angular-contact groove ball bearings against
@@ -83,7 +84,7 @@ def static_equivalent_load(radial_load: ArrayLike, axial_load: ArrayLike, bearin
     Parameters
     ----------
     radial_load, axial_load : Fr, Fa. [N]
-    bearing_type : "deep-groove", "angular-contact" or "thrust".
+    bearing_type : a ball bearing's type (:mod:`bearingcalc.core.bearing_types`).
     contact_angle : α. [rad]
     radial_factor, axial_factor : the catalogue's X0 and Y0 of an angular-contact bearing,
         which replace the standard's. [1]
@@ -98,9 +99,10 @@ def static_equivalent_load(radial_load: ArrayLike, axial_load: ArrayLike, bearin
     ball_family_only(family, "ISO 76's static equivalent load P0")
     fr = np.asarray(radial_load, dtype=float)
     fa = np.asarray(axial_load, dtype=float)
-    if bearing_type == "thrust":
+    rule = traits(bearing_type).load_rule
+    if rule is LoadRule.AXIAL_ONLY:
         return fa
-    if bearing_type == "angular-contact":
+    if rule is LoadRule.ANGLE_TABLE:
         y0 = (np.asarray(axial_factor, dtype=float) if axial_factor is not None
               else table_lookup(np.degrees(np.asarray(contact_angle, dtype=float)),
                                 ANGULAR_ALPHA_DEG, ANGULAR_Y0))

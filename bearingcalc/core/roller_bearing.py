@@ -19,6 +19,7 @@ from numpy.typing import ArrayLike, NDArray
 from bearingcalc.core import ball_bearing
 from bearingcalc.core.arrangements import DOUBLE_ROW_PAIRS, PAIRS, pair_ratings_used
 from bearingcalc.core.bearing_life import operating_point, rating_life
+from bearingcalc.core.bearing_types import LoadRule, traits
 from bearingcalc.core.common import DerivedTest, Family, balls_fit, packed
 from bearingcalc.core.iso76 import static_safety_factor
 from bearingcalc.core.roller_bearing_contacts import (
@@ -27,9 +28,6 @@ from bearingcalc.core.roller_bearing_contacts import (
     roller_kinematics,
 )
 from bearingcalc.core.roller_ratings import (
-    RADIAL_ROLLER_TYPES,
-    STRAIGHT_ROLLER_TYPES,
-    THRUST_ROLLER_TYPES,
     roller_dynamic_load_rating,
     roller_equivalent_dynamic_load,
     roller_static_equivalent_load,
@@ -38,7 +36,6 @@ from bearingcalc.core.roller_ratings import (
 from bearingcalc.core.solver import Solution, Solver
 
 FAMILY: Family = "roller"
-TYPES = RADIAL_ROLLER_TYPES + THRUST_ROLLER_TYPES
 
 _BALL = ball_bearing.RESULTS
 #: Result keys, their SI unit and meaning, in report order.
@@ -127,9 +124,9 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
 def evaluate(inputs: Mapping[str, ArrayLike | str | None],
              wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results, warning flags and status codes from SI inputs
-    (see :meth:`bearingcalc.models.ball_bearing.BallBearingSpec.solver_inputs`)."""
+    (see :meth:`bearingcalc.models.rolling_bearing.RollingBearingSpec.solver_inputs`)."""
     bearing_type = str(inputs["bearing_type"])
-    thrust = bearing_type in THRUST_ROLLER_TYPES
+    thrust = traits(bearing_type).thrust
     arrangement = str(inputs.get("arrangement") or "single")
     rows = np.asarray(1.0 if inputs.get("rows") is None else inputs["rows"], dtype=float)
     double_row = (rows > 1) | (arrangement in DOUBLE_ROW_PAIRS)
@@ -198,7 +195,7 @@ def _equivalent_dynamic_load(inputs: Mapping[str, ArrayLike | str | None], beari
     else:
         bad.append((12, ~(equivalent.load > 0) & ((fr > 0) | (fa > 0))))
     out.update(radial_factor=equivalent.x, axial_factor=equivalent.y)
-    if bearing_type not in STRAIGHT_ROLLER_TYPES:
+    if traits(bearing_type).load_rule is not LoadRule.RADIAL_ONLY:
         out["axial_ratio_limit"] = equivalent.e
     return equivalent.load
 
@@ -211,7 +208,7 @@ def _contacts(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str, t
     roller's ellipse on its length: refused past 2·Lwe, a warning past Lwe."""
     sets = rows * (2.0 if arrangement in PAIRS else 1.0)
     load = max_roller_load(fa if thrust else p0, inputs["roller_count"], sets, alpha, thrust)
-    spherical = bearing_type in ("spherical-roller", "thrust-spherical-roller")
+    spherical = traits(bearing_type).crowned
     contacts = roller_contacts(
         inputs["roller_diameter"], inputs["roller_length"], inputs["pitch_diameter"], alpha,
         thrust, load, inputs["elastic_modulus"], inputs["poisson_ratio"],

@@ -14,23 +14,13 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from bearingcalc.core.bearing_types import (
+    DRAWN_CUP_MATERIAL_FACTOR,
+    LoadRule,
+    RatingFormula,
+    traits,
+)
 from bearingcalc.core.common import MM, NEWTON, table_lookup
-
-RADIAL_ROLLER_TYPES = ("cylindrical-roller", "needle-roller", "tapered-roller",
-                       "spherical-roller")
-THRUST_ROLLER_TYPES = ("thrust-cylindrical-roller", "thrust-spherical-roller",
-                       "thrust-tapered-roller")
-#: Roller bearings whose line contact has no contact angle: ISO 281's P is Fr alone.
-STRAIGHT_ROLLER_TYPES = ("cylindrical-roller", "needle-roller")
-
-#: ISO 281:2007 Table 1: bm, the rating factor for contemporary, normally used material.
-MATERIAL_FACTOR = {
-    "cylindrical-roller": 1.1, "needle-roller": 1.1, "tapered-roller": 1.1,
-    "spherical-roller": 1.15, "thrust-cylindrical-roller": 1.0,
-    "thrust-tapered-roller": 1.1, "thrust-spherical-roller": 1.15,
-}
-#: ISO 281:2007 Table 1: bm of a drawn-cup needle roller bearing (a sheet-metal outer ring).
-DRAWN_CUP_MATERIAL_FACTOR = 1.0
 
 #: ISO 281:2007 Table 7: fc of radial roller bearings against γ = Dwe·cosα/Dpw, at every
 #: hundredth from 0.01 to 0.30 as the standard prints it (linear between rows).
@@ -93,7 +83,7 @@ def roller_dynamic_load_rating(roller_count: ArrayLike, roller_diameter: ArrayLi
     pitch_diameter : Dpw. [m]
     contact_angle : α. [rad]
     rows : i, the rows of rollers (of a thrust bearing: loaded in one direction). [1]
-    bearing_type : one of :data:`RADIAL_ROLLER_TYPES` or :data:`THRUST_ROLLER_TYPES`.
+    bearing_type : a roller bearing's type (:mod:`bearingcalc.core.bearing_types`).
     drawn_cup : a drawn-cup needle roller bearing, bm = 1.0 (Table 1). [bool]
 
     Returns
@@ -113,11 +103,12 @@ def roller_dynamic_load_rating(roller_count: ArrayLike, roller_diameter: ArrayLi
     lwe = np.asarray(roller_length, dtype=float) * MM
     dpw = np.asarray(pitch_diameter, dtype=float) * MM
     alpha = np.asarray(contact_angle, dtype=float)
-    bm = np.where(np.asarray(drawn_cup, dtype=bool) & (bearing_type == "needle-roller"),
-                  DRAWN_CUP_MATERIAL_FACTOR, MATERIAL_FACTOR[bearing_type])
+    kind = traits(bearing_type)
+    bm = np.where(np.asarray(drawn_cup, dtype=bool) & kind.drawn_cup,
+                  DRAWN_CUP_MATERIAL_FACTOR, kind.material_factor)
     cos_alpha = np.cos(alpha)
     common = z ** 0.75 * dwe ** (29.0 / 27.0)
-    if bearing_type in RADIAL_ROLLER_TYPES:
+    if kind.rating_formula is RatingFormula.RADIAL_ROLLER:
         fc = table_lookup(dwe * cos_alpha / dpw, RADIAL_FC_GAMMA, RADIAL_FC)
         rating = bm * fc * (np.asarray(rows, dtype=float) * lwe * cos_alpha) ** (7.0 / 9.0)
         return rating * common * NEWTON, fc
@@ -206,14 +197,14 @@ def roller_equivalent_dynamic_load(radial_load: ArrayLike, axial_load: ArrayLike
     fr = np.asarray(radial_load, dtype=float)
     fa = np.asarray(axial_load, dtype=float)
     alpha = np.asarray(contact_angle, dtype=float)
-    if bearing_type in STRAIGHT_ROLLER_TYPES:
+    if traits(bearing_type).load_rule is LoadRule.RADIAL_ONLY:
         ones = np.ones(np.broadcast_shapes(fr.shape, fa.shape))
         return RollerLoad(fr * ones, ones, 0.0 * ones, np.nan * ones, ones == 0)
     tan_alpha = np.tan(alpha)
     limit = E_PER_TAN_ALPHA * tan_alpha if e is None else np.asarray(e, dtype=float)
     with np.errstate(divide="ignore", invalid="ignore"):
         combined = (fa > 0) & ~(fa / fr <= limit)
-    if bearing_type in THRUST_ROLLER_TYPES:
+    if traits(bearing_type).thrust:
         right = np.isclose(alpha, np.pi / 2, rtol=0.0, atol=1e-12)
         x_applied = np.where(right, 0.0, tan_alpha)
         load = x_applied * fr + fa
@@ -313,10 +304,10 @@ def roller_static_equivalent_load(radial_load: ArrayLike, axial_load: ArrayLike,
     fr = np.asarray(radial_load, dtype=float)
     fa = np.asarray(axial_load, dtype=float)
     alpha = np.asarray(contact_angle, dtype=float)
-    if bearing_type in THRUST_ROLLER_TYPES:
+    if traits(bearing_type).thrust:
         right = np.isclose(alpha, np.pi / 2, rtol=0.0, atol=1e-12)
         return np.where(right, 0.0, 2.3 * np.tan(alpha)) * fr + fa
-    if bearing_type in STRAIGHT_ROLLER_TYPES:
+    if traits(bearing_type).load_rule is LoadRule.RADIAL_ONLY:
         return fr + 0.0 * fa
     cot_alpha = 1.0 / np.tan(alpha)
     double = np.asarray(double_row, dtype=bool)

@@ -12,15 +12,13 @@ from collections.abc import Collection, Mapping
 from numpy.typing import ArrayLike
 
 from bearingcalc.core import ball_bearing, roller_bearing
+from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.duty_cycle import (
     BEARING_BINS,
     BEARING_CYCLE_RESULTS,
     rolling_bearing_cycle,
 )
 from bearingcalc.core.solver import DutyCycle, Solution, Solver
-
-#: Every type of the kind, ball types first.
-TYPES = (*ball_bearing.TYPES, *roller_bearing.TYPES)
 
 
 def _union(first: Mapping, second: Mapping) -> dict:
@@ -58,7 +56,8 @@ WARNINGS = _union(ball_bearing.WARNINGS, roller_bearing.WARNINGS)
 def evaluate(inputs: Mapping[str, ArrayLike | str | None],
              wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: the family's solver for the bearing's type."""
-    family = roller_bearing if inputs["bearing_type"] in roller_bearing.TYPES else ball_bearing
+    family = (roller_bearing if traits(str(inputs["bearing_type"])).family == "roller"
+              else ball_bearing)
     return family.evaluate(inputs, wanted)
 
 

@@ -20,6 +20,7 @@ from bearingcalc.core.arrangements import (
     induced_axial_factor_tapered,
     supports_positive,
 )
+from bearingcalc.core.bearing_types import traits
 
 #: How a shaft's two bearings share its axial force.
 ARRANGEMENTS = ("locating-floating", "back-to-back", "face-to-face")
@@ -143,7 +144,7 @@ def induced_axial_factor(bearing: Mapping[str, Any]) -> NDArray:
     if bearing.get("induced_axial_factor") is not None:
         return np.asarray(bearing["induced_axial_factor"], dtype=float)
     alpha = np.asarray(bearing["contact_angle"], dtype=float)
-    if bearing["bearing_type"] == "tapered-roller":
+    if traits(bearing["bearing_type"]).family == "roller":  # a tapered roller bearing
         y = bearing.get("load_y")
         return induced_axial_factor_tapered(0.4 / np.tan(alpha) if y is None else y)
     return induced_axial_factor_ball(alpha)

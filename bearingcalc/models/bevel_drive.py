@@ -9,14 +9,8 @@ from typing import Any, ClassVar, Literal
 
 from pydantic import Field, model_validator
 
+from bearingcalc.core.bearing_types import traits
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.models.ball_bearing import (
-    BallBearingLimits,
-    BallBearingSpec,
-    BearingFields,
-    Reliability,
-    UnitFraction,
-)
 from bearingcalc.models.bevel_gears import BevelGearsLimits, BevelPair
 from bearingcalc.models.duty import (
     OIL_BIN_FIELDS,
@@ -34,18 +28,21 @@ from bearingcalc.models.quantities import (
     PositiveTime,
     Torque,
 )
+from bearingcalc.models.rolling_bearing import (
+    BallBearingLimits,
+    BearingFields,
+    Reliability,
+    RollingBearingSpec,
+    UnitFraction,
+)
 from bearingcalc.models.rules import own_problems, rule
 
 #: Keys of a ball-bearing spec that the drive sets for every bearing itself.
 _DRIVE_SETS = ("radial_load", "axial_load", "speed", "inner_speed", "outer_speed")
 SHAFTS = ("pinion", "gear")
-THRUST_TYPES = ("thrust", "thrust-ball", "thrust-cylindrical-roller", "thrust-spherical-roller",
-                "thrust-tapered-roller")
 
 
 ShaftArrangement = Literal["locating-floating", "back-to-back", "face-to-face"]
-#: Bearings that can be adjusted against each other.
-ADJUSTABLE = ("angular-contact", "tapered-roller")
 
 
 class DriveBearing(BearingFields):
@@ -171,7 +168,7 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
             else:
                 problems += self._adjusted(field, arrangement, bearings)
             for i, bearing in enumerate(bearings, 1):
-                if bearing.type in THRUST_TYPES:
+                if traits(bearing.type).thrust:
                     problems.append(SpecFieldError(
                         f"{field}.{i}.type", "a thrust bearing takes no radial load, and "
                         "the gear forces load every bearing of the shaft radially"))
@@ -214,11 +211,12 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
                 problems.append(SpecFieldError(
                     f"{where}.locating", f"not used in a {arrangement} arrangement: each "
                     "bearing carries the axial force in one direction; leave it out"))
-            if bearing.type not in ADJUSTABLE:
+            # one-way bearings are the ones adjusted against each other
+            if not traits(bearing.type).one_way:
                 problems.append(SpecFieldError(
                     f"{where}.type", f"a {arrangement} arrangement adjusts two single-row "
                     f"angular-contact ball or tapered-roller bearings, not {bearing.type}"))
-            elif (bearing.type == "angular-contact" and bearing.induced_axial_factor is None
+            elif (traits(bearing.type).family == "ball" and bearing.induced_axial_factor is None
                   and bearing.contact_angle is not None
                   and not math.radians(20) - 1e-12 <= bearing.contact_angle
                   <= math.radians(40) + 1e-12):
@@ -233,14 +231,14 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
         return self.pinion_arrangement if shaft == "pinion" else self.gear_arrangement
 
     @rule
-    def _bearings_as_ball_bearings(self) -> list[SpecFieldError]:
+    def _bearings_as_rolling_bearings(self) -> list[SpecFieldError]:
         """Everything ``kind: ball-bearing`` refuses of each bearing, with the drive's
         reliability, lubrication and contamination."""
         problems: list[SpecFieldError] = []
         for shaft, bearings in self.shafts():
             for i, bearing in enumerate(bearings, 1):
-                if bearing.type not in THRUST_TYPES:
-                    problems += self._as_ball_bearing(f"{shaft}_bearings.{i}",
+                if not traits(bearing.type).thrust:
+                    problems += self._as_rolling_bearing(f"{shaft}_bearings.{i}",
                                                       self._bearing_under_load(shaft, bearing))
         # A rule of the drive's shared fields (lubrication, contamination) fails for every
         # bearing alike: report it once.
@@ -279,8 +277,8 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
             out.append(("gear", self.gear_bearings))
         return out
 
-    def ball_bearing(self, bearing: DriveBearing, radial: Any = 1.0, axial: Any = 0.0,
-                     speed: Any = 1.0) -> BallBearingSpec:
+    def rolling_bearing(self, bearing: DriveBearing, radial: Any = 1.0, axial: Any = 0.0,
+                     speed: Any = 1.0) -> RollingBearingSpec:
         """The bearing as a ``kind: ball-bearing`` spec with these loads and speed: one
         definition of the rules and results for a bearing alone and in a drive. Its fields
         were validated by the drive's own (the same) field types."""
@@ -292,15 +290,15 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
                       # unvalidated, as the rest: a study may make the limit an array
                       limits=BallBearingLimits.model_construct(
                           min_static_safety=self.limits.min_static_safety))
-        return BallBearingSpec.model_construct(**fields)
+        return RollingBearingSpec.model_construct(**fields)
 
-    def _bearing_under_load(self, shaft: str, bearing: DriveBearing) -> BallBearingSpec:
+    def _bearing_under_load(self, shaft: str, bearing: DriveBearing) -> RollingBearingSpec:
         """The bearing as a ``kind: rolling-bearing`` spec under the kind of load it will
         carry: radial, and axial too where it locates or is adjusted against the other."""
         axial = bearing.locating or self.arrangement(shaft) != "locating-floating"
-        return self.ball_bearing(bearing, radial=1.0, axial=1.0 if axial else 0.0, speed=1.0)
+        return self.rolling_bearing(bearing, radial=1.0, axial=1.0 if axial else 0.0, speed=1.0)
 
-    def _as_ball_bearing(self, where: str, spec: BallBearingSpec) -> list[SpecFieldError]:
+    def _as_rolling_bearing(self, where: str, spec: RollingBearingSpec) -> list[SpecFieldError]:
         """Everything ``kind: rolling-bearing`` refuses of the bearing (``spec``, from
         :meth:`_bearing_under_load`), checked by that kind's own rules."""
         problems = []
@@ -333,7 +331,7 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
         return inputs
 
     def _bearing_inputs(self, bearing: DriveBearing) -> dict[str, Any]:
-        own = {key: value for key, value in self.ball_bearing(bearing).solver_inputs().items()
+        own = {key: value for key, value in self.rolling_bearing(bearing).solver_inputs().items()
                if key not in (*_DRIVE_SETS, "min_rating_life")}
         return {"position": bearing.position,
                 "locating": "locating" if bearing.locating else "floating",

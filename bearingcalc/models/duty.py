@@ -29,6 +29,20 @@ from bearingcalc.models.rules import whole_spec_problems, whole_spec_rule
 if TYPE_CHECKING:  # the results' layout only: made above the models
     from bearingcalc.result_keys import ResultTable
 
+
+class _NoBins:
+    """No table of bins: every column of it absent."""
+
+    @staticmethod
+    def column(column: str) -> list[None]:
+        return [None]
+
+
+_NO_BINS = _NoBins()
+#: The bins' shares of the damage a note names the worst bin by: the bearings', else the
+#: teeth's in bending.
+_DAMAGE_SHARES = (("damage_share", "damage"), ("bending_damage_share", "bending damage"))
+
 #: How far the time shares may add up from 100 %.
 SHARE_TOLERANCE = 0.001
 
@@ -169,11 +183,8 @@ class DutyCycleRules:
         (of the bearings', else of the teeth's in bending)."""
         if not self.duty_cycle or len(self.duty_cycle) < 2:
             return []
-        bins = next((table for table in tables if table.axis == "bin"), None)
-        for column, what in (("damage_share", "damage"),
-                             ("bending_damage_share", "bending damage")):
-            if bins is None or column not in bins.columns:
-                continue
+        bins = next((table for table in tables if table.axis == "bin"), _NO_BINS)
+        for column, what in _DAMAGE_SHARES:
             shares = [None if key is None else results.get(key) for key in bins.column(column)]
             if all(share is not None for share in shares):
                 k = 1 + max(range(len(shares)), key=lambda i: shares[i])  # type: ignore[arg-type, return-value]

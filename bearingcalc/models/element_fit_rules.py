@@ -1,7 +1,7 @@
 """Whether a rolling bearing's elements fit the bearing they are given for: on the pitch
 circle, in the rings' width, and a spherical roller's crown on its length; and what is
 merely unusual in them (``docs/physics.md`` §5). Mixed into
-:class:`bearingcalc.models.ball_bearing.BallBearingSpec`, so a drive's bearings take
+:class:`bearingcalc.models.rolling_bearing.RollingBearingSpec`, so a drive's bearings take
 them too.
 
 Each rule tests a necessary condition that no real bearing breaks, so a spec that breaks
@@ -11,17 +11,13 @@ one holds a slip (a length in the wrong unit, a field for another), not a design
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
 
 from bearingcalc.core import iso281, roller_ratings
 from bearingcalc.core.common import FIT_SLACK
-from bearingcalc.core.roller_ratings import THRUST_ROLLER_TYPES
 from bearingcalc.errors import SpecFieldError
+from bearingcalc.models.bearing_reads import ReadsBearing
 from bearingcalc.models.rules import rule
 
-#: Roller bearings whose rollers are inclined to the axis by α: at α = 0 they carry no
-#: axial load, and ISO 281's Y = 0.4·cotα has no bound.
-INCLINED_ROLLERS = ("tapered-roller", "spherical-roller")
 #: The smallest contact angle of the tapered and spherical roller bearings in makers'
 #: catalogues, about 5 deg (a spherical roller bearing's e = 1.5·tanα from 0.13 up):
 #: below it ISO 281's Y = 0.4·cotα passes 4.6.
@@ -31,29 +27,7 @@ SHALLOWEST_ANGLE = math.radians(5.0)
 LONG_ROLLER = 2.5
 
 
-class _ReadsElements:
-    if TYPE_CHECKING:  # the spec model's fields these rules read (see _ReadsBallBearing)
-        type: str
-        rows: int
-        rollers: bool
-        angle: float
-        contact_angle: float | None
-        ball_count: int | None
-        ball_diameter: float | None
-        roller_count: int | None
-        roller_diameter: float | None
-        roller_length: float | None
-        roller_profile_radius: float | None
-        raceway_radius: float | None
-        pitch_diameter: float | None
-        width: float | None
-        dynamic_load_rating: float | None
-        has_geometry: bool
-
-        def _envelope_mm(self) -> tuple[float, float] | None: ...
-
-
-class _ElementsInPlace(_ReadsElements):
+class _ElementsInPlace(ReadsBearing):
     """Balls and rollers that fit on their pitch circle, within the width and between
     the rings, in the proportions the rating tables cover."""
 
@@ -84,13 +58,13 @@ class _ElementsInPlace(_ReadsElements):
         rates the bearing: of ball bearings whenever their geometry is given, of radial
         roller bearings where C comes from it."""
         if self.rollers:
-            if self.type in THRUST_ROLLER_TYPES or self.dynamic_load_rating is not None:
+            if self.type_traits.thrust or self.dynamic_load_rating is not None:
                 return None
             diameter, field = self.roller_diameter, "roller_diameter"
             table, what = roller_ratings.RADIAL_FC_GAMMA, "Dwe·cosα/Dpw"
             which = "of radial roller bearings (Table 7)"
         else:
-            thrust = self.type in ("thrust", "thrust-ball")
+            thrust = self.type_traits.thrust
             diameter, field = self.ball_diameter, "ball_diameter"
             table = iso281.THRUST_FC_GAMMA if thrust else iso281.RADIAL_FC_GAMMA
             what = "Dw/Dpw" if thrust else "Dw·cosα/Dpw"
@@ -121,7 +95,7 @@ class _ElementsInPlace(_ReadsElements):
             return SpecFieldError("ball_diameter", f"{self.ball_diameter * 1e3:g} mm does not "
                                   f"fit the bearing's width {width * 1e3:g} mm: a ball lies "
                                   "within the rings' width", at="width")
-        if self.type in THRUST_ROLLER_TYPES:
+        if self.type_traits.thrust:
             if self.roller_diameter is None:
                 return None
             extent = self.roller_diameter * math.sin(self.angle)
@@ -152,7 +126,7 @@ class _ElementsInPlace(_ReadsElements):
         envelope = self._envelope_mm()
         diameter = self.roller_diameter if self.rollers else self.ball_diameter
         if envelope is None or diameter is None or self.pitch_diameter is None or (
-                self.type in THRUST_ROLLER_TYPES or self.type in ("thrust", "thrust-ball")):
+                self.type_traits.thrust):
             return None
         bore, outside = envelope
         pitch = self.pitch_diameter * 1e3
@@ -175,15 +149,14 @@ class _ElementsInPlace(_ReadsElements):
 
 
 class ElementFitRules(_ElementsInPlace):
-    """Balls and rollers that fit their bearing (their place: the base class; here the
-    rollers' own shape and angle); inclined rollers that are inclined."""
+    """Balls and rollers that fit their bearing; inclined rollers that are inclined."""
 
     @rule
     def _thrust_rollers_in_section(self) -> SpecFieldError | None:
         """A thrust roller's length lies across the washers: Lwe·sinα within the section
         (D − d)/2."""
         envelope = self._envelope_mm()
-        if self.type not in THRUST_ROLLER_TYPES or envelope is None or (
+        if not (self.rollers and self.type_traits.thrust) or envelope is None or (
                 self.roller_length is None):
             return None
         section = (envelope[1] - envelope[0]) / 2
@@ -217,20 +190,22 @@ class ElementFitRules(_ElementsInPlace):
 
     @rule
     def _inclined_rollers(self) -> SpecFieldError | None:
-        if self.type not in INCLINED_ROLLERS or self.contact_angle is None or (
+        # Rollers inclined to the axis by α: at α = 0 they would carry no axial load, and
+        # ISO 281's Y = 0.4·cotα has no bound.
+        if not self.type_traits.inclined or self.contact_angle is None or (
                 self.contact_angle > 0):
             return None
         return SpecFieldError("contact_angle", f"a {self.type} bearing's rollers are inclined: "
                               "at 0 deg it would carry no axial load (ISO 281's Y = "
                               "0.4·cotα has no bound); give the catalogue's angle, like "
                               "12 deg" + (", or use type: cylindrical-roller"
-                                          if self.type == "tapered-roller" else ""))
+                                          if not self.type_traits.crowned else ""))
 
     def element_notes(self) -> list[str]:
         """What is unusual in the elements, though possible."""
         notes = []
         alpha = self.contact_angle
-        if self.type in INCLINED_ROLLERS and alpha is not None and 0 < alpha < SHALLOWEST_ANGLE:
+        if self.type_traits.inclined and alpha is not None and 0 < alpha < SHALLOWEST_ANGLE:
             notes.append(f"contact_angle {math.degrees(alpha):g} deg is below the "
                          f"{math.degrees(SHALLOWEST_ANGLE):g} deg of the shallowest "
                          f"{self.type} bearings in makers' catalogues: ISO 281's "

@@ -4,16 +4,23 @@ rating life and ISO 76 static safety of ball and roller bearings (``docs/physics
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from typing import Annotated, Any, ClassVar, Literal
 
 import numpy as np
 from pydantic import BeforeValidator, Field, StringConstraints, WithJsonSchema
 
+from bearingcalc.core.bearing_types import SPEC_NAMES, BearingTraits, traits, type_name
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.models.ball_bearing_rules import GeometryRules, OperatingRules
 from bearingcalc.models.base import Spec, SpecModel
+from bearingcalc.models.bearing_geometry_rules import GeometryRules
+from bearingcalc.models.bearing_load_rules import LoadFactorRules, LoadRules
+from bearingcalc.models.bearing_operating_rules import (
+    ArrangementRules,
+    LubricationRules,
+    OperatingRules,
+)
+from bearingcalc.models.bearing_rating_rules import AngleRules, RatingRules
 from bearingcalc.models.duty import (
     OIL_BIN_FIELDS,
     OIL_BIN_PATHS,
@@ -42,7 +49,6 @@ from bearingcalc.models.quantities import (
     PositiveStress,
     PositiveTime,
 )
-from bearingcalc.models.roller_bearing_rules import ROLLER_TYPES, RollerRules
 from bearingcalc.models.rules import rule
 
 RELIABILITY_RANGE = (0.90, 0.9995)
@@ -53,13 +59,8 @@ ISO_76_ROLLER_PRESSURE = 4.0e9
 #: How far a given pitch diameter may lie from (d + D)/2 before it is questioned: real
 #: bearings are not exactly symmetric, but a larger offset is usually a typing slip.
 PITCH_OFF_CENTRE = 0.05
-DEFAULT_CONTACT_ANGLE = {"deep-groove": 0.0, "thrust": math.pi / 2, "thrust-ball": math.pi / 2,
-                         "self-aligning-ball": 0.0, "cylindrical-roller": 0.0,
-                         "needle-roller": 0.0, "thrust-cylindrical-roller": math.pi / 2}
-BearingType = Literal["deep-groove", "angular-contact", "self-aligning-ball", "thrust",
-                      "thrust-ball", "cylindrical-roller", "needle-roller", "tapered-roller",
-                      "spherical-roller", "thrust-cylindrical-roller",
-                      "thrust-spherical-roller", "thrust-tapered-roller"]
+#: The spec's spellings of the bearing types (:mod:`bearingcalc.core.bearing_types`).
+BearingType = Literal[SPEC_NAMES]  # type: ignore[valid-type]
 Arrangement = Literal["single", "back-to-back", "face-to-face", "tandem"]
 
 
@@ -160,9 +161,14 @@ class BearingFields(SpecModel):
         None, description="fo = outer groove radius / Dw (> 0.5)")
     material: ElasticMaterial = ElasticMaterial()
 
+    @property
+    def type_traits(self) -> BearingTraits:
+        """What the bearing's type is: its family, rows, angle, ratings, load factors."""
+        return traits(self.type)
+
     @rule
     def _drawn_cup_needles(self) -> SpecFieldError | None:
-        if self.drawn_cup and self.type != "needle-roller":
+        if self.drawn_cup and not self.type_traits.drawn_cup:
             return SpecFieldError("drawn_cup", f"a drawn cup is a needle roller bearing's "
                                   f"outer ring: use type: needle-roller, or leave drawn_cup "
                                   f"out of a {self.type} bearing")
@@ -183,8 +189,9 @@ BearingBin = bin_model("BearingBin", {
     "outer_speed": (AngularSpeed, "outer ring, fixed frame"), **OIL_BIN_FIELDS})
 
 
-class BallBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, RollerRules,
-                      OperatingRules, GeometryRules, BearingFields, Spec):
+class RollingBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, LubricationRules,
+                         ArrangementRules, LoadFactorRules, LoadRules, OperatingRules,
+                         AngleRules, RatingRules, GeometryRules, BearingFields, Spec):
     """A rolling bearing sized by ISO 281 (life) and ISO 76 (static safety), at one
     operating point or over a duty cycle."""
 
@@ -223,7 +230,7 @@ class BallBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, RollerRules,
             return None
         return self.relative_speed
 
-    def with_turning_speed(self, speed: Any) -> BallBearingSpec:
+    def with_turning_speed(self, speed: Any) -> RollingBearingSpec:
         """The bearing with its inner ring at ``speed`` and its outer ring fixed."""
         return self.model_copy(update={"speed": speed, "inner_speed": None,
                                        "outer_speed": None})
@@ -233,7 +240,8 @@ class BallBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, RollerRules,
         """α used. [rad]"""
         if self.contact_angle is not None:
             return self.contact_angle
-        return DEFAULT_CONTACT_ANGLE.get(self.type, 0.0)
+        own = self.type_traits.contact_angle
+        return 0.0 if own is None else own
 
     @property
     def relative_speed(self) -> Any:
@@ -254,7 +262,7 @@ class BallBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, RollerRules,
     @property
     def rollers(self) -> bool:
         """Whether the rolling elements are rollers."""
-        return self.type in ROLLER_TYPES
+        return self.type_traits.family == "roller"
 
     @property
     def has_geometry(self) -> bool:
@@ -316,7 +324,7 @@ class BallBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, RollerRules,
         geometry."""
         if self.static_load_rating is not None:
             return None
-        if self.type in ("thrust", "thrust-ball"):
+        if self.type_traits.family == "ball" and self.type_traits.thrust:
             return ("no static_load_rating: ISO 76's thrust f0 is not implemented, so the "
                     "static results are left out")
         if not self.has_geometry:
@@ -332,7 +340,7 @@ class BallBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, RollerRules,
         lubrication = self.lubrication
         factors = self.load_factors
         return {
-            "bearing_type": "thrust" if self.type == "thrust-ball" else self.type,
+            "bearing_type": type_name(self.type),
             "arrangement": self.arrangement,
             "dynamic_load_rating": self.dynamic_load_rating,
             "static_load_rating": self.static_load_rating,
@@ -386,7 +394,7 @@ class BallBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, RollerRules,
         do not depend on them."""
         if not self.rollers:
             return {}
-        spherical = self.type in ("spherical-roller", "thrust-spherical-roller")
+        spherical = self.type_traits.crowned
         return {"roller_count": self.roller_count, "roller_diameter": self.roller_diameter,
                 "roller_length": self.roller_length, "rows": self.rows,
                 "drawn_cup": self.drawn_cup,
