@@ -77,6 +77,9 @@ class Kind:
     judged: Mapping[str, Judged] = field(default_factory=dict)
     #: the drawings of its calculation report, in the report's order
     plots: tuple[Plot, ...] = ()
+    #: the standards and methods the kind applies, with their sections, as its report
+    #: cites them
+    standards: tuple[str, ...] = ()
 
     @property
     def model(self) -> type[Spec]:
@@ -240,6 +243,35 @@ def _member_reason(members: Members, name: str, field: str, why: str) -> tuple[s
     return f"{name}.{field}", why
 
 
+#: The standards and methods each kind applies, with their sections, for its report.
+THRUST_BEARING_STANDARDS = ("Pure rolling of a ball between a turning shaft and a fixed race, "
+    "b = r(1 + sinθ)/(cosθ − sinθ), and the spin-to-roll ratio at the "
+    "shaft contact: docs/physics.md §1",
+    "Hertz point contact, with the complete elliptic integrals by the "
+    "arithmetic-geometric mean: docs/physics.md §6")
+DISK_ON_CIRCLE_STANDARDS = ("A disk rolling without slipping on a fixed or turning circle: "
+    "docs/physics.md §2",)
+CONE_ON_PLANE_STANDARDS = ("A cone rolling on a plane about its fixed apex: docs/physics.md §3",)
+BEVEL_GEARS_STANDARDS = ("The epicyclic bevel pair, ω_AS = (b/a)(ω_Z − Ω): docs/physics.md §4",
+    "Blank geometry (ISO 23509 cone geometry, Gleason proportions), tooth "
+    "forces and the ANSI/AGMA 2003-B97 bending and pitting rating in the SI "
+    "form of Budynas & Nisbett, Shigley's Mechanical Engineering Design, "
+    "10th ed., §15-1 to 15-4 (eqs. 15-1 to 15-23), with ANSI/AGMA "
+    "2003-D19's lengthwise curvature factor K_x of spiral teeth: "
+    "docs/physics.md §8")
+ROLLING_BEARING_STANDARDS = ("ISO 281:2007 basic dynamic load rating, dynamic equivalent load, "
+    "basic and modified rating life (a_ISO from e_C and κ), and ISO "
+    "76:2006 basic static load rating, static equivalent load and static "
+    "safety: docs/physics.md §5",
+    "Hertz contact of balls and rollers: docs/physics.md §6; bearing "
+    "kinematics: §7; duty cycles (Palmgren–Miner): §11")
+BEVEL_DRIVE_STANDARDS = ("The pair's geometry, forces and ANSI/AGMA 2003-B97 rating (Budynas & "
+    "Nisbett, 10th ed., §15-1 to 15-4): docs/physics.md §8",
+    "Each shaft's statics on two bearings, the induced axial forces and load "
+    "cases of an adjusted pair, ISO 281:2007 lives and the system's life: "
+    "docs/physics.md §9; duty cycles: §11")
+
+
 KINDS: dict[str, Kind] = {
     kind.name: kind
     for kind in (
@@ -251,15 +283,17 @@ KINDS: dict[str, Kind] = {
              limits={"spin_to_roll": "max_spin_to_roll"},
              unbounded=("pitch_radius_max",),
              judged={"slip_margin": Judged("spin-to-roll ratio", "spin_to_roll", False),
-                     "contact_pressure_margin": CONTACT}),
+                     "contact_pressure_margin": CONTACT},
+             standards=THRUST_BEARING_STANDARDS),
         Kind("disk-on-circle", "a disk rolling on a fixed or turning circle, outside or inside",
              "bearingcalc.models.disk_on_circle:DiskOnCircleSpec",
              "bearingcalc.core.disk_on_circle", margins=(),
-             governing=("contact_point_accel", "center_speed")),
+             governing=("contact_point_accel", "center_speed"),
+             standards=DISK_ON_CIRCLE_STANDARDS),
         Kind("cone-on-plane", "a cone rolling on a plane about its fixed apex",
              "bearingcalc.models.cone_on_plane:ConeOnPlaneSpec",
              "bearingcalc.core.cone_on_plane", margins=(),
-             governing=("precession_speed",)),
+             governing=("precession_speed",), standards=CONE_ON_PLANE_STANDARDS),
         Kind("bevel-gears", "a bevel pair on fixed axes, or an epicyclic one: gear A on an "
              "arm, gear B on a shaft", "bearingcalc.models.bevel_gears:BevelGearsSpec",
              "bearingcalc.core.bevel_gears",
@@ -267,7 +301,8 @@ KINDS: dict[str, Kind] = {
                       "contact_safety_margin"),
              governing=("bending_safety_margin", "contact_safety_margin", "apex_mismatch",
                         "slip_margin"),
-             limits={"apex_mismatch": "max_apex_mismatch"}, judged=PAIR),
+             limits={"apex_mismatch": "max_apex_mismatch"}, judged=PAIR,
+             standards=BEVEL_GEARS_STANDARDS),
         *(Kind(name, summary, "bearingcalc.models.rolling_bearing:RollingBearingSpec",
                "bearingcalc.core.rolling_bearing",
                margins=("life_margin", "static_safety_margin", "contact_pressure_margin",
@@ -276,7 +311,8 @@ KINDS: dict[str, Kind] = {
                judged={"life_margin": LIFE, "static_safety_margin": STATIC,
                        "contact_pressure_margin": CONTACT,
                        "spin_to_roll_margin": SPIN_TO_ROLL},
-               plots=(Plot("duty-damage"), Plot("life-against-load")))
+               plots=(Plot("duty-damage"), Plot("life-against-load")),
+               standards=ROLLING_BEARING_STANDARDS)
           for name, summary in (
               ("rolling-bearing", "a ball or roller bearing, single or paired: ISO 281 "
                "rating life, ISO 76 static safety"),
@@ -294,7 +330,8 @@ KINDS: dict[str, Kind] = {
                      "static_safety_margin": Judged("smallest static safety s0",
                                                     smallest_bearing_safety, True)},
              plots=(Plot("duty-damage"), Plot("bearing-lives"),
-                    Plot("shaft-bending", "bearingcalc.core.bevel_drive:shaft_bending_lines"))),
+                    Plot("shaft-bending", "bearingcalc.core.bevel_drive:shaft_bending_lines")),
+             standards=BEVEL_DRIVE_STANDARDS),
     )
 }
 

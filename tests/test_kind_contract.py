@@ -63,3 +63,40 @@ def test_every_model_of_a_kind_collects_its_rules(name):
         held = nested_model(field)
         if held is not None:
             rules_of(held)
+
+
+@pytest.mark.parametrize("name", sorted(KINDS))
+def test_a_kind_declares_its_report(name):
+    """The standards a kind's report cites, each with a section of docs/physics.md that
+    exists, and drawings the report knows (with any solver function they name)."""
+    import importlib
+    import re
+
+    from bearingcalc.plots.report import DRAWINGS
+
+    kind = KINDS[name]
+    assert kind.standards
+    physics = (ROOT / "docs" / "physics.md").read_text(encoding="utf-8")
+    headings = set(re.findall(r"^#+ §(\d+) ", physics, re.M))
+    for line in kind.standards:
+        cited = re.findall(r"§(\d+)(?![-\d])", line)  # not a book's §15-1
+        assert cited, line
+        assert set(cited) <= headings, (line, sorted(headings))
+    for plot in kind.plots:
+        assert plot.name in DRAWINGS
+        if plot.solver_function:
+            module, _, function = plot.solver_function.partition(":")
+            assert callable(getattr(importlib.import_module(module), function))
+
+
+@pytest.mark.parametrize("name", sorted(KINDS))
+def test_results_along_axes_follow_a_declared_result(name):
+    """Each axis's results name the result of one value per design they follow (or none:
+    last), and every axis is one of the declared axes."""
+    from bearingcalc.core.solver import AXES
+
+    kind = KINDS[name]
+    for axis, declared in kind.along.items():
+        assert axis in AXES
+        assert declared.after == "" or declared.after in kind.results, (axis, declared.after)
+        assert declared.columns

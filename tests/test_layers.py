@@ -6,6 +6,7 @@ import pkgutil
 import re
 
 import bearingcalc
+import bearingcalc.core
 from tests.conftest import ROOT
 
 
@@ -21,3 +22,25 @@ def test_every_module_is_forbidden_to_import_the_command_line():
     # templates holds YAML files only
     assert set(contract["source_modules"]) == modules - {
         "bearingcalc.cli", "bearingcalc.__main__", "bearingcalc.templates"}
+
+
+def test_every_module_has_its_place_in_the_layers():
+    """The whole package's ``layers`` contract names every top-level module and package
+    but the command line's entry point (so a new module is given its layer)."""
+    text = (ROOT / "pyproject.toml").read_text()
+    block = re.search(r'type = "layers"\nlayers = \[(.*?)\n\]', text, re.S)
+    assert block is not None
+    named = set(re.findall(r"bearingcalc\.[a-z_]+", block[1]))
+    modules = {f"bearingcalc.{info.name}" for info in pkgutil.iter_modules(bearingcalc.__path__)}
+    assert named == modules - {"bearingcalc.__main__"}
+
+
+def test_the_solvers_have_layers_of_their_own():
+    """Inside core/, every module has its place: the kinds' solvers above the standards
+    and contact mechanics, those above what every solver returns."""
+    text = (ROOT / "pyproject.toml").read_text()
+    block = re.search(r'containers = \["bearingcalc.core"\]\nlayers = \[(.*?)\n\]', text, re.S)
+    assert block is not None
+    named = set(re.findall(r"[a-z_0-9]+", block[1]))
+    modules = {info.name for info in pkgutil.iter_modules(bearingcalc.core.__path__)}
+    assert named == modules

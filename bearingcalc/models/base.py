@@ -14,6 +14,7 @@ from pydantic.fields import FieldInfo
 from bearingcalc.models.plain_numbers import _Count, _Percentage, _plain_number, _RangedNumber
 from bearingcalc.models.quantities import _Quantity
 from bearingcalc.models.rules import problems_of
+from bearingcalc.models.yaml_schema import plain_scalar
 from bearingcalc.units import Dimension, parse_quantity
 
 if typing.TYPE_CHECKING:  # the results' layout only: made above the models
@@ -144,7 +145,6 @@ def _validated(text: str, validator: Any) -> float:
     """A bound of a sweep read as the spec reads the field's value: the text as YAML
     reads a plain value, a number as it is (the spec's rules judge it at each end of the
     range), a text such as '90 %' by the field's own validator."""
-    from bearingcalc.models.yaml_loader import plain_scalar  # which reads field paths
 
     value = plain_scalar(text)
     if not isinstance(value, (int, float, str)) or isinstance(value, bool):
@@ -176,7 +176,6 @@ def _parse_as(text: str, dimension: Dimension) -> float:
 def _whole_number(text: str) -> int:
     """A count or a choice of whole numbers as YAML reads it (``12``, or ``12.0``, which a
     spec's count takes too)."""
-    from bearingcalc.models.yaml_loader import plain_scalar
 
     value = plain_scalar(text)
     if isinstance(value, float) and value.is_integer():

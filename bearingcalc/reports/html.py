@@ -24,37 +24,6 @@ if TYPE_CHECKING:
     from bearingcalc.evaluation import Evaluation
     from bearingcalc.kinds import Kind
 
-#: The standards and methods each kind applies, with their sections.
-STANDARDS: dict[str, tuple[str, ...]] = {
-    "thrust-bearing": ("Pure rolling of a ball between a turning shaft and a fixed race, "
-                       "b = r(1 + sinθ)/(cosθ − sinθ), and the spin-to-roll ratio at the "
-                       "shaft contact: docs/physics.md §1",
-                       "Hertz point contact, with the complete elliptic integrals by the "
-                       "arithmetic-geometric mean: docs/physics.md §6"),
-    "disk-on-circle": ("A disk rolling without slipping on a fixed or turning circle: "
-                       "docs/physics.md §2",),
-    "cone-on-plane": ("A cone rolling on a plane about its fixed apex: docs/physics.md §3",),
-    "bevel-gears": ("The epicyclic bevel pair, ω_AS = (b/a)(ω_Z − Ω): docs/physics.md §4",
-                    "Blank geometry (ISO 23509 cone geometry, Gleason proportions), tooth "
-                    "forces and the ANSI/AGMA 2003-B97 bending and pitting rating in the SI "
-                    "form of Budynas & Nisbett, Shigley's Mechanical Engineering Design, "
-                    "10th ed., §15-1 to 15-4 (eqs. 15-1 to 15-23), with ANSI/AGMA "
-                    "2003-D19's lengthwise curvature factor K_x of spiral teeth: "
-                    "docs/physics.md §8"),
-    "rolling-bearing": ("ISO 281:2007 basic dynamic load rating, dynamic equivalent load, "
-                        "basic and modified rating life (a_ISO from e_C and κ), and ISO "
-                        "76:2006 basic static load rating, static equivalent load and static "
-                        "safety: docs/physics.md §5",
-                        "Hertz contact of balls and rollers: docs/physics.md §6; bearing "
-                        "kinematics: §7; duty cycles (Palmgren–Miner): §11"),
-    "bevel-drive": ("The pair's geometry, forces and ANSI/AGMA 2003-B97 rating (Budynas & "
-                    "Nisbett, 10th ed., §15-1 to 15-4): docs/physics.md §8",
-                    "Each shaft's statics on two bearings, the induced axial forces and load "
-                    "cases of an adjusted pair, ISO 281:2007 lives and the system's life: "
-                    "docs/physics.md §9; duty cycles: §11"),
-}
-STANDARDS["ball-bearing"] = STANDARDS["rolling-bearing"]
-
 _CSS = """
 body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; font-size: 10pt;
        margin: 1.5em; color: #111; }
@@ -133,7 +102,7 @@ def _section(evaluation: Evaluation, kind: Kind, first: bool, today: str, versio
         out += [f"<li>{escape(warning)}</li>" for warning in evaluation.warnings]
         out.append("</ul>")
     out.append("<h2>Standards and methods</h2><ul>")
-    out += [f"<li>{escape(line)}</li>" for line in STANDARDS.get(evaluation.kind, ())]
+    out += [f"<li>{escape(line)}</li>" for line in kind.standards]
     out.append(f"</ul><p>docs/physics.md is the derivation and check of each method, in "
                f"bearingcalc {escape(version)}'s source and documentation.</p>")
     for caption, svg in plots:
