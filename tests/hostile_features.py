@@ -373,7 +373,7 @@ def solve_case(spec, expect, fields=(), **kw) -> Case:
     )
 
 
-def roller_cases() -> dict[str, Case]:
+def roller_cases() -> dict[str, Case]:  # noqa: PLR0915  a list of hostile cases, one statement each
     c: dict[str, Case] = {}
     cyl = cylindrical()
     c["cyl_contact_angle"] = solve_case(
@@ -860,7 +860,7 @@ def bins(*specs) -> list[dict]:
     return [dict(s) for s in specs]
 
 
-def duty_cases() -> dict[str, Case]:
+def duty_cases() -> dict[str, Case]:  # noqa: PLR0915  a list of hostile cases, one statement each
     c: dict[str, Case] = {}
     db = duty_ball()
     cyc = db["duty_cycle"]
@@ -1471,7 +1471,7 @@ def replace_row(designation: str, maker: str, new: str) -> list[str]:
     return [new if r.startswith(f"{designation},{maker},") else r for r in ROWS]
 
 
-def catalogue_cases() -> dict[str, Case]:
+def catalogue_cases() -> dict[str, Case]:  # noqa: PLR0915  a list of hostile cases, one statement each
     c: dict[str, Case] = {}
     cat = catalogue()
     c["cat_ok"] = cat_solve(cat, "ok", check=catalogue_equals_typed)
@@ -2363,7 +2363,7 @@ def number_cases() -> dict[str, Case]:
     return c
 
 
-def more_cases() -> dict[str, Case]:
+def more_cases() -> dict[str, Case]:  # noqa: PLR0915  a list of hostile cases, one statement each
     """A second round: outputs onto catalogues, catalogue rows, sweeps across rules."""
     c: dict[str, Case] = {}
     cat = catalogue()

@@ -58,7 +58,7 @@ class StudyFormat(str, Enum):
 
 
 @app.command(cls=WordedHelp)
-def tolerance(
+def tolerance(  # noqa: PLR0913  one typer option per flag of the command
     spec_path: Annotated[Path, typer.Argument(
         help="A YAML spec with tolerances on some inputs ('20 deg ± 0.25 deg').",
         show_default=False, metavar="SPEC")],

@@ -13,7 +13,7 @@ from numpy.typing import ArrayLike, NDArray
 from bearingcalc.core.hertz import hertz_point_contact
 
 
-def ball_contacts(ball_count: ArrayLike, ball_diameter: ArrayLike, pitch_diameter: ArrayLike,
+def ball_contacts(ball_count: ArrayLike, ball_diameter: ArrayLike, pitch_diameter: ArrayLike,  # noqa: PLR0913  a numpy kernel of the contacts' array inputs
                   contact_angle: ArrayLike, thrust: bool, static_equivalent_load: ArrayLike,
                   inner_conformity: ArrayLike, outer_conformity: ArrayLike,
                   elastic_modulus: ArrayLike, poisson_ratio: ArrayLike,

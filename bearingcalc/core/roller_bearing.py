@@ -200,7 +200,7 @@ def _equivalent_dynamic_load(inputs: Mapping[str, ArrayLike | str | None], beari
     return equivalent.load
 
 
-def _contacts(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str, thrust: bool,
+def _contacts(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str, thrust: bool,  # noqa: PLR0913  a numpy kernel of the rollers' array inputs
               arrangement: str, rows: NDArray, alpha: NDArray, fa: NDArray, p0: NDArray,
               out: dict[str, ArrayLike], flags: dict[str, ArrayLike],
               bad: list[tuple[int, ArrayLike]]) -> None:

@@ -70,7 +70,7 @@ def line_contact(load: ArrayLike, length: ArrayLike, reduced_radius: ArrayLike,
             np.sqrt(4.0 * per_length * radius / (np.pi * e_star)))
 
 
-def roller_contacts(roller_diameter: ArrayLike, roller_length: ArrayLike,
+def roller_contacts(roller_diameter: ArrayLike, roller_length: ArrayLike,  # noqa: PLR0913  a numpy kernel of the laminae's array inputs
                     pitch_diameter: ArrayLike, contact_angle: ArrayLike, thrust: bool,
                     load: ArrayLike, elastic_modulus: ArrayLike, poisson_ratio: ArrayLike,
                     max_contact_pressure: ArrayLike, roller_profile_radius: ArrayLike = None,

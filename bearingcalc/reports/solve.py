@@ -112,22 +112,27 @@ def print_tables(evaluations: Iterable[Evaluation], kinds: Mapping[str, Any],
         out.print(table)
         for matrix in evaluation.tables:
             _print_matrix(out, evaluation, matrix, kind.labels)
-        if not evaluation.margins:
-            out.print(f"[bold green]PASS[/]: {safe_text(_no_margins(kind))}")
-        elif evaluation.within_limits:
-            count = len(evaluation.verdicts)
-            closest = (": within limits" if not count else
-                       f": {verdict_line(evaluation.verdicts[0])}, the only limit judged"
-                       if count == 1 else
-                       f": {verdict_line(evaluation.verdicts[0])}, the closest of {count} "
-                       "limits")
-            out.print(f"[bold green]PASS[/]{safe_text(closest)}")
-        else:
-            for line in evaluation.violations:
-                out.print(f"[bold red]FAIL[/]: {safe_text(line)}")
+        _print_verdict(out, evaluation, kind)
         for warning in evaluation.warnings:
             out.print(f"[yellow]warning[/]: {safe_text(warning)}")
         out.print()
+
+
+def _print_verdict(out: Any, evaluation: Evaluation, kind: Kind) -> None:
+    """PASS with the limit nearest to failing, or FAIL with each limit broken."""
+    if not evaluation.margins:
+        out.print(f"[bold green]PASS[/]: {safe_text(_no_margins(kind))}")
+    elif evaluation.within_limits:
+        count = len(evaluation.verdicts)
+        closest = (": within limits" if not count else
+                   f": {verdict_line(evaluation.verdicts[0])}, the only limit judged"
+                   if count == 1 else
+                   f": {verdict_line(evaluation.verdicts[0])}, the closest of {count} "
+                   "limits")
+        out.print(f"[bold green]PASS[/]{safe_text(closest)}")
+    else:
+        for line in evaluation.violations:
+            out.print(f"[bold red]FAIL[/]: {safe_text(line)}")
 
 
 def _no_margins(kind: Kind) -> str:
