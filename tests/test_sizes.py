@@ -24,7 +24,8 @@ EXCEPTIONS: dict[str, str] = {
     "models/rolling_bearing.py": "every bearing type's fields in one model (below)",
     "models/rolling_bearing.py::RollingBearingSpec": "every bearing type's fields in one "
                                                      "model; its rules are in their groups",
-    "models/bevel_drive.py::BevelDriveSpec": "the drive's fields and its shafts' rules in one model",
+    "models/bevel_drive.py::BevelDriveSpec": "the drive's fields and its shafts' rules in "
+                                             "one model",
 }
 
 
