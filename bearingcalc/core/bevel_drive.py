@@ -13,6 +13,7 @@ bins by their own kinds' rules. Inputs are SI floats or broadcasting arrays.
 from __future__ import annotations
 
 from collections.abc import Collection, Mapping
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -21,7 +22,12 @@ from numpy.typing import ArrayLike, NDArray
 from bearingcalc.core import bevel_gears, rolling_bearing
 from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.common import broadcast_all, first_failure
-from bearingcalc.core.drive_bearings import BEARING_RESULTS, MountedBearing, assemble
+from bearingcalc.core.drive_bearings import (
+    BEARING_RESULTS,
+    OWN_RESULTS,
+    MountedBearing,
+    assemble,
+)
 from bearingcalc.core.duty_cycle import (
     BIN_MEANING,
     at_bin,
@@ -268,6 +274,10 @@ def drive_cycle(per_bin: Solution, inputs: Mapping[str, Any]) -> Solution:
 #: The statics' loads of a bearing over a cycle: the largest of any bin; the load case
 #: is the governing bin's.
 CYCLE_LOADS = ("radial_load", "axial_load", "induced_axial_load")
+#: A bearing's per-bin results its cycle needs for what the drive reads of it.
+CYCLE_INPUTS = (*OWN_RESULTS, "basic_rating_life_revolutions",
+                "modified_rating_life_revolutions", "dynamic_load_rating",
+                "pair_dynamic_load_rating")
 
 
 def _bearing_cycle(per_bin: Solution, inputs: Mapping[str, Any], shaft: str, position: int,
@@ -290,8 +300,12 @@ def _bearing_cycle(per_bin: Solution, inputs: Mapping[str, Any], shaft: str, pos
     if members.has("load_case", index):
         loads["load_case"] = at_bin(members.values["load_case"][index], governing)
     member = _member(shaft, position)
+    own = per_bin.parts[member]
+    # the cycle of what the drive reads of a bearing, not of every result it has
+    own = replace(own, results={key: own.results[key] for key in CYCLE_INPUTS
+                                if key in own.results})
     return MountedBearing(row, member, members.headings[index], bearing_inputs, loads,
-                          rolling_bearing_cycle(per_bin.parts[member], bearing_inputs))
+                          rolling_bearing_cycle(own, bearing_inputs))
 
 
 def _mean_speed(inputs: Mapping[str, Any]) -> NDArray:
