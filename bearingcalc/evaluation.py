@@ -12,7 +12,7 @@ import math
 import re
 import sys
 import traceback
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -111,7 +111,7 @@ def _solve_group(documents: Sequence[Document], kind: Kind,
     """Solve specs of one kind with the same inputs given in one vectorised call."""
     stacked = _stacked([member[2] for member in members])
     raw, status, flags = kind.evaluate_with_warnings(stacked)
-    layout = Layout(raw.names, raw.tables, raw.reasons)
+    layout = raw.with_values({})  # the solve's names, tables and reasons
     columns = {key: values.tolist() for key, values in raw.items()}
     flagged = {key: np.asarray(values, dtype=bool).tolist() for key, values in flags.items()}
     codes = status.tolist()
@@ -214,19 +214,8 @@ def load_one_spec(path: str | Path) -> tuple[Kind, Spec, Document]:
     return kind, spec, documents[0]
 
 
-@dataclass(frozen=True)
-class Layout:
-    """What the flat keys of one solve are: each key's (SI unit, meaning), and the
-    tables of the results along axes (a drive's bearings, a duty cycle's bins)."""
-
-    names: Mapping[str, tuple[str, str]]
-    tables: tuple[ResultTable, ...] = ()
-    #: status code -> (field at fault, why)
-    reasons: Mapping[int, tuple[str, str]] = field(default_factory=dict)
-
-
 def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
-           code: int, layout: Layout, raised: Sequence[str] = ()) -> Evaluation:
+           code: int, layout: FlatResults, raised: Sequence[str] = ()) -> Evaluation:
     """One spec's results from its solved values and status code."""
     if code:
         name, reason = layout.reasons[code]
@@ -254,8 +243,7 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
                if (value := results.get(key)) is not None}
     name = spec.name or _default_name(document)
     warnings += spec.result_notes(results, layout.tables)
-    judged = judge(kind.judged, kind.results,
-                   FlatResults(results, layout.names, layout.tables), margins)
+    judged = judge(kind.judged, kind.results, layout.with_values(results), margins)
     return Evaluation(document.source, kind.name, name, results, units, margins, warnings,
                       spec.row_names(), judged, spec.catalogue_sources(),
                       {key: layout.names[key][1] for key in results}, layout.tables)

@@ -38,12 +38,6 @@ class ResultTable:
         """Every flat key the table shows, row by row."""
         return tuple(key for row in self.cells for key in row if key is not None)
 
-    def labelled(self, labels: Mapping[str, Mapping[float, str]]) -> dict[str, str]:
-        """Flat key -> the column whose labels it takes (a drive's ``load_case``)."""
-        return {key: column for row in self.cells
-                for key, column in zip(row, self.columns, strict=True)
-                if key is not None and column in labels}
-
     def column(self, column: str) -> list[str | None]:
         """The flat key of ``column`` in each row (None where the row has none)."""
         if column not in self.columns:
@@ -54,9 +48,8 @@ class ResultTable:
 
 class FlatResults(dict[str, NDArray]):
     """Flat key -> values [SI], in report order, with each key's (SI unit, meaning) in
-    ``names``, the tables along axes in ``tables``, the axis each key of those runs
-    along in ``axes``, and what each status code of the solve means in ``reasons``:
-    (field at fault, why)."""
+    ``names``, the tables along axes in ``tables``, and what each status code of the
+    solve means in ``reasons``: (field at fault, why)."""
 
     def __init__(self, values: Mapping[str, NDArray] | None = None,
                  names: Mapping[str, tuple[str, str]] | None = None,
@@ -64,8 +57,6 @@ class FlatResults(dict[str, NDArray]):
         super().__init__(values or {})
         self.names: dict[str, tuple[str, str]] = dict(names or {})
         self.tables = tables
-        self.axes: dict[str, str] = {key: table.axis for table in tables
-                                     for key in table.keys}
         self.reasons: dict[int, tuple[str, str]] = {}
 
     def with_values(self, values: Mapping[str, Any]) -> FlatResults:
