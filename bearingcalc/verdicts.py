@@ -29,10 +29,17 @@ class Judged:
     form: str = "difference"
     #: how a verdict names the limit: "required" (a life), "min" (a safety), "max"
     word: str = ""
+    #: what the limit is a limit of, where the name says more ("smallest static safety
+    #: s0" has a "min static safety s0"); the name otherwise
+    limit_of: str = ""
 
     @property
     def limit_word(self) -> str:
         return self.word or ("min" if self.at_least else "max")
+
+    def limit_named(self) -> str:
+        """The limit in words: its word and what it limits ("min static safety s0")."""
+        return f"{self.limit_word} {self.limit_of or self.named({})}"
 
     def named(self, results: Mapping[str, float | None]) -> str:
         return self.name(results) if callable(self.name) else self.name

@@ -16,7 +16,7 @@ from numpy.typing import ArrayLike, NDArray
 from bearingcalc.core.bearing_life import life_margin
 from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.iso281 import LIFE_EXPONENT
-from bearingcalc.core.solver import BIN_PREFIX, Along, AxisResults, Solution
+from bearingcalc.core.solver import Along, AxisResults, Solution, bin_rows
 
 #: Per-bin results: column -> (SI unit, meaning).
 BEARING_COLUMNS: dict[str, tuple[str, str]] = {
@@ -176,7 +176,7 @@ def bins_along(columns: Mapping[str, ArrayLike]) -> Along:
     shape = np.broadcast_shapes(*(np.shape(np.asarray(values))[1:]
                                   for values in columns.values()))
     bins = len(np.asarray(next(iter(columns.values()))))
-    return Along(tuple(f"{BIN_PREFIX}{k}" for k in range(1, bins + 1)),
+    return Along(bin_rows(bins),
                  {column: np.broadcast_to(np.asarray(values, dtype=float), (bins, *shape))
                   for column, values in columns.items()})
 

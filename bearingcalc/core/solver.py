@@ -113,8 +113,11 @@ class Members:
     set_by_composite: Mapping[str, str] = field(default_factory=dict)
 
 
-#: A duty cycle's bins are the rows ``{BIN_PREFIX}{k}`` of the ``bin`` axis, k from 1.
-BIN_PREFIX = "duty_"
+def bin_rows(count: int) -> tuple[str, ...]:
+    """The rows of a duty cycle's ``bin`` axis, one per bin: ``duty_1`` … ``duty_{count}``
+    (the prefix of each bin's flat result keys)."""
+    return tuple(f"duty_{k}" for k in range(1, count + 1))
+
 #: At most this many bins (a spectrum from a load measurement is binned coarser).
 MAX_BINS = 1000
 

@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 import numpy as np
 from pydantic import Field, create_model
 
-from bearingcalc.core.solver import BIN_PREFIX, MAX_BINS
+from bearingcalc.core.solver import MAX_BINS, bin_rows
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import SpecModel
 from bearingcalc.models.field_path import FieldPath, replaced
@@ -174,8 +174,9 @@ class DutyCycleRules:
         """Each bin's name, by the prefix of its results (``duty_1``)."""
         if not self.duty_cycle:
             return {}
-        return {f"{BIN_PREFIX}{k}": item.name or str(k)
-                for k, item in enumerate(self.duty_cycle, 1)}
+        rows = bin_rows(len(self.duty_cycle))
+        return {row: item.name or str(k)
+                for k, (row, item) in enumerate(zip(rows, self.duty_cycle, strict=True), 1)}
 
     def result_notes(self, results: Mapping[str, float | None],
                      tables: Sequence[ResultTable] = ()) -> list[str]:

@@ -74,8 +74,7 @@ def limit_levels(kind: Kind, limits: Mapping[str, float], margins: Iterable[str]
             continue
         limit = judged.limit(value, point[margin])
         if np.isfinite(limit):
-            named = judged.named({}).removeprefix("smallest ")  # "min static safety s0"
-            return [(limit, f"{judged.limit_word} {named}")]
+            return [(limit, judged.limit_named())]
     return []
 
 

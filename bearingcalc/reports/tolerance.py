@@ -29,9 +29,8 @@ def print_tolerance_table(report: StudyReport, stream: IO[str] | None = None) ->
     out = console(stream)
     print_whole(out, f"[bold]{safe_text(record['name'] or record['spec'])}[/] "
                      f"({record['kind']}, {safe_text(record['spec'])})")
-    for key, value in record.items():
-        if key.endswith("catalogue_source"):
-            out.print(f"{key}: {safe_text(value)}")
+    for key, value in report.catalogue_sources.items():
+        out.print(f"{key}: {safe_text(value)}")
     _print_inputs(out, report)
     _print_side_by_side(out, report)
     _print_other_results(out, report)

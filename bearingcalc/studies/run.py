@@ -39,6 +39,9 @@ class StudyReport:
     display: dict[str, tuple[str, float]] = field(default_factory=dict)
     #: the tables of the results along axes (a drive's bearings, a cycle's bins)
     tables: tuple[ResultTable, ...] = ()
+    #: the catalogue row of each bearing taken from one (also in the record): result-style
+    #: key -> designation, maker and source
+    catalogue_sources: dict[str, str] = field(default_factory=dict)
 
     @property
     def plotted(self) -> str | None:
@@ -150,7 +153,8 @@ def run_study(  # noqa: PLR0913  the tolerance command's options, keyword-only, 
         weakest = weakest_margin(record, study.margins)
         governing = [weakest, *(key for key in governing if key != weakest)]
     return StudyReport(record, histograms, governing, study.limit_values,
-                       tuple(study.margins), dict(kind.display), study.layout({}).tables)
+                       tuple(study.margins), dict(kind.display), study.layout({}).tables,
+                       spec.catalogue_sources())  # type: ignore[attr-defined]
 
 
 def _check_options(methods: Sequence[str], sampler: str, samples: int) -> None:
