@@ -58,18 +58,18 @@ def pair_ratings(dynamic_load_rating: ArrayLike, static_load_rating: ArrayLike |
 
 
 def pair_ratings_used(arrangement: str, dynamic_load_rating: ArrayLike,
-                      static_load_rating: ArrayLike | None, family: Family,
-                      out: dict[str, ArrayLike]) -> tuple[ArrayLike, ArrayLike | None]:
-    """The C and C0 a bearing's life and static safety use: a pair's (reported into
-    ``out`` as ``pair_dynamic_load_rating`` and ``pair_static_load_rating``), else the
-    bearing's own."""
+                      static_load_rating: ArrayLike | None, family: Family
+                      ) -> tuple[ArrayLike, ArrayLike | None, dict[str, ArrayLike]]:
+    """The C and C0 a bearing's life and static safety use: a pair's, else the bearing's
+    own; and the results that report a pair's (``pair_dynamic_load_rating`` and
+    ``pair_static_load_rating``)."""
     if arrangement not in PAIRS:
-        return dynamic_load_rating, static_load_rating
+        return dynamic_load_rating, static_load_rating, {}
     c, c0 = pair_ratings(dynamic_load_rating, static_load_rating, family)
-    out["pair_dynamic_load_rating"] = c
+    reported = {"pair_dynamic_load_rating": c}
     if c0 is not None:
-        out["pair_static_load_rating"] = c0
-    return c, c0
+        reported["pair_static_load_rating"] = c0
+    return c, c0, reported
 
 
 class DoubleRowFactors(NamedTuple):

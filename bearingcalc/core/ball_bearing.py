@@ -26,7 +26,7 @@ from bearingcalc.core.ball_bearing_contacts import ball_contacts
 from bearingcalc.core.ball_bearing_kinematics import ball_kinematics
 from bearingcalc.core.bearing_life import operating_point, rating_life
 from bearingcalc.core.bearing_types import LoadRule, traits
-from bearingcalc.core.common import DerivedTest, Family, balls_fit, packed
+from bearingcalc.core.common import DerivedTest, Family, Found, balls_fit
 from bearingcalc.core.iso76 import static_equivalent_load, static_load_rating, static_safety_factor
 from bearingcalc.core.iso281 import dynamic_load_rating, equivalent_dynamic_load
 from bearingcalc.core.solver import Solution, Solver
@@ -181,31 +181,32 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
     z, dw, dpw = (inputs.get(k) for k in ("ball_count", "ball_diameter", "pitch_diameter"))
     has_geometry = z is not None and dw is not None and dpw is not None
     alpha, fr, fa, speed = operating_point(inputs)
-    out: dict[str, ArrayLike] = {}
-    flags: dict[str, ArrayLike] = {}
     # Checks in the order they are reported: the first that fails names the fault.
-    bad_checks: list[tuple[int, ArrayLike]] = [(7, ~(speed > 0)), (8, ~((fr > 0) | (fa > 0)))]
-    if not thrust:
-        bad_checks.insert(0, (6, ~((alpha >= 0) & (alpha < np.pi / 2))))
+    found = Found(checks=[] if thrust else [(6, ~((alpha >= 0) & (alpha < np.pi / 2)))])
+    found.checks += [(7, ~(speed > 0)), (8, ~((fr > 0) | (fa > 0)))]
+    out = found.results
 
     c_iso = c0_iso = f0_iso = None
     if has_geometry:
-        c_iso, c0_iso, f0_iso = _ratings(z, dw, dpw, alpha, thrust, out, bad_checks)
+        c_iso, c0_iso, f0_iso, ratings = _ratings(z, dw, dpw, alpha, thrust)
+        found.add(ratings)
     c = _given_or(inputs.get("dynamic_load_rating"), c_iso)
     c0 = _given_or(inputs.get("static_load_rating"), c0_iso)
     f0 = _given_or(inputs.get("static_factor"), f0_iso)
     arrangement = str(inputs.get("arrangement") or "single")
     double_row = arrangement in DOUBLE_ROW_PAIRS or traits(bearing_type).double_row_form
-    c_used, c0_used = pair_ratings_used(arrangement, c, c0, FAMILY, out)
+    c_used, c0_used, pair_results = pair_ratings_used(arrangement, c, c0, FAMILY)
+    out.update(pair_results)
     if double_row:
-        p = _double_row_load(inputs, bearing_type, alpha, fr, fa, out, bad_checks)
+        p, load = _double_row_load(inputs, bearing_type, alpha, fr, fa)
     else:
-        p = _equivalent_dynamic_load(inputs, bearing_type, alpha, fr, fa, f0, c0, out,
-                                     flags, bad_checks)
-    rating_life(inputs, thrust, speed, c_used, c0_used, p, out, flags, bad_checks,
-                pair=arrangement in PAIRS)
+        p, load = _equivalent_dynamic_load(inputs, bearing_type, alpha, fr, fa, f0, c0)
+    found.add(load)
+    found.add(rating_life(inputs, thrust, speed, c_used, c0_used, p,
+                          pair=arrangement in PAIRS))
     out["dynamic_load_rating"] = c
-    p0 = _static(inputs, bearing_type, alpha, fr, fa, c0, c0_used, f0, double_row, out)
+    p0, static = _static(inputs, bearing_type, alpha, fr, fa, c0, c0_used, f0, double_row)
+    out.update(static)
 
     if has_geometry:
         out.update(ball_kinematics(z, dw, dpw, alpha, inputs["inner_speed"],
@@ -218,7 +219,7 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
     if has_geometry and inputs.get("inner_groove_conformity") is not None:
         fi = np.asarray(inputs["inner_groove_conformity"], dtype=float)
         fo = np.asarray(inputs["outer_groove_conformity"], dtype=float)
-        bad_checks += [(10, ~(fi > 0.5)), (11, ~(fo > 0.5))]
+        found.checks += [(10, ~(fi > 0.5)), (11, ~(fo > 0.5))]
         sets = 2.0 if arrangement in PAIRS else 1.0
         contacts = ball_contacts(np.asarray(z, dtype=float) * sets, dw, dpw, alpha, thrust,
                                  p0, fi, fo,
@@ -227,34 +228,30 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
         out.update(contacts)
         largest = np.maximum(contacts["inner_contact_semi_major"],
                              contacts["outer_contact_semi_major"])
-        bad_checks.append((15 if thrust else 14, ~(largest <= np.asarray(dw) / 2.0)))
+        found.checks.append((15 if thrust else 14, ~(largest <= np.asarray(dw) / 2.0)))
 
-    return Solution(*packed(RESULTS, out, flags, bad_checks))
+    return Solution(*found.packed(RESULTS))
 
 
-def _ratings(z: ArrayLike, dw: ArrayLike, dpw: ArrayLike, alpha: NDArray, thrust: bool,
-             out: dict[str, ArrayLike], bad_checks: list[tuple[int, ArrayLike]]
-             ) -> tuple[NDArray, NDArray | None, NDArray | None]:
+def _ratings(z: ArrayLike, dw: ArrayLike, dpw: ArrayLike, alpha: NDArray, thrust: bool
+             ) -> tuple[NDArray, NDArray | None, NDArray | None, Found]:
     """C from the geometry (ISO 281) and, for radial bearings, C0 and f0 (ISO 76)."""
     dw_a, dpw_a, z_a = (np.asarray(v, dtype=float) for v in (dw, dpw, z))
-    bad_checks += [(1, ~(dw_a < dpw_a)), (2, ~balls_fit(z_a, dw_a / dpw_a))]
     c_iso, fc = dynamic_load_rating(z_a, dw_a, dpw_a, alpha, thrust, family=FAMILY)
-    bad_checks.append((3, np.isnan(fc)))
-    out["dynamic_load_rating_iso"] = c_iso
-    out["rating_factor"] = fc
+    found = Found({"dynamic_load_rating_iso": c_iso, "rating_factor": fc},
+                  checks=[(1, ~(dw_a < dpw_a)), (2, ~balls_fit(z_a, dw_a / dpw_a)),
+                          (3, np.isnan(fc))])
     if thrust:  # ISO 76's thrust f0 is not implemented: C0 only from the catalogue
-        return c_iso, None, None
+        return c_iso, None, None, found
     c0_iso, f0_iso = static_load_rating(z_a, dw_a, dpw_a, alpha, family=FAMILY)
-    bad_checks.append((4, np.isnan(f0_iso)))
-    out["static_load_rating_iso"] = c0_iso
-    return c_iso, c0_iso, f0_iso
+    found.checks.append((4, np.isnan(f0_iso)))
+    found.results["static_load_rating_iso"] = c0_iso
+    return c_iso, c0_iso, f0_iso, found
 
 
 def _equivalent_dynamic_load(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str,
                              alpha: NDArray, fr: NDArray, fa: NDArray, f0: NDArray | None,
-                             c0: NDArray | None, out: dict[str, ArrayLike],
-                             flags: dict[str, ArrayLike],
-                             bad_checks: list[tuple[int, ArrayLike]]) -> NDArray:
+                             c0: NDArray | None) -> tuple[NDArray, Found]:
     """P (ISO 281), with the factors applied and the flags of Table 3's ends."""
     given = (None if inputs.get("load_x") is None
              else (inputs["load_x"], inputs["load_y"], inputs["load_e"]))
@@ -263,23 +260,23 @@ def _equivalent_dynamic_load(inputs: Mapping[str, ArrayLike | str | None], beari
                                          family=FAMILY)
     p = equivalent.load
     if traits(bearing_type).thrust:
-        out["radial_factor"], out["axial_factor"] = np.zeros_like(p), np.ones_like(p)
-        return p
+        return p, Found({"radial_factor": np.zeros_like(p), "axial_factor": np.ones_like(p)})
+    found = Found(checks=[(12, ~(p > 0) & ((fr > 0) | (fa > 0)))])
     if equivalent.ratio_below_table is not None:
-        flags["axial_ratio_low"] = equivalent.ratio_below_table
-        flags["axial_ratio_high"] = equivalent.ratio_above_table
-    bad_checks.append((12, ~(p > 0) & ((fr > 0) | (fa > 0))))
+        found.flags.update(axial_ratio_low=equivalent.ratio_below_table,
+                           axial_ratio_high=equivalent.ratio_above_table)
     if not np.isnan(np.asarray(equivalent.e)).all():
-        out["radial_factor"] = np.where(equivalent.combined, equivalent.x, 1.0)
-        out["axial_factor"] = np.where(equivalent.combined, equivalent.y, 0.0)
-        out["axial_ratio_limit"] = equivalent.e
-    return p
+        found.results.update(radial_factor=np.where(equivalent.combined, equivalent.x, 1.0),
+                             axial_factor=np.where(equivalent.combined, equivalent.y, 0.0),
+                             axial_ratio_limit=equivalent.e)
+    return p, found
 
 
 def _static(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str, alpha: NDArray,
             fr: NDArray, fa: NDArray, c0: NDArray | None, c0_used: NDArray | None,
-            f0: NDArray | None, double_row: bool, out: dict[str, ArrayLike]) -> NDArray:
-    """P0 and, where C0 is known, s0 (ISO 76); a pair's s0 from its C0."""
+            f0: NDArray | None, double_row: bool) -> tuple[NDArray, dict[str, ArrayLike]]:
+    """P0 and, where C0 is known, s0 (ISO 76) with the results that report it; a pair's
+    s0 from its C0."""
     if double_row:
         y0 = inputs.get("load_y0")
         if y0 is None:
@@ -289,19 +286,19 @@ def _static(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str, alp
         p0 = static_equivalent_load(fr, fa, bearing_type, alpha,
                                     radial_factor=inputs.get("load_x0"),
                                     axial_factor=inputs.get("load_y0"), family=FAMILY)
-    if c0_used is not None:
-        s0 = static_safety_factor(c0_used, p0)
-        out.update({"static_load_rating": c0, "static_equivalent_load": p0,
-                    "static_safety_factor": s0,
-                    "static_safety_margin": s0 - np.asarray(inputs["min_static_safety"])})
-        if f0 is not None:
-            out["static_rating_factor"] = f0
-    return p0
+    if c0_used is None:
+        return p0, {}
+    s0 = static_safety_factor(c0_used, p0)
+    reported = {"static_load_rating": c0, "static_equivalent_load": p0,
+                "static_safety_factor": s0,
+                "static_safety_margin": s0 - np.asarray(inputs["min_static_safety"])}
+    if f0 is not None:
+        reported["static_rating_factor"] = f0
+    return p0, reported
 
 
 def _double_row_load(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str,
-                     alpha: NDArray, fr: NDArray, fa: NDArray, out: dict[str, ArrayLike],
-                     bad_checks: list[tuple[int, ArrayLike]]) -> NDArray:
+                     alpha: NDArray, fr: NDArray, fa: NDArray) -> tuple[NDArray, Found]:
     """P of a double-row bearing (ISO 281 Table 3): a back-to-back or face-to-face pair
     of angular-contact bearings, or a self-aligning ball bearing: X = 1, Y = Y1 up to e;
     X2, Y2 above. The catalogue's e, Y1, X, Y2 replace the table's; a self-aligning
@@ -322,11 +319,11 @@ def _double_row_load(inputs: Mapping[str, ArrayLike | str | None], bearing_type:
     x = np.where(combined, x_above, 1.0)
     y = np.where(combined, y_above, y_below)
     p = x * fr + y * fa
-    bad_checks.append((12, ~(p > 0) & ((fr > 0) | (fa > 0))))
-    out.update(radial_factor=x, axial_factor=y)
+    found = Found({"radial_factor": x, "axial_factor": y},
+                  checks=[(12, ~(p > 0) & ((fr > 0) | (fa > 0)))])
     if given or not self_aligning:
-        out["axial_ratio_limit"] = e + 0.0 * p
-    return p
+        found.results["axial_ratio_limit"] = e + 0.0 * p
+    return p, found
 
 
 def _self_aligning(bearing_type: str) -> bool:

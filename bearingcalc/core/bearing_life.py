@@ -9,7 +9,7 @@ from collections.abc import Mapping
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core.common import Family
+from bearingcalc.core.common import Family, Found
 from bearingcalc.core.iso281 import (
     AISO_CAP,
     KAPPA_CAP,
@@ -75,14 +75,10 @@ def with_ep_additives(a_iso: NDArray, ep_additives: ArrayLike, kappa: NDArray,
                     a_iso)
 
 
-def rating_life(  # noqa: PLR0913  fills the ball and roller solvers' out, flags and checks
-        inputs: Mapping[str, ArrayLike | str | None], thrust: bool, speed: NDArray,
-        c: NDArray | None, c0: NDArray | None, p: NDArray,
-        out: dict[str, ArrayLike], flags: dict[str, ArrayLike],
-        bad_checks: list[tuple[int, ArrayLike]], *, family: Family = "ball",
-        pair: bool = False) -> None:
-    r"""The modified rating life, into ``out``; its warnings into ``flags`` and the status
-    checks it adds into ``bad_checks``.
+def rating_life(inputs: Mapping[str, ArrayLike | str | None], thrust: bool, speed: NDArray,
+                c: NDArray | None, c0: NDArray | None, p: NDArray, *,
+                family: Family = "ball", pair: bool = False) -> Found:
+    r"""The modified rating life, with its warnings and the status checks it adds.
 
     .. math:: L_{nm} = a_1 a_{ISO} L_{10}, \qquad L_{10} = (C/P)^p
 
@@ -93,6 +89,7 @@ def rating_life(  # noqa: PLR0913  fills the ball and roller solvers' out, flags
 
     Source: ISO 281:2007, 9.1 to 9.3 (eqs. 13 to 20, Annex B).
     """
+    found = Found()
     revolutions_per_second = speed / (2.0 * np.pi)
     l10 = basic_rating_life(c, p, family=family)
     a1 = reliability_factor(inputs["reliability"])
@@ -103,14 +100,14 @@ def rating_life(  # noqa: PLR0913  fills the ball and roller solvers' out, flags
         if nu is None:
             nu = walther_viscosity(inputs["viscosity_40"], inputs["viscosity_100"],
                                    inputs["temperature"])
-            bad_checks.append((9, ~(np.asarray(inputs["viscosity_40"], dtype=float)
-                                    > np.asarray(inputs["viscosity_100"], dtype=float))))
-            bad_checks.append((13, ~(nu <= MAX_OPERATING_VISCOSITY)))
+            found.checks.append((9, ~(np.asarray(inputs["viscosity_40"], dtype=float)
+                                      > np.asarray(inputs["viscosity_100"], dtype=float))))
+            found.checks.append((13, ~(nu <= MAX_OPERATING_VISCOSITY)))
         nu = np.asarray(nu, dtype=float)
         nu1 = reference_viscosity(speed, mean_diameter)
         kappa_raw = nu / nu1
-        bad_checks.append((5, ~(kappa_raw >= KAPPA_MIN)))
-        flags["kappa_capped"] = kappa_raw > KAPPA_CAP
+        found.checks.append((5, ~(kappa_raw >= KAPPA_MIN)))
+        found.flags["kappa_capped"] = kappa_raw > KAPPA_CAP
         kappa = np.minimum(kappa_raw, KAPPA_CAP)
         cu = inputs.get("fatigue_load_limit")
         if cu is None:
@@ -122,11 +119,11 @@ def rating_life(  # noqa: PLR0913  fills the ball and roller solvers' out, flags
         if inputs.get("ep_additives") is not None:
             a_iso = with_ep_additives(a_iso, inputs["ep_additives"], kappa,
                                       inputs["contamination_factor"], cu, p, thrust, family)
-        flags["aiso_capped"] = a_iso >= AISO_CAP
-        out.update({"fatigue_load_limit": cu, "reference_viscosity": nu1,
-                    "operating_viscosity": nu, "viscosity_ratio": kappa})
+        found.flags["aiso_capped"] = a_iso >= AISO_CAP
+        found.results.update({"fatigue_load_limit": cu, "reference_viscosity": nu1,
+                              "operating_viscosity": nu, "viscosity_ratio": kappa})
     lnm = a1 * a_iso * l10
-    out.update({
+    found.results.update({
         "equivalent_dynamic_load": p, "load_ratio": c / p,
         "basic_rating_life": l10 / revolutions_per_second,
         "basic_rating_life_revolutions": l10, "reliability_factor": a1,
@@ -136,7 +133,8 @@ def rating_life(  # noqa: PLR0913  fills the ball and roller solvers' out, flags
     })
     min_life = inputs.get("min_rating_life")
     if min_life is not None:
-        out["life_margin"] = life_margin(lnm / revolutions_per_second, min_life)
+        found.results["life_margin"] = life_margin(lnm / revolutions_per_second, min_life)
+    return found
 
 
 #: The Weibull slope of bearing makers' system-life formula: 10/9 when every bearing is a

@@ -159,8 +159,9 @@ def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -
     warnings: dict[str, ArrayLike] = dict(pair.warnings)
     for shaft, speed, gear in (("pinion", input_speed, "a"), ("gear", gear_speed, "b")):
         if shaft in inputs["shafts"]:
-            found, coinciding = _shaft(inputs, pair, shaft, gear, speed, warnings)
+            found, coinciding, one_way = _shaft(inputs, pair, shaft, gear, speed)
             mounted += found
+            warnings.update(one_way)
             checks.append((COINCIDING_BEARINGS[shaft], coinciding))
     results, along, weakest = assemble(pair.results, gear_speed, mounted,
                                        inputs.get("min_rating_life"),
@@ -194,11 +195,10 @@ def _refused(pair: Solution, checks: list[tuple[int, NDArray]]) -> Solution:
     return Solution(dict(pair.results), status, dict(pair.warnings))
 
 
-def _shaft(inputs: Mapping[str, Any], pair: Solution, shaft: str, gear: str,
-           speed: NDArray, warnings: dict[str, ArrayLike]
-           ) -> tuple[list[MountedBearing], NDArray]:
-    """A shaft's bearings loaded by its statics and solved, and where two coincide;
-    a one-way bearing that locates the shaft adds its warning to ``warnings``."""
+def _shaft(inputs: Mapping[str, Any], pair: Solution, shaft: str, gear: str, speed: NDArray
+           ) -> tuple[list[MountedBearing], NDArray, dict[str, NDArray]]:
+    """A shaft's bearings loaded by its statics and solved, where two coincide, and the
+    warnings of a one-way bearing that locates the shaft."""
     bearings = inputs["shafts"][shaft]
     positions = tuple(bearing["position"] for bearing in bearings)
     axial_force = pair.results[f"gear_{gear}_axial_force"]
@@ -210,9 +210,10 @@ def _shaft(inputs: Mapping[str, Any], pair: Solution, shaft: str, gear: str,
     axial, adjusted = shaft_axial_loads(inputs["arrangements"][shaft], bearings, radial,
                                         axial_force)
     mounted = []
+    one_way: dict[str, NDArray] = {}
     for i, bearing in enumerate(bearings):
         row = _row(shaft, i + 1)
-        warnings.update(_one_way(row, bearing, axial_force))
+        one_way.update(_one_way(row, bearing, axial_force))
         loads = {"radial_load": radial[i], "axial_load": axial[i],
                  **{key: values[i] for key, values in adjusted.items()}}
         member_inputs = {**bearing, "radial_load": radial[i], "axial_load": axial[i],
@@ -221,7 +222,7 @@ def _shaft(inputs: Mapping[str, Any], pair: Solution, shaft: str, gear: str,
         mounted.append(MountedBearing(row, _member(shaft, i + 1), f"{shaft} shaft bearings",
                                       member_inputs, loads,
                                       rolling_bearing.evaluate(member_inputs)))
-    return mounted, np.asarray(positions[0]) == np.asarray(positions[1])
+    return mounted, np.asarray(positions[0]) == np.asarray(positions[1]), one_way
 
 
 def _one_way(row: str, bearing: Mapping[str, Any], axial_force: NDArray) -> dict[str, NDArray]:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
 from typing import Literal
 
 import numpy as np
@@ -67,6 +68,33 @@ def packed(order: Iterable[str], results: Mapping[str, ArrayLike],
     warnings = {key: np.broadcast_to(np.asarray(flag, dtype=bool), shape)
                 for key, flag in flags.items()}
     return ordered, status, warnings
+
+
+@dataclass
+class Found:
+    """What one step of a solve found: results [SI], warning flags, and status checks
+    (code, where it fails) in the order they are reported.
+
+    Each step returns its own; the solve gathers them with :meth:`add` in the order the
+    steps ran, so the first check that fails names the fault and no step writes into
+    what another was handed.
+    """
+
+    results: dict[str, ArrayLike] = field(default_factory=dict)
+    flags: dict[str, ArrayLike] = field(default_factory=dict)
+    checks: list[tuple[int, ArrayLike]] = field(default_factory=list)
+
+    def add(self, step: Found) -> Found:
+        """This with a later step's findings (its results replace ones of the same key)."""
+        self.results.update(step.results)
+        self.flags.update(step.flags)
+        self.checks.extend(step.checks)
+        return self
+
+    def packed(self, order: Iterable[str]
+               ) -> tuple[dict[str, NDArray], NDArray, dict[str, NDArray]]:
+        """The solve's results in ``order``, status codes and flags (see :func:`packed`)."""
+        return packed(order, self.results, self.flags, self.checks)
 
 
 def nan_where(bad: NDArray, value: ArrayLike) -> NDArray:

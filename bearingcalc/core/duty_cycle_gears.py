@@ -74,11 +74,12 @@ def _member_cycles(inputs: Mapping[str, Any]) -> tuple[NDArray, NDArray]:
     return pinion, pinion * first_bin("gear_a_teeth") / first_bin("gear_b_teeth")
 
 
-def _gear_cycle(results: Mapping[str, NDArray], shares: NDArray, inputs: Mapping[str, Any],
-                out: dict[str, NDArray]) -> tuple[NDArray, NDArray]:
-    """The pair's rating over the cycle into ``out``; (bending, contact) damage per bin."""
+def _gear_cycle(results: Mapping[str, NDArray], shares: NDArray, inputs: Mapping[str, Any]
+                ) -> tuple[dict[str, NDArray], NDArray, NDArray]:
+    """The pair's rating over the cycle, and its bending and contact damage per bin."""
+    out: dict[str, NDArray] = {}
     if "bending_safety" not in results:
-        return np.zeros_like(shares), np.zeros_like(shares)
+        return out, np.zeros_like(shares), np.zeros_like(shares)
     per_bin = {}
     pinion, gear = _member_cycles(inputs)
     for load, curve in (("bending", BENDING_LIFE_CURVE), ("contact", CONTACT_LIFE_CURVE)):
@@ -97,7 +98,7 @@ def _gear_cycle(results: Mapping[str, NDArray], shares: NDArray, inputs: Mapping
     for key in GEAR_LARGEST:
         if key in results:  # a running stress: a bin at rest has none
             out[key] = np.max(np.where(turning, results[key], -np.inf), axis=0)
-    return per_bin["bending"], per_bin["contact"]
+    return out, per_bin["bending"], per_bin["contact"]
 
 
 def _turning(inputs: Mapping[str, Any]) -> NDArray:
@@ -114,7 +115,8 @@ def gear_pair_cycle(per_bin: Solution, inputs: Mapping[str, Any],
     shares, _ = _shares(inputs)
     out = (_at_governing(results, shares, inputs) if governing is None
            else {key: at_bin(values, governing) for key, values in results.items()})
-    bending, contact = _gear_cycle(results, shares, inputs, out)
+    cycle, bending, contact = _gear_cycle(results, shares, inputs)
+    out.update(cycle)
     turning = _turning(inputs)
 
     def running(key: str) -> NDArray | None:

@@ -20,7 +20,7 @@ from bearingcalc.core import ball_bearing
 from bearingcalc.core.arrangements import DOUBLE_ROW_PAIRS, PAIRS, pair_ratings_used
 from bearingcalc.core.bearing_life import operating_point, rating_life
 from bearingcalc.core.bearing_types import LoadRule, traits
-from bearingcalc.core.common import DerivedTest, Family, balls_fit, packed
+from bearingcalc.core.common import DerivedTest, Family, Found, balls_fit
 from bearingcalc.core.iso76 import static_safety_factor
 from bearingcalc.core.roller_bearing_contacts import (
     max_roller_load,
@@ -134,17 +134,16 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
                                                  "roller_length", "pitch_diameter"))
     has_geometry = all(value is not None for value in (z, dwe, lwe, dpw))
     alpha, fr, fa, speed = operating_point(inputs)
-    out: dict[str, ArrayLike] = {}
-    flags: dict[str, ArrayLike] = {}
     angle_ok = ((alpha > np.pi / 4) & (alpha <= np.pi / 2) if thrust
                 else (alpha >= 0) & (alpha <= np.pi / 4))
-    bad: list[tuple[int, ArrayLike]] = [(19, ~angle_ok), (7, ~(speed > 0)),
-                                        (8, ~((fr > 0) | (fa > 0)))]
+    # Checks in the order they are reported: the first that fails names the fault.
+    found = Found(checks=[(19, ~angle_ok), (7, ~(speed > 0)), (8, ~((fr > 0) | (fa > 0)))])
+    out = found.results
     c = _given(inputs.get("dynamic_load_rating"))
     c0 = _given(inputs.get("static_load_rating"))
     if has_geometry:
         z_a, dwe_a, lwe_a, dpw_a = (np.asarray(v, dtype=float) for v in (z, dwe, lwe, dpw))
-        bad += [(16, ~(dwe_a < dpw_a)), (17, ~balls_fit(z_a, dwe_a / dpw_a))]
+        found.checks += [(16, ~(dwe_a < dpw_a)), (17, ~balls_fit(z_a, dwe_a / dpw_a))]
         drawn_cup = inputs.get("drawn_cup")
         c_iso, fc = roller_dynamic_load_rating(z_a, dwe_a, lwe_a, dpw_a, alpha, rows,
                                                bearing_type=bearing_type,
@@ -152,17 +151,18 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
         c0_iso = roller_static_load_rating(z_a, dwe_a, lwe_a, dpw_a, alpha, rows,
                                            thrust=thrust)
         if c is None:
-            bad.append((18, np.isnan(fc)))
+            found.checks.append((18, np.isnan(fc)))
         out.update(static_load_rating_iso=c0_iso, dynamic_load_rating_iso=c_iso,
                    rating_factor=fc)
         c = c_iso if c is None else c
         c0 = c0_iso if c0 is None else c0
     out["dynamic_load_rating"] = c
-    c_used, c0_used = pair_ratings_used(arrangement, c, c0, FAMILY, out)
-    p = _equivalent_dynamic_load(inputs, bearing_type, thrust, double_row, alpha, fr, fa,
-                                 out, bad)
-    rating_life(inputs, thrust, speed, c_used, c0_used, p, out, flags, bad, family=FAMILY,
-                pair=arrangement in PAIRS)
+    c_used, c0_used, pair_results = pair_ratings_used(arrangement, c, c0, FAMILY)
+    out.update(pair_results)
+    p, load = _equivalent_dynamic_load(inputs, bearing_type, thrust, double_row, alpha, fr, fa)
+    found.add(load)
+    found.add(rating_life(inputs, thrust, speed, c_used, c0_used, p, family=FAMILY,
+                          pair=arrangement in PAIRS))
     out["dynamic_load_rating"] = c
     p0 = roller_static_equivalent_load(fr, fa, alpha, bearing_type=bearing_type,
                                        double_row=double_row, x0=inputs.get("load_x0"),
@@ -173,37 +173,34 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
                    static_safety_factor=s0,
                    static_safety_margin=s0 - np.asarray(inputs["min_static_safety"]))
     if has_geometry:
-        _contacts(inputs, bearing_type, thrust, arrangement, rows, alpha, fa, p0, out, flags,
-                  bad)
+        found.add(_contacts(inputs, bearing_type, thrust, arrangement, rows, alpha, fa, p0))
         out.update(roller_kinematics(z, dwe, dpw, alpha, inputs["inner_speed"],
                                      inputs["outer_speed"], thrust))
-    return Solution(*packed(RESULTS, out, flags, bad))
+    return Solution(*found.packed(RESULTS))
 
 
 def _equivalent_dynamic_load(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str,
                              thrust: bool, double_row: NDArray, alpha: NDArray, fr: NDArray,
-                             fa: NDArray, out: dict[str, ArrayLike],
-                             bad: list[tuple[int, ArrayLike]]) -> NDArray:
+                             fa: NDArray) -> tuple[NDArray, Found]:
     """P (ISO 281) and the factors applied; the thrust bearings' limits of Fa/Fr."""
     equivalent = roller_equivalent_dynamic_load(
         fr, fa, alpha, bearing_type=bearing_type, double_row=double_row,
         e=inputs.get("load_e"), y=inputs.get("load_y"), y1=inputs.get("load_y1"),
         y2=inputs.get("load_y2"), x=inputs.get("load_x"))
+    found = Found({"radial_factor": equivalent.x, "axial_factor": equivalent.y})
     if thrust:
         right = np.isclose(alpha, np.pi / 2, rtol=0.0, atol=1e-12)
-        bad += [(21, right & (fr > 0)), (20, ~right & ~equivalent.combined)]
+        found.checks += [(21, right & (fr > 0)), (20, ~right & ~equivalent.combined)]
     else:
-        bad.append((12, ~(equivalent.load > 0) & ((fr > 0) | (fa > 0))))
-    out.update(radial_factor=equivalent.x, axial_factor=equivalent.y)
+        found.checks.append((12, ~(equivalent.load > 0) & ((fr > 0) | (fa > 0))))
     if traits(bearing_type).load_rule is not LoadRule.RADIAL_ONLY:
-        out["axial_ratio_limit"] = equivalent.e
-    return equivalent.load
+        found.results["axial_ratio_limit"] = equivalent.e
+    return equivalent.load, found
 
 
-def _contacts(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str, thrust: bool,  # noqa: PLR0913  a numpy kernel of the rollers' array inputs
-              arrangement: str, rows: NDArray, alpha: NDArray, fa: NDArray, p0: NDArray,
-              out: dict[str, ArrayLike], flags: dict[str, ArrayLike],
-              bad: list[tuple[int, ArrayLike]]) -> None:
+def _contacts(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str, thrust: bool,
+              arrangement: str, rows: NDArray, alpha: NDArray, fa: NDArray, p0: NDArray
+              ) -> Found:
     """The most heavily loaded roller's line (or, crowned, point) contacts; a crowned
     roller's ellipse on its length: refused past 2·Lwe, a warning past Lwe."""
     sets = rows * (2.0 if arrangement in PAIRS else 1.0)
@@ -215,18 +212,18 @@ def _contacts(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str, t
         inputs["max_contact_pressure"],
         inputs.get("roller_profile_radius") if spherical else None,
         inputs.get("raceway_radius") if spherical else None)
-    out["max_roller_load"] = load
-    out.update(contacts)
     widest = np.maximum(contacts["inner_contact_half_width"],
                         contacts["outer_contact_half_width"])
-    bad.append((23 if thrust else 22,
-                ~(widest <= np.asarray(inputs["roller_diameter"], dtype=float) / 4.0)))
+    found = Found({"max_roller_load": load, **contacts}, checks=[(
+        23 if thrust else 22,
+        ~(widest <= np.asarray(inputs["roller_diameter"], dtype=float) / 4.0))])
     if "inner_contact_semi_major" in contacts:  # a crowned roller's ellipse on its length
         longest = np.maximum(contacts["inner_contact_semi_major"],
                              contacts["outer_contact_semi_major"])
         length = np.asarray(inputs["roller_length"], dtype=float)
-        bad.append((24, ~(longest <= length)))
-        flags["contact_ellipse_truncated"] = longest > length / 2.0
+        found.checks.append((24, ~(longest <= length)))
+        found.flags["contact_ellipse_truncated"] = longest > length / 2.0
+    return found
 
 
 def _given(value: ArrayLike | None) -> NDArray | None:

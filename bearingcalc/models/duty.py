@@ -174,9 +174,8 @@ class DutyCycleRules:
         """Each bin's name, by the prefix of its results (``duty_1``)."""
         if not self.duty_cycle:
             return {}
-        rows = bin_rows(len(self.duty_cycle))
-        return {row: item.name or str(k)
-                for k, (row, item) in enumerate(zip(rows, self.duty_cycle, strict=True), 1)}
+        rows = zip(bin_rows(len(self.duty_cycle)), self.duty_cycle, strict=True)
+        return {row: item.name or str(k) for k, (row, item) in enumerate(rows, 1)}
 
     def result_notes(self, results: Mapping[str, float | None],
                      tables: Sequence[ResultTable] = ()) -> list[str]:
