@@ -30,6 +30,7 @@ from bearingcalc.core.common import DerivedTest, Family, Found, balls_fit
 from bearingcalc.core.iso76 import static_equivalent_load, static_load_rating, static_safety_factor
 from bearingcalc.core.iso281 import dynamic_load_rating, equivalent_dynamic_load
 from bearingcalc.core.solver import Solution, Solver
+from bearingcalc.core.solver_inputs import RollingBearingInputs
 
 #: The rolling elements of every bearing this solver takes.
 FAMILY: Family = "ball"
@@ -167,7 +168,7 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
 }
 
 
-def evaluate(inputs: Mapping[str, ArrayLike | str | None],
+def evaluate(inputs: RollingBearingInputs,
              wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results, warning flags and status codes from SI inputs.
 
@@ -338,4 +339,5 @@ def _given_or(given: ArrayLike | None, computed: NDArray | None) -> NDArray | No
     return computed
 
 
-SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS, display=DISPLAY)
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS, display=DISPLAY,
+                inputs=RollingBearingInputs)

@@ -50,6 +50,7 @@ from bearingcalc.core.shaft_statics import (  # noqa: F401  (the drive's statics
     shaft_reactions,
 )
 from bearingcalc.core.solver import Along, AxisResults, DutyCycle, Members, Solution, Solver
+from bearingcalc.core.solver_inputs import BevelDriveInputs
 
 #: The load cases of an adjusted pair, as the table shows them.
 LOAD_CASES = {1.0: "1a", 2.0: "1b", 3.0: "1c", 4.0: "2a", 5.0: "2b", 6.0: "2c"}
@@ -135,7 +136,7 @@ BEARINGS = Members(rolling_bearing.SOLVER,
 
 
 
-def evaluate(inputs: Mapping[str, Any], wanted: Collection[str] | None = None) -> Solution:
+def evaluate(inputs: BevelDriveInputs, wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: the pair, each shaft's statics, each bearing's life and the
     system's (see :meth:`bearingcalc.models.bevel_drive.BevelDriveSpec.solver_inputs`).
 
@@ -341,4 +342,4 @@ SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
                 members=BEARINGS,
                 labels={"load_case": LOAD_CASES},
                 duty=DutyCycle(drive_cycle, DRIVE_CYCLE_RESULTS, DRIVE_BINS),
-                along={"member": MEMBER_RESULTS})
+                along={"member": MEMBER_RESULTS}, inputs=BevelDriveInputs)

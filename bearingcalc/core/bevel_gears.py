@@ -30,6 +30,7 @@ from bearingcalc.core.bevel_gears_results import (
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
 from bearingcalc.core.duty_cycle_gears import GEAR_BINS, GEAR_CYCLE_RESULTS, gear_pair_cycle
 from bearingcalc.core.solver import DutyCycle, Solution, Solver
+from bearingcalc.core.solver_inputs import BevelGearsInputs
 
 #: |γ − (α + β)| above which given angles are inconsistent. [rad] (about 2e-7 deg)
 ANGLE_SUM_TOLERANCE = 1e-9 * np.pi
@@ -196,7 +197,7 @@ def left_out(inputs: Mapping[str, ArrayLike | None]) -> tuple[str, ...]:
     return (EPICYCLIC_ONLY if fixed else ()) + (APEX_ONLY if fixed and solved else ())
 
 
-def evaluate(inputs: Mapping[str, ArrayLike | None],
+def evaluate(inputs: BevelGearsInputs,
              wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results and status codes from the spec's SI inputs.
 
@@ -297,4 +298,5 @@ def _safety_margins(rating: bevel_rating.PairRating, inputs: Mapping[str, ArrayL
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
-                duty=DutyCycle(gear_pair_cycle, GEAR_CYCLE_RESULTS, GEAR_BINS))
+                duty=DutyCycle(gear_pair_cycle, GEAR_CYCLE_RESULTS, GEAR_BINS),
+                inputs=BevelGearsInputs)

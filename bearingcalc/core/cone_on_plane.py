@@ -11,13 +11,14 @@ contact line. Inputs in SI (rad, rad/s, rad/s², m), floats or broadcasting arra
 
 from __future__ import annotations
 
-from collections.abc import Collection, Mapping
+from collections.abc import Collection
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
 from bearingcalc.core.solver import Solution, Solver
+from bearingcalc.core.solver_inputs import ConeOnPlaneInputs
 
 RESULTS: dict[str, tuple[str, str]] = {
     "precession_speed": ("rad/s", "Ω = −ω·tanβ, the contact line turning about the normal"),
@@ -89,7 +90,7 @@ def solve_cone_on_plane(half_angle: ArrayLike, spin_speed: ArrayLike, *,
     return broadcast_all(results)
 
 
-def evaluate(inputs: Mapping[str, ArrayLike | None],
+def evaluate(inputs: ConeOnPlaneInputs,
              wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results and status codes from the spec's SI inputs.
 
@@ -104,4 +105,4 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
     return Solution(results, status)
 
 
-SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS)
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, inputs=ConeOnPlaneInputs)

@@ -17,13 +17,14 @@ positive sense. Inputs in SI (m, rad/s, rad/s²), floats or broadcasting arrays.
 
 from __future__ import annotations
 
-from collections.abc import Collection, Mapping
+from collections.abc import Collection
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
 from bearingcalc.core.solver import Solution, Solver
+from bearingcalc.core.solver_inputs import DiskOnCircleInputs
 
 RESULTS: dict[str, tuple[str, str]] = {
     "center_distance": ("m", "distance OG: R + r (external) or R − r (internal)"),
@@ -118,7 +119,7 @@ def solve_disk_on_circle(disk_radius: ArrayLike, surface_radius: ArrayLike,
     })
 
 
-def evaluate(inputs: Mapping[str, ArrayLike],
+def evaluate(inputs: DiskOnCircleInputs,
              wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results and status codes from the spec's SI inputs.
 
@@ -134,4 +135,4 @@ def evaluate(inputs: Mapping[str, ArrayLike],
     return Solution(results, status)
 
 
-SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS)
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, inputs=DiskOnCircleInputs)

@@ -34,6 +34,7 @@ from bearingcalc.core.roller_ratings import (
     roller_static_load_rating,
 )
 from bearingcalc.core.solver import Solution, Solver
+from bearingcalc.core.solver_inputs import RollingBearingInputs
 
 FAMILY: Family = "roller"
 
@@ -121,7 +122,7 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
 }
 
 
-def evaluate(inputs: Mapping[str, ArrayLike | str | None],
+def evaluate(inputs: RollingBearingInputs,
              wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results, warning flags and status codes from SI inputs
     (see :meth:`bearingcalc.models.rolling_bearing.RollingBearingSpec.solver_inputs`)."""
@@ -231,4 +232,4 @@ def _given(value: ArrayLike | None) -> NDArray | None:
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
-                display=ball_bearing.DISPLAY)
+                display=ball_bearing.DISPLAY, inputs=RollingBearingInputs)

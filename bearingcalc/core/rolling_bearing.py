@@ -9,8 +9,6 @@ from __future__ import annotations
 
 from collections.abc import Collection, Mapping
 
-from numpy.typing import ArrayLike
-
 from bearingcalc.core import ball_bearing, roller_bearing
 from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.duty_cycle import (
@@ -19,6 +17,7 @@ from bearingcalc.core.duty_cycle import (
     rolling_bearing_cycle,
 )
 from bearingcalc.core.solver import DutyCycle, Solution, Solver
+from bearingcalc.core.solver_inputs import RollingBearingInputs
 
 
 def _union(first: Mapping, second: Mapping) -> dict:
@@ -53,7 +52,7 @@ STATUS_REASONS = _union(ball_bearing.STATUS_REASONS, roller_bearing.STATUS_REASO
 WARNINGS = _union(ball_bearing.WARNINGS, roller_bearing.WARNINGS)
 
 
-def evaluate(inputs: Mapping[str, ArrayLike | str | None],
+def evaluate(inputs: RollingBearingInputs,
              wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: the family's solver for the bearing's type."""
     family = (roller_bearing if traits(str(inputs["bearing_type"])).family == "roller"
@@ -63,4 +62,5 @@ def evaluate(inputs: Mapping[str, ArrayLike | str | None],
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
                 display=ball_bearing.DISPLAY,
-                duty=DutyCycle(rolling_bearing_cycle, BEARING_CYCLE_RESULTS, BEARING_BINS))
+                duty=DutyCycle(rolling_bearing_cycle, BEARING_CYCLE_RESULTS, BEARING_BINS),
+                inputs=RollingBearingInputs)

@@ -167,3 +167,5 @@ class Solver:
     labels: Mapping[str, Mapping[float, str]] = field(default_factory=dict)
     #: how the solver combines a duty cycle's bins, or None (no duty cycles)
     duty: DutyCycle | None = None
+    #: the typed mapping ``evaluate`` takes (one of :mod:`bearingcalc.core.solver_inputs`)
+    inputs: type | None = None

@@ -20,7 +20,7 @@ this module gives every speed, the status of each design and the registry's entr
 
 from __future__ import annotations
 
-from collections.abc import Collection, Mapping
+from collections.abc import Collection
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -33,6 +33,7 @@ from bearingcalc.core.common import (
     first_failure,
 )
 from bearingcalc.core.solver import Solution, Solver
+from bearingcalc.core.solver_inputs import ThrustBearingInputs
 from bearingcalc.core.thrust_bearing_contacts import ball_contact_loads
 from bearingcalc.core.thrust_bearing_geometry import (
     complete_geometry,
@@ -277,7 +278,7 @@ def _possible_geometry(r: NDArray, theta: NDArray, b: NDArray, ok: NDArray | Non
 _RATIO_ONLY = frozenset({"spin_to_roll", "slip_margin"})
 
 
-def evaluate(inputs: Mapping[str, ArrayLike | None],
+def evaluate(inputs: ThrustBearingInputs,
              wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results and status codes from the spec's SI inputs.
 
@@ -319,4 +320,4 @@ def evaluate(inputs: Mapping[str, ArrayLike | None],
     return Solution(results, status)
 
 
-SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS)
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, inputs=ThrustBearingInputs)

@@ -69,8 +69,9 @@ class Spec(SpecModel):
             raise problems[0]
         return self
 
-    def solver_inputs(self) -> dict[str, Any]:
-        """The SI inputs of the kind's solver (arrays where a study varies a field)."""
+    def solver_inputs(self) -> Mapping[str, Any]:
+        """The SI inputs of the kind's solver (arrays where a study varies a field): the
+        typed mapping its ``Solver.inputs`` declares."""
         raise NotImplementedError(f"{type(self).__name__} gives no solver inputs")
 
     def field_as_written(self, field: str) -> str:

@@ -10,6 +10,7 @@ from typing import Any, ClassVar, Literal
 from pydantic import Field, model_validator
 
 from bearingcalc.core.bearing_types import traits
+from bearingcalc.core.solver_inputs import BevelDriveInputs, MountedBearingInputs
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.bevel_gears import BevelGearsLimits, BevelPair
 from bearingcalc.models.duty import (
@@ -312,7 +313,7 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
             problems.append(SpecFieldError(f"{where}.{field}", problem.message, at=at))
         return problems
 
-    def solver_inputs(self) -> dict[str, Any]:
+    def solver_inputs(self) -> BevelDriveInputs:
         """SI inputs of :func:`bearingcalc.core.bevel_drive.evaluate`: the pair's (gear A
         turning at input_speed relative to a resting arm), and under ``shafts`` each
         shaft's bearings: position, locating, and its ball-bearing inputs without the
@@ -330,7 +331,7 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
         inputs["arrangements"] = {shaft: self.arrangement(shaft) for shaft, _ in self.shafts()}
         return inputs
 
-    def _bearing_inputs(self, bearing: DriveBearing) -> dict[str, Any]:
+    def _bearing_inputs(self, bearing: DriveBearing) -> MountedBearingInputs:
         own = {key: value for key, value in self.rolling_bearing(bearing).solver_inputs().items()
                if key not in (*_DRIVE_SETS, "min_rating_life")}
         return {"position": bearing.position,

@@ -9,6 +9,7 @@ from typing import Any, ClassVar, Literal
 
 from pydantic import Field
 
+from bearingcalc.core.solver_inputs import BevelGearsInputs
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.bevel_pair_rules import PairRules
@@ -235,7 +236,7 @@ class BevelGearsSpec(DutyCycleRules, BevelPair):
                                   "give face_width, torque or power, and rating too")
         return None
 
-    def solver_inputs(self) -> dict[str, Any]:
+    def solver_inputs(self) -> BevelGearsInputs:
         """SI inputs of :func:`bearingcalc.core.bevel_gears.evaluate`: of the operating
         point, or of every bin of the duty cycle."""
         if self.duty_cycle is not None:

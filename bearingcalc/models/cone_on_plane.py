@@ -2,10 +2,11 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Literal
 
 from pydantic import Field
 
+from bearingcalc.core.solver_inputs import ConeOnPlaneInputs
 from bearingcalc.models.base import Spec
 from bearingcalc.models.quantities import Angle, AngularAccel, AngularSpeed, PositiveLength
 
@@ -21,7 +22,7 @@ class ConeOnPlaneSpec(Spec):
     axis_point_height: PositiveLength | None = Field(
         None, description="height a above the plane of a point on the cone axis")
 
-    def solver_inputs(self) -> dict[str, Any]:
+    def solver_inputs(self) -> ConeOnPlaneInputs:
         """SI inputs of :func:`bearingcalc.core.cone_on_plane.evaluate`."""
         return {
             "half_angle": self.half_angle,

@@ -2,10 +2,11 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Literal
 
 from pydantic import Field
 
+from bearingcalc.core.solver_inputs import DiskOnCircleInputs
 from bearingcalc.models.base import Spec
 from bearingcalc.models.quantities import AngularAccel, AngularSpeed, PositiveLength
 
@@ -23,7 +24,7 @@ class DiskOnCircleSpec(Spec):
     surface_speed: AngularSpeed = Field(0.0, description="Ω; 0 for a fixed surface")
     surface_accel: AngularAccel = 0.0
 
-    def solver_inputs(self) -> dict[str, Any]:
+    def solver_inputs(self) -> DiskOnCircleInputs:
         """SI inputs of :func:`bearingcalc.core.disk_on_circle.evaluate`."""
         return {
             "disk_radius": self.disk_radius,

@@ -11,6 +11,7 @@ import numpy as np
 from pydantic import BeforeValidator, Field, StringConstraints, WithJsonSchema
 
 from bearingcalc.core.bearing_types import SPEC_NAMES, BearingTraits, traits, type_name
+from bearingcalc.core.solver_inputs import RollingBearingInputs
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.bearing_geometry_rules import GeometryRules
@@ -332,7 +333,7 @@ class RollingBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, Lubricati
                     "out")
         return None
 
-    def solver_inputs(self) -> dict[str, Any]:
+    def solver_inputs(self) -> RollingBearingInputs:
         """SI inputs of :func:`bearingcalc.core.rolling_bearing.evaluate`: of the
         operating point, or of every bin of the duty cycle."""
         if self.duty_cycle is not None:

@@ -2,10 +2,11 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Literal
 
 from pydantic import Field
 
+from bearingcalc.core.solver_inputs import ThrustBearingInputs
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.materials import BallMaterial
@@ -75,7 +76,7 @@ class ThrustBearingSpec(Spec):
             return self.ball_radius
         return None if self.ball_diameter is None else self.ball_diameter / 2.0
 
-    def solver_inputs(self) -> dict[str, Any]:
+    def solver_inputs(self) -> ThrustBearingInputs:
         """SI inputs of :func:`bearingcalc.core.thrust_bearing.evaluate`."""
         return {
             "ball_radius": self.ball_size,
