@@ -216,7 +216,7 @@ def check_files(files: Sequence[Path], jobs: int = 1,
     chunk_size = max(50, min(500, len(files) // (jobs * 4)))
     # fork shares the loaded modules with the workers: no second start-up per worker.
     context = get_context("fork") if "fork" in get_all_start_methods() else None
-    from bearingcalc.catalogue.fill import default_catalogue, set_default_catalogue
+    from bearingcalc.catalogue.places import default_catalogue, set_default_catalogue
 
     # A worker that does not fork learns the command's --catalogue here.
     with ProcessPoolExecutor(max_workers=jobs, mp_context=context,

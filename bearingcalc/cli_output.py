@@ -78,7 +78,7 @@ def refuse_unwritable(command: str, specs: Iterable[Path], *targets: Target | No
     (an input of every spec that names none, whether or not one does). A file found only
     in the work (a catalogue a spec names) is refused by ``StagedFiles`` once it is read.
     """
-    from bearingcalc.catalogue.fill import default_catalogue
+    from bearingcalc.catalogue.places import default_catalogue
 
     for spec in specs:
         reads.note(spec, "spec")

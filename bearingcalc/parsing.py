@@ -11,12 +11,11 @@ from __future__ import annotations
 
 import functools
 import re
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from pydantic import BaseModel, ValidationError
 
-from bearingcalc.catalogue.fill import CatalogueUse
-from bearingcalc.catalogue.fill import fill as fill_from_catalogue
+from bearingcalc.catalogue.places import names_a_designation
 from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind, unknown_kind
 from bearingcalc.models.base import Spec, nested_model
@@ -24,6 +23,9 @@ from bearingcalc.models.field_path import FieldPath, is_list_field
 from bearingcalc.models.rules import problems_despite
 from bearingcalc.models.yaml_loader import Document
 from bearingcalc.wording import closest, did_you_mean
+
+if TYPE_CHECKING:
+    from bearingcalc.catalogue.fill import CatalogueUse
 
 
 def parse_document(document: Document, *, rules: bool = True) -> tuple[Kind, Spec]:
@@ -39,17 +41,7 @@ def parse_document(document: Document, *, rules: bool = True) -> tuple[Kind, Spe
     kind = KINDS.get(kind_name) if isinstance(kind_name, str) else None
     if kind is None:
         raise document.error(unknown_kind(kind_name), field="kind")
-    try:
-        data, catalogue = fill_from_catalogue(
-            data, kind.model.CATALOGUE_PLACES, document.path,
-            lambda message, field: document.error(message, field=field))
-    except SpecError:
-        # 'catalog: bearings.csv' leaves the designation without its catalogue: the typo
-        # is the one cause, said at its line.
-        typos = _typo_problems(document, kind.model, data)
-        if typos:
-            raise _in_line_order(document, typos) from None
-        raise
+    data, catalogue = _filled(document, kind, data)
     try:
         spec = kind.model.model_validate(data, context=None if rules else {"rules": False})
     except ValidationError as exc:
@@ -68,7 +60,7 @@ def parse_document(document: Document, *, rules: bool = True) -> tuple[Kind, Spe
         errors = [_rule_error(document, each) for each in (problem, *problem.more)]
         raise _in_line_order(document, _at_catalogue_rows(document, errors, catalogue)
                              ) from None
-    if catalogue.rows:
+    if catalogue is not None and catalogue.rows:
         spec._catalogue_sources = catalogue.sources()
         spec._catalogue_notes = catalogue.notes
     elif "catalogue" in data:
@@ -78,10 +70,32 @@ def parse_document(document: Document, *, rules: bool = True) -> tuple[Kind, Spe
     return kind, spec
 
 
+def _filled(document: Document, kind: Kind, data: dict[str, Any]
+            ) -> tuple[dict[str, Any], CatalogueUse | None]:
+    """``data`` with its bearings filled from their catalogue rows, and what the
+    catalogue gave; None where no bearing names a designation (no catalogue is read)."""
+    if not names_a_designation(data, kind.model.CATALOGUE_PLACES):
+        return data, None
+    from bearingcalc.catalogue.fill import fill
+
+    try:
+        return fill(data, kind.model.CATALOGUE_PLACES, document.path,
+                    lambda message, field: document.error(message, field=field))
+    except SpecError:
+        # 'catalog: bearings.csv' leaves the designation without its catalogue: the typo
+        # is the one cause, said at its line.
+        typos = _typo_problems(document, kind.model, data)
+        if typos:
+            raise _in_line_order(document, typos) from None
+        raise
+
+
 def _at_catalogue_rows(document: Document, errors: list[SpecError],
-                       catalogue: CatalogueUse) -> list[SpecError]:
+                       catalogue: CatalogueUse | None) -> list[SpecError]:
     """``errors``, each of a value the catalogue filled (which the spec does not hold)
     said at the bearing's designation, with the catalogue's file, row line and column."""
+    if catalogue is None:
+        return errors
     out = []
     for error in errors:
         where = catalogue.filled.get(error.field or "")

@@ -25,7 +25,7 @@ def _keys_missing_and_unknown(inputs: dict[str, Any], declared: type) -> tuple[s
 
 @pytest.mark.parametrize("name", sorted(KINDS))
 def test_every_kind_declares_what_its_solver_takes(name):
-    declared = KINDS[name].solver.inputs
+    declared = KINDS[name].solver.input_type()
     assert declared is not None and declared.__required_keys__, name
 
 
@@ -33,7 +33,7 @@ def test_every_kind_declares_what_its_solver_takes(name):
 def test_the_inputs_of_every_example_are_the_declared_ones(path):
     kind, spec, _ = load_one_spec(path)
     inputs = dict(spec.solver_inputs())
-    missing, unknown = _keys_missing_and_unknown(inputs, kind.solver.inputs)
+    missing, unknown = _keys_missing_and_unknown(inputs, kind.solver.input_type())
     assert not missing and not unknown, (missing, unknown)
     has_cycle = getattr(spec, "duty_cycle", None) is not None
     assert has_cycle == (set(CycleInputs.__optional_keys__) <= set(inputs))
@@ -46,5 +46,5 @@ def test_the_check_finds_a_key_too_many_and_one_missing():
     kind, spec, _ = load_one_spec(ROOT / "specs" / "disk-on-circle.yaml")
     inputs = {**spec.solver_inputs(), "disk_radius_typo": 1.0}
     del inputs["disk_radius"]
-    assert _keys_missing_and_unknown(inputs, kind.solver.inputs) == ({"disk_radius"},
+    assert _keys_missing_and_unknown(inputs, kind.solver.input_type()) == ({"disk_radius"},
                                                                       {"disk_radius_typo"})

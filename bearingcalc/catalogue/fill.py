@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import copy
 import math
-import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -25,13 +24,17 @@ from bearingcalc.catalogue.catalogue import (
     normal_designation,
 )
 from bearingcalc.catalogue.columns import COLUMNS
+from bearingcalc.catalogue.places import (
+    CATALOGUE_VARIABLE,
+    default_catalogue,
+    names_a_designation,
+    spec_bearings,
+)
 from bearingcalc.core.bearing_types import traits, type_name
 from bearingcalc.errors import SpecError
 from bearingcalc.number_grammar import UNSIGNED_DECIMAL
 from bearingcalc.units import DIMENSIONLESS, UnitError, parse_quantity
 
-#: The environment variable that names a default catalogue.
-CATALOGUE_VARIABLE = "BEARINGCALC_CATALOGUE"
 #: Load-factor columns -> the field of a bearing's ``load_factors``: single row, double.
 FACTOR_FIELDS = {"e": ("e", "e"), "y1": (None, "y1"), "y2": ("y", "y2"), "y0": ("y0", "y0")}
 #: ``catalogue`` as a field's whole value, or before a tolerance (``catalogue ± 5 %``):
@@ -45,19 +48,6 @@ _DIRECT = {name: column.field for name, column in COLUMNS.items()
            if column.field is not None and "." not in column.field}
 #: Arrangements of two single-row bearings whose load factors are the pair's own.
 PAIRS = ("back-to-back", "face-to-face")
-
-_default: list[str | None] = [None]
-
-
-def set_default_catalogue(path: str | None) -> None:
-    """The catalogue of specs that name none (a command's ``--catalogue``); None for the
-    environment's (``BEARINGCALC_CATALOGUE``)."""
-    _default[0] = path
-
-
-def default_catalogue() -> str | None:
-    return _default[0] or os.environ.get(CATALOGUE_VARIABLE) or None
-
 
 @dataclass(frozen=True)
 class FilledFrom:
@@ -103,12 +93,11 @@ def fill(data: dict[str, Any], places: tuple[str, ...], spec_path: str,
     ``'pinion_bearings'``: each item of that list) filled from its catalogue row.
     ``error(message, field)`` makes the SpecError of a field of the spec."""
     use = CatalogueUse()
-    bearings = list(_bearings(data, places))
-    if not any(isinstance(b, dict) and "designation" in b for _, b in bearings):
+    if not names_a_designation(data, places):
         return data, use
     data = copy.deepcopy(data)
     catalogue: Catalogue | None = None
-    for place, bearing in _bearings(data, places):
+    for place, bearing in spec_bearings(data, places):
         if not isinstance(bearing, dict) or "designation" not in bearing:
             continue
         prefix = f"{place}." if place else ""
@@ -134,17 +123,6 @@ def fill(data: dict[str, Any], places: tuple[str, ...], spec_path: str,
         _fill_bearing(bearing, row, prefix, use, error, catalogue.path)
         use.rows[place] = row
     return data, use
-
-
-def _bearings(data: dict[str, Any], places: tuple[str, ...]) -> Any:
-    for place in places:
-        if not place:
-            yield "", data
-            continue
-        items = data.get(place)
-        if isinstance(items, list):
-            for i, item in enumerate(items, 1):
-                yield f"{place}.{i}", item
 
 
 def spec_catalogue(data: dict[str, Any], spec_path: str, error: Any, at: str | None,

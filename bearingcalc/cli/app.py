@@ -53,7 +53,7 @@ def whole_number(low: int, high: int | None = None) -> Callable[[int | None], in
 
 
 def _use_catalogue(path: Path | None) -> Path | None:
-    from bearingcalc.catalogue.fill import set_default_catalogue
+    from bearingcalc.catalogue.places import set_default_catalogue
 
     set_default_catalogue(None if path is None else str(path))
     return path

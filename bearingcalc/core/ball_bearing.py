@@ -12,6 +12,7 @@ the relations, their ranges and the sources.
 from __future__ import annotations
 
 from collections.abc import Collection, Mapping
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -30,7 +31,9 @@ from bearingcalc.core.common import DerivedTest, Family, Found, balls_fit
 from bearingcalc.core.iso76 import static_equivalent_load, static_load_rating, static_safety_factor
 from bearingcalc.core.iso281 import dynamic_load_rating, equivalent_dynamic_load
 from bearingcalc.core.solver import Solution, Solver
-from bearingcalc.core.solver_inputs import RollingBearingInputs
+
+if TYPE_CHECKING:
+    from bearingcalc.core.solver_inputs import RollingBearingInputs
 
 #: The rolling elements of every bearing this solver takes.
 FAMILY: Family = "ball"
@@ -340,4 +343,4 @@ def _given_or(given: ArrayLike | None, computed: NDArray | None) -> NDArray | No
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS, display=DISPLAY,
-                inputs=RollingBearingInputs)
+                inputs="RollingBearingInputs")

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Collection, Mapping
 from dataclasses import replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -50,7 +50,9 @@ from bearingcalc.core.shaft_statics import (  # noqa: F401  (the drive's statics
     shaft_reactions,
 )
 from bearingcalc.core.solver import Along, AxisResults, DutyCycle, Members, Solution, Solver
-from bearingcalc.core.solver_inputs import BevelDriveInputs
+
+if TYPE_CHECKING:
+    from bearingcalc.core.solver_inputs import BevelDriveInputs
 
 #: The load cases of an adjusted pair, as the table shows them.
 LOAD_CASES = {1.0: "1a", 2.0: "1b", 3.0: "1c", 4.0: "2a", 5.0: "2b", 6.0: "2c"}
@@ -342,4 +344,4 @@ SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
                 members=BEARINGS,
                 labels={"load_case": LOAD_CASES},
                 duty=DutyCycle(drive_cycle, DRIVE_CYCLE_RESULTS, DRIVE_BINS),
-                along={"member": MEMBER_RESULTS}, inputs=BevelDriveInputs)
+                along={"member": MEMBER_RESULTS}, inputs="BevelDriveInputs")

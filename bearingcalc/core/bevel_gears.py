@@ -15,6 +15,7 @@ Inputs in SI (m, rad, rad/s), floats or broadcasting arrays.
 from __future__ import annotations
 
 from collections.abc import Collection, Mapping
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -30,7 +31,9 @@ from bearingcalc.core.bevel_gears_results import (
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
 from bearingcalc.core.duty_cycle_gears import GEAR_BINS, GEAR_CYCLE_RESULTS, gear_pair_cycle
 from bearingcalc.core.solver import DutyCycle, Solution, Solver
-from bearingcalc.core.solver_inputs import BevelGearsInputs
+
+if TYPE_CHECKING:
+    from bearingcalc.core.solver_inputs import BevelGearsInputs
 
 #: |γ − (α + β)| above which given angles are inconsistent. [rad] (about 2e-7 deg)
 ANGLE_SUM_TOLERANCE = 1e-9 * np.pi
@@ -299,4 +302,4 @@ def _safety_margins(rating: bevel_rating.PairRating, inputs: Mapping[str, ArrayL
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
                 duty=DutyCycle(gear_pair_cycle, GEAR_CYCLE_RESULTS, GEAR_BINS),
-                inputs=BevelGearsInputs)
+                inputs="BevelGearsInputs")

@@ -12,13 +12,16 @@ contact line. Inputs in SI (rad, rad/s, rad/s², m), floats or broadcasting arra
 from __future__ import annotations
 
 from collections.abc import Collection
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
 from bearingcalc.core.solver import Solution, Solver
-from bearingcalc.core.solver_inputs import ConeOnPlaneInputs
+
+if TYPE_CHECKING:
+    from bearingcalc.core.solver_inputs import ConeOnPlaneInputs
 
 RESULTS: dict[str, tuple[str, str]] = {
     "precession_speed": ("rad/s", "Ω = −ω·tanβ, the contact line turning about the normal"),
@@ -105,4 +108,4 @@ def evaluate(inputs: ConeOnPlaneInputs,
     return Solution(results, status)
 
 
-SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, inputs=ConeOnPlaneInputs)
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, inputs="ConeOnPlaneInputs")

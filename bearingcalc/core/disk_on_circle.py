@@ -18,13 +18,16 @@ positive sense. Inputs in SI (m, rad/s, rad/s²), floats or broadcasting arrays.
 from __future__ import annotations
 
 from collections.abc import Collection
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core.common import broadcast_all, first_failure, nan_where
 from bearingcalc.core.solver import Solution, Solver
-from bearingcalc.core.solver_inputs import DiskOnCircleInputs
+
+if TYPE_CHECKING:
+    from bearingcalc.core.solver_inputs import DiskOnCircleInputs
 
 RESULTS: dict[str, tuple[str, str]] = {
     "center_distance": ("m", "distance OG: R + r (external) or R − r (internal)"),
@@ -135,4 +138,4 @@ def evaluate(inputs: DiskOnCircleInputs,
     return Solution(results, status)
 
 
-SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, inputs=DiskOnCircleInputs)
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, inputs="DiskOnCircleInputs")

@@ -12,6 +12,7 @@ the contacts and kinematics (:mod:`bearingcalc.core.roller_bearing_contacts`). S
 from __future__ import annotations
 
 from collections.abc import Collection, Mapping
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -34,7 +35,9 @@ from bearingcalc.core.roller_ratings import (
     roller_static_load_rating,
 )
 from bearingcalc.core.solver import Solution, Solver
-from bearingcalc.core.solver_inputs import RollingBearingInputs
+
+if TYPE_CHECKING:
+    from bearingcalc.core.solver_inputs import RollingBearingInputs
 
 FAMILY: Family = "roller"
 
@@ -232,4 +235,4 @@ def _given(value: ArrayLike | None) -> NDArray | None:
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
-                display=ball_bearing.DISPLAY, inputs=RollingBearingInputs)
+                display=ball_bearing.DISPLAY, inputs="RollingBearingInputs")

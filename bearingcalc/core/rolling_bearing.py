@@ -8,6 +8,7 @@ design has the results of its own family. See ``docs/physics.md`` §5–§7.
 from __future__ import annotations
 
 from collections.abc import Collection, Mapping
+from typing import TYPE_CHECKING
 
 from bearingcalc.core import ball_bearing, roller_bearing
 from bearingcalc.core.bearing_types import traits
@@ -17,7 +18,9 @@ from bearingcalc.core.duty_cycle import (
     rolling_bearing_cycle,
 )
 from bearingcalc.core.solver import DutyCycle, Solution, Solver
-from bearingcalc.core.solver_inputs import RollingBearingInputs
+
+if TYPE_CHECKING:
+    from bearingcalc.core.solver_inputs import RollingBearingInputs
 
 
 def _union(first: Mapping, second: Mapping) -> dict:
@@ -63,4 +66,4 @@ def evaluate(inputs: RollingBearingInputs,
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
                 display=ball_bearing.DISPLAY,
                 duty=DutyCycle(rolling_bearing_cycle, BEARING_CYCLE_RESULTS, BEARING_BINS),
-                inputs=RollingBearingInputs)
+                inputs="RollingBearingInputs")

@@ -167,5 +167,12 @@ class Solver:
     labels: Mapping[str, Mapping[float, str]] = field(default_factory=dict)
     #: how the solver combines a duty cycle's bins, or None (no duty cycles)
     duty: DutyCycle | None = None
-    #: the typed mapping ``evaluate`` takes (one of :mod:`bearingcalc.core.solver_inputs`)
-    inputs: type | None = None
+    #: the name of the typed mapping ``evaluate`` takes in
+    #: :mod:`bearingcalc.core.solver_inputs` (by name: a solve never needs the class)
+    inputs: str = ""
+
+    def input_type(self) -> type:
+        """The ``TypedDict`` of what ``evaluate`` takes."""
+        from bearingcalc.core import solver_inputs
+
+        return getattr(solver_inputs, self.inputs)

@@ -21,6 +21,7 @@ this module gives every speed, the status of each design and the registry's entr
 from __future__ import annotations
 
 from collections.abc import Collection
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -33,7 +34,6 @@ from bearingcalc.core.common import (
     first_failure,
 )
 from bearingcalc.core.solver import Solution, Solver
-from bearingcalc.core.solver_inputs import ThrustBearingInputs
 from bearingcalc.core.thrust_bearing_contacts import ball_contact_loads
 from bearingcalc.core.thrust_bearing_geometry import (
     complete_geometry,
@@ -47,6 +47,9 @@ from bearingcalc.core.thrust_bearing_geometry import (
     spin_to_roll_from_terms,
     spin_to_roll_ratio,
 )
+
+if TYPE_CHECKING:
+    from bearingcalc.core.solver_inputs import ThrustBearingInputs
 
 #: What the package and the registry read from this module, the geometry's functions
 #: among them.
@@ -320,4 +323,4 @@ def evaluate(inputs: ThrustBearingInputs,
     return Solution(results, status)
 
 
-SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, inputs=ThrustBearingInputs)
+SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, inputs="ThrustBearingInputs")

@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import math
 
-from bearingcalc.catalogue.designation import parse_designation
 from bearingcalc.core.bearing_types import AngleRule, LoadRule
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.bearing_reads import ReadsBearing
@@ -46,8 +45,12 @@ class LoadRules(ReadsBearing):
     def _ribless_ring_takes_no_thrust(self) -> SpecFieldError | None:
         """An NU bearing has no ribs on its inner ring, an N bearing none on its outer:
         neither carries an axial load (NJ, NUP and NF do)."""
-        parsed = parse_designation(self.designation) if self.designation else None
-        if parsed is None or not self.axial_load > 0:
+        if not self.designation or not self.axial_load > 0:
+            return None
+        from bearingcalc.catalogue.designation import parse_designation  # only with one
+
+        parsed = parse_designation(self.designation)
+        if parsed is None:
             return None
         form = parsed.basic.rstrip("0123456789")
         ring = dict(self.type_traits.ribless_forms).get(form)

@@ -5,12 +5,11 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from typing import Any, ClassVar, Literal
+from typing import TYPE_CHECKING, Any, ClassVar, Literal
 
 from pydantic import Field, model_validator
 
 from bearingcalc.core.bearing_types import traits
-from bearingcalc.core.solver_inputs import BevelDriveInputs, MountedBearingInputs
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.bevel_gears import BevelGearsLimits, BevelPair
 from bearingcalc.models.duty import (
@@ -37,6 +36,9 @@ from bearingcalc.models.rolling_bearing import (
     UnitFraction,
 )
 from bearingcalc.models.rules import own_problems, rule
+
+if TYPE_CHECKING:
+    from bearingcalc.core.solver_inputs import BevelDriveInputs, MountedBearingInputs
 
 #: Keys of a ball-bearing spec that the drive sets for every bearing itself.
 _DRIVE_SETS = ("radial_load", "axial_load", "speed", "inner_speed", "outer_speed")

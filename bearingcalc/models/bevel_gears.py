@@ -5,11 +5,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Collection, Mapping
-from typing import Any, ClassVar, Literal
+from typing import TYPE_CHECKING, Any, ClassVar, Literal
 
 from pydantic import Field
 
-from bearingcalc.core.solver_inputs import BevelGearsInputs
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.bevel_pair_rules import PairRules
@@ -24,6 +23,9 @@ from bearingcalc.models.quantities import (
     Torque,
 )
 from bearingcalc.models.rules import rule, whole_spec_rule
+
+if TYPE_CHECKING:
+    from bearingcalc.core.solver_inputs import BevelGearsInputs
 
 
 class Gear(SpecModel):

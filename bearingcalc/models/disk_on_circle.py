@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 from pydantic import Field
 
-from bearingcalc.core.solver_inputs import DiskOnCircleInputs
 from bearingcalc.models.base import Spec
 from bearingcalc.models.quantities import AngularAccel, AngularSpeed, PositiveLength
+
+if TYPE_CHECKING:
+    from bearingcalc.core.solver_inputs import DiskOnCircleInputs
 
 
 class DiskOnCircleSpec(Spec):

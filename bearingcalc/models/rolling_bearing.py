@@ -5,13 +5,12 @@ rating life and ISO 76 static safety of ball and roller bearings (``docs/physics
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Annotated, Any, ClassVar, Literal
+from typing import TYPE_CHECKING, Annotated, Any, ClassVar, Literal
 
 import numpy as np
 from pydantic import BeforeValidator, Field, StringConstraints, WithJsonSchema
 
 from bearingcalc.core.bearing_types import SPEC_NAMES, BearingTraits, traits, type_name
-from bearingcalc.core.solver_inputs import RollingBearingInputs
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.bearing_geometry_rules import GeometryRules
@@ -51,6 +50,9 @@ from bearingcalc.models.quantities import (
     PositiveTime,
 )
 from bearingcalc.models.rules import rule
+
+if TYPE_CHECKING:
+    from bearingcalc.core.solver_inputs import RollingBearingInputs
 
 RELIABILITY_RANGE = (0.90, 0.9995)
 #: ISO 76:2006 6.1: the contact pressure at C0 of a ball bearing and of a roller bearing.

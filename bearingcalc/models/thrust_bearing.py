@@ -2,17 +2,19 @@
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 from pydantic import Field
 
-from bearingcalc.core.solver_inputs import ThrustBearingInputs
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.materials import BallMaterial
 from bearingcalc.models.plain_numbers import BallCount, Ratio
 from bearingcalc.models.quantities import Angle, AngularSpeed, Force, PositiveLength, PositiveStress
 from bearingcalc.models.rules import rule
+
+if TYPE_CHECKING:
+    from bearingcalc.core.solver_inputs import ThrustBearingInputs
 
 _GEOMETRY = ("ball size", "contact_angle", "pitch_radius")
 
