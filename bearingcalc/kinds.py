@@ -12,7 +12,7 @@ import functools
 import importlib
 from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -40,8 +40,7 @@ OUT_OF_RANGE_REASON = ("", "the design's numbers are out of the range of double 
                        "check the magnitudes of the inputs")
 
 
-@dataclass(frozen=True)
-class Plot:
+class Plot(NamedTuple):
     """A drawing of the kind's calculation report: its name among the report's drawings
     (:data:`bearingcalc.plots.report.DRAWINGS`) and, for a drawing that evaluates more
     than the results, the solver function it calls ("module:function", imported on

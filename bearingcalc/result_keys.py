@@ -12,15 +12,14 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, NamedTuple
 
 from numpy.typing import NDArray
 
 from bearingcalc.core.solver import Along, AxisResults
 
 
-@dataclass(frozen=True)
-class ResultTable:
+class ResultTable(NamedTuple):
     """Results along an axis shown as a table of their own: a row per position (a
     bearing, a bin), a column per quantity, and the flat key of every cell (None where
     the row has no such value)."""

@@ -12,8 +12,8 @@ spellings (``thrust`` for ``thrust-ball``) resolve to it in :func:`traits`.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from enum import Enum
+from typing import NamedTuple
 
 from bearingcalc.core.common import Family
 
@@ -66,8 +66,7 @@ ROLLER_FIELDS = frozenset({"roller_count", "roller_diameter", "roller_length", "
 CROWN_FIELDS = frozenset({"roller_profile_radius", "raceway_radius"})
 
 
-@dataclass(frozen=True)
-class BearingTraits:
+class BearingTraits(NamedTuple):
     """What a bearing type is (see the module's docstring)."""
 
     name: str

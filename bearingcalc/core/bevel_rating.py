@@ -9,8 +9,7 @@ that form is written.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -113,8 +112,7 @@ def life_factors(cycles: ArrayLike) -> tuple[NDArray, NDArray]:
             agma_life.life_factor(cycles, agma_life.CONTACT_LIFE_CURVE))
 
 
-@dataclass(frozen=True)
-class PairRatingInput:
+class PairRatingInput(NamedTuple):
     """The terms of an AGMA 2003 rating of a bevel pair (SI, broadcasting arrays), in the
     order of the worked examples' positional form (:func:`agma_rating`)."""
 
@@ -142,8 +140,7 @@ class PairRatingInput:
     gear: GearMemberTerms | None = None
 
 
-@dataclass(frozen=True)
-class GearMemberRating:
+class GearMemberRating(NamedTuple):
     """Gear B's bending stress [Pa] and its safety factors [1]."""
 
     bending_stress: NDArray
@@ -151,8 +148,7 @@ class GearMemberRating:
     contact_safety: NDArray
 
 
-@dataclass(frozen=True)
-class PairRating:
+class PairRating(NamedTuple):
     """The AGMA 2003 rating of a pair: the pinion's stresses [Pa], safety factors [1]
     and the powers at which they reach 1 [W]; gear B's where it was rated."""
 

@@ -6,8 +6,7 @@ member axis (``docs/physics.md`` §9). Inputs are SI floats or broadcasting arra
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -36,8 +35,7 @@ BEARING_RESULTS: dict[str, tuple[str, str]] = {
 }
 
 
-@dataclass(frozen=True)
-class MountedBearing:
+class MountedBearing(NamedTuple):
     """One bearing on its shaft, solved: its row along the member axis, its name in the
     spec, the shaft's heading, the loads from the statics [N], and its own solution as
     a rolling bearing (per bin, in a duty cycle)."""

@@ -8,8 +8,7 @@ Every function takes SI values as floats or numpy arrays and returns arrays.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -118,8 +117,7 @@ def hardness_ratio_factor(pinion_hardness: ArrayLike, gear_hardness: ArrayLike,
     return 1.0 + b1 * (np.maximum(np.asarray(gear_ratio, dtype=float), 1.0) - 1.0)
 
 
-@dataclass(frozen=True)
-class GearMemberTerms:
+class GearMemberTerms(NamedTuple):
     """What rating gear B as well takes beyond the pinion's terms."""
 
     #: J_G, gear B's bending geometry factor. [1]

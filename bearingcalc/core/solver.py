@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -31,8 +31,7 @@ from numpy.typing import NDArray
 AXES = ("member", "bin", "element", "lamina")
 
 
-@dataclass(frozen=True)
-class AxisResults:
+class AxisResults(NamedTuple):
     """What a solver declares of its results along one axis of :data:`AXES`."""
 
     #: column -> (SI unit, meaning), in report order
