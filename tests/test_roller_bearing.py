@@ -189,6 +189,19 @@ def test_static_equivalent_load(fr, fa, alpha, kind, double, factors):
 # Figure 4 and its continuity, L10's and Cu's printed exponents as measured slopes, pairs
 # and system lives from the Weibull survival product.
 
+def a_iso(kappa, ec, cu, p, thrust=False):
+    """ISO 281:2007, 9.3 (life modification factor), roller bearings, as transcribed for
+    the tests of the options (tests/test_iso281_options.py); thrust bearings take
+    eC·Cu/(2.5·P). Capped at 50, and 50 where the bracket is not positive. The
+    transcription is itself checked against the points of GOST 18855-2013's Figure 4
+    (tests/test_roller_life_published.py), as the solver is."""
+    x2, e1 = ((1.3993, 0.054381) if kappa < 0.4 else (1.2348, 0.19087) if kappa < 1
+              else (1.2348, 0.071739))
+    load = ec * cu / p / (2.5 if thrust else 1.0)
+    bracket = 1 - (1.5859 - x2 / kappa ** e1) * load ** 0.4
+    return 50.0 if bracket <= 0 else min(50.0, 0.1 * bracket ** -9.185)
+
+
 # --- 7. pairs and induced axial forces ---------------------------------------------------------
 
 @pytest.mark.parametrize(("alpha", "factor"), [(20, 0.50), (25, 0.57), (30, 0.66), (40, 0.88),

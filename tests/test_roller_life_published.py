@@ -30,6 +30,7 @@ from scipy.optimize import brentq
 from bearingcalc.core import arrangements, iso281
 from bearingcalc.core.bearing_life import ROLLER_WEIBULL_SLOPE, WEIBULL_SLOPE, system_life
 from tests.conftest import solve_json
+from tests.test_roller_bearing import a_iso as transcribed_a_iso
 
 # --- aISO: Figure 4 of (G) read at printed points --------------------------------------------
 
@@ -52,16 +53,24 @@ def roller_a_iso(kappa, load_ratio, thrust=False):
                                                  family="roller"))
 
 
+#: The solver's aISO and the transcription other tests compare the options with.
+A_ISO_UNDER_TEST = {"solver": roller_a_iso,
+                    "transcription": lambda kappa, ratio: transcribed_a_iso(kappa, 1.0,
+                                                                            ratio, 1.0)}
+
+
+@pytest.mark.parametrize("which", sorted(A_ISO_UNDER_TEST))
 @pytest.mark.parametrize(("load_ratio", "kappa", "printed"),
                          [(x, k, a) for x, row in FIGURE_4_READINGS.items()
                           for k, a in row.items()])
-def test_a_iso_passes_through_the_printed_diagram(load_ratio, kappa, printed):
-    """The solver's curve must cross the box of ±READING_PX around each point read off
-    (G) Figure 4; aISO rises with eC·Cu/P, so the box's left and right edges bound it."""
+def test_a_iso_passes_through_the_printed_diagram(load_ratio, kappa, printed, which):
+    """The curve must cross the box of ±READING_PX around each point read off (G)
+    Figure 4; aISO rises with eC·Cu/P, so the box's left and right edges bound it."""
+    curve = A_ISO_UNDER_TEST[which]
     dx = 10 ** (READING_PX / PX_PER_DECADE_ACROSS)
     dy = 10 ** (READING_PX / PX_PER_DECADE_UP)
-    assert roller_a_iso(kappa, load_ratio / dx) <= printed * dy
-    assert roller_a_iso(kappa, load_ratio * dx) >= printed / dy
+    assert curve(kappa, load_ratio / dx) <= printed * dy
+    assert curve(kappa, load_ratio * dx) >= printed / dy
 
 
 def test_the_diagram_tells_a_wrong_branch():
