@@ -102,7 +102,7 @@ def point_contact(sum_rho: float, curvature_difference: float, reduced_modulus: 
 
     With 1/E* = 2(1−ν²)/E for two equal steels, Q = K·δ^(3/2) where
         δ = (2·K(m)/π)·(π/(2κ²E(m)))^(1/3)·(Σρ/2)·(3Q/(2Σρ E*))^(2/3),
-    and the semi-axes a = (6κ²E(m)Q/(πΣρE*))^(1/3), b = (6E(m)Q/(πκΣρE*))^(1/3), the
+    and the semi-axes a = (3κ²E(m)Q/(πΣρE*))^(1/3), b = (3E(m)Q/(πκΣρE*))^(1/3), the
     maximum pressure 3Q/(2πab). Returns K [N/m^1.5], κ and, given a load [N], a, b [m] and
     p_max [Pa].
     """
@@ -114,8 +114,8 @@ def point_contact(sum_rho: float, curvature_difference: float, reduced_modulus: 
     c = delta_star * sum_rho / 2.0 * (3.0 / (2.0 * sum_rho * reduced_modulus)) ** (2.0 / 3.0)
     out = {"stiffness": c**-1.5, "ellipticity": kappa, "compliance": c}
     if load is not None:
-        a = (6.0 * kappa**2 * ee * load / (math.pi * sum_rho * reduced_modulus)) ** (1 / 3)
-        b = (6.0 * ee * load / (math.pi * kappa * sum_rho * reduced_modulus)) ** (1 / 3)
+        a = (3.0 * kappa**2 * ee * load / (math.pi * sum_rho * reduced_modulus)) ** (1 / 3)
+        b = (3.0 * ee * load / (math.pi * kappa * sum_rho * reduced_modulus)) ** (1 / 3)
         out.update(a=a, b=b, pressure=1.5 * load / (math.pi * a * b) if load > 0 else 0.0)
     return out
 
@@ -212,8 +212,9 @@ def ball_state(bearing: BallBearing, q) -> dict[str, np.ndarray]:
     deflection = dist - bearing.groove_distance
     load = bearing.spring_constant * np.maximum(deflection, 0.0) ** 1.5
     ddelta = (sx[:, None] * dsx + sr[:, None] * dsr) / dist[:, None]
+    energy = 0.4 * bearing.spring_constant * np.sum(np.maximum(deflection, 0.0) ** 2.5)
     return {"azimuth": bearing.azimuths, "deflection": deflection, "load": load,
-            "angle": np.arctan2(sx, sr), "force": load @ ddelta}
+            "angle": np.arctan2(sx, sr), "force": load @ ddelta, "energy": energy}
 
 
 def ball_pressures(bearing: BallBearing, load: np.ndarray, angle: np.ndarray):
@@ -305,7 +306,9 @@ def roller_state(bearing: RollerBearing, q) -> dict[str, np.ndarray]:
     gap = bearing.diametral_clearance / 2.0 * math.cos(alpha) + 2.0 * bearing.profile_drop
     deflection = grad @ q - gap[None, :]
     lamina = bearing.spring_constant / bearing.laminae * np.maximum(deflection, 0.0) ** (10 / 9)
-    return {"azimuth": psi, "deflection": deflection, "lamina_load": lamina,
+    energy = 9 / 19 * bearing.spring_constant / bearing.laminae * np.sum(
+        np.maximum(deflection, 0.0) ** (19 / 9))
+    return {"azimuth": psi, "deflection": deflection, "lamina_load": lamina, "energy": energy,
             "load": lamina.sum(axis=1), "force": np.einsum("jk,jkd->d", lamina, grad)}
 
 
@@ -340,10 +343,14 @@ def _initial_guesses(bearing, free: np.ndarray, forces: np.ndarray) -> list[np.n
     norm = np.linalg.norm(direction[free])
     unit = direction / norm if norm > 0 else np.zeros(5)
     guesses = []
-    for size in (10.0, 30.0, 3.0, 100.0, 1.0):
+    for size in (10.0, 30.0, 3.0, 100.0, 1.0, 0.3, 0.1):
         g = size * unit
         g[0] += 0.5 * size if forces[0] == 0 else 0.0  # break the deep-groove symmetry
         guesses.append(g[free])
+        if forces[0] > 0:  # a one-sided bearing: every element in contact to start
+            g = g.copy()
+            g[0] = 3.0 * size
+            guesses.append(g[free])
     return guesses
 
 
