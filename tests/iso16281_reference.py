@@ -78,7 +78,8 @@ def ellipticity(curvature_difference: float) -> float:
         ek, ee = special.ellipk(m), special.ellipe(m)
         return ((kappa**2 + 1.0) * ee - 2.0 * ek) / ((kappa**2 - 1.0) * ee) - curvature_difference
 
-    return optimize.brentq(residual, 1.0 + 1e-12, 1e4, xtol=1e-15, rtol=1e-15)
+    # below κ − 1 ≈ 1e-7 the residual is lost to cancellation (F ≈ 0.75·(κ − 1))
+    return optimize.brentq(residual, 1.0 + 1e-7, 1e4, xtol=1e-15, rtol=1e-15)
 
 
 def ball_raceway_curvatures(ball_diameter: float, pitch_diameter: float, conformity: float,

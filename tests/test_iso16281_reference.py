@@ -311,3 +311,38 @@ def test_imposed_misalignment_of_a_tilted_cylindrical_bearing():
     assert first[0] < first[15] and np.all(np.isfinite(first))
     life = ref.roller_reference_life(bearing, solved["lamina_load"], 75464.0)
     assert 0 < life["life_million"] < np.inf
+
+
+def test_nasa_appendix_d_load_gives_1200_mpa():
+    """NASA/TM-2012-217115 Appendix D, example 1: Pr = 627 N 'was chosen such that at zero
+    clearance it produces an inner-race maximum Hertz stress of 1200 MPa' (210 bearing);
+    the exact Hertz pressure at the operating contact, to the three figures printed."""
+    bearing = _nasa_210(0.0)
+    solved = ref.solve_equilibrium(bearing, (0, 627.0, 0, 0, 0), PLANAR)
+    inner, outer = ref.ball_pressures(bearing, solved["load"], solved["angle"])
+    assert inner.max() == pytest.approx(1200e6, rel=2e-3)
+    assert outer.max() < inner.max()
+
+
+def test_hertz_sphere_limit():
+    """Johnson, Contact Mechanics eq. 4.22: a sphere pressed on a flat of the same steel,
+    a³ = 3QR/(4E*), p0 = 3Q/(2πa²), δ = a²/R (κ → 1 as F(ρ) → 0)."""
+    radius, load = 5e-3, 100.0
+    e_star = ref.reduced_modulus(2.1e11, 0.3)
+    contact = ref.point_contact(2.0 / radius, 1e-5, e_star, load)
+    a = (3 * load * radius / (4 * e_star)) ** (1 / 3)
+    assert contact["a"] == pytest.approx(a, rel=3e-5)
+    assert contact["pressure"] == pytest.approx(1.5 * load / (math.pi * a * a), rel=3e-5)
+    assert contact["compliance"] * load ** (2 / 3) == pytest.approx(a * a / radius, rel=3e-5)
+
+
+def test_imposed_misalignment_and_its_moment_give_the_same_equilibrium():
+    """Held at an imposed tilt, the contacts' moment is the reaction; applying that moment
+    with the tilt free gives back the same displacement (angular-contact, 1 mrad)."""
+    bearing = ref.BallBearing(12, 10 * MM, 50 * MM, 0.52, 0.53,
+                              free_contact_angle=math.radians(30.0))
+    held = ref.solve_equilibrium(bearing, (2000.0, 1000.0, 0, 0, 0),
+                                 {"tilt_y": 0.0, "tilt_z": 1e-3})
+    free = ref.solve_equilibrium(bearing, held["reaction"])
+    assert free["residual"] < 1e-9
+    assert free["q"] == pytest.approx(held["q"], rel=1e-8, abs=1e-14)
