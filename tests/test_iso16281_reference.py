@@ -346,3 +346,18 @@ def test_imposed_misalignment_and_its_moment_give_the_same_equilibrium():
     free = ref.solve_equilibrium(bearing, held["reaction"])
     assert free["residual"] < 1e-9
     assert free["q"] == pytest.approx(held["q"], rel=1e-8, abs=1e-14)
+
+
+def test_iso281_constants_are_the_load_distribution_means():
+    """The constants of ISO's Q_c formulas are Lundberg–Palmgren's J1, J2 at ε = ½ by quad:
+    point contact J_r/(mean cos^4.5)^(1/3) = 0.40681 (ISO 0.407), J_r/(mean cos^5)^0.3 =
+    0.38954 (ISO 0.389); line contact J_r/(mean cos^(40/9))^(1/4) = 0.3764 (ISO 0.378) and
+    J_r/(mean cos^5)^(2/9) = 0.3630 (ISO 0.364), λν = 0.83 apart. The
+    ball limit L10r/(C/Fr)³ therefore lies between (J1/0.407)³ = 0.99857 and
+    (J2/0.389)³ = 1.00419, by the geometry's weights of the two rings."""
+    jr = ref.load_integrals(0.5, 1.5)[0]
+    assert jr / ref.mean_power_integral(0.5, 4.5) ** (1 / 3) == pytest.approx(0.407, abs=5e-4)
+    assert jr / ref.mean_power_integral(0.5, 5.0) ** 0.3 == pytest.approx(0.389, abs=1e-3)
+    jl = ref.load_integrals(0.5, 10 / 9)[0]
+    assert jl / ref.mean_power_integral(0.5, 40 / 9) ** 0.25 == pytest.approx(0.378, rel=5e-3)
+    assert jl / ref.mean_power_integral(0.5, 5.0) ** (2 / 9) == pytest.approx(0.364, rel=5e-3)
