@@ -1,0 +1,241 @@
+"""The load on every ball of a radial ball bearing from the rings' displacements
+(ISO/TS 16281:2008, 5 to 7): rigid rings, elastic Hertz contacts, low speed.
+
+Vectorised over designs: every input is an array over N designs (or a scalar), the balls
+of each design padded to the largest count and masked. The equilibrium is found by a
+damped Newton method on the bearing's potential energy, which is convex in the inner
+ring's displacement, with its analytic gradient (the ring's internal force) and Hessian
+(the tangent stiffness).
+
+Frame and signs: x along the bearing axis, positive along the axial load on the inner
+ring; y along the radial load; the ball at azimuth ψ = 0 on +y, ψ counted toward +z. The
+inner ring's displacement relative to the outer ring is q = (δx, δy, δz, θy, θz) [m, m,
+m, rad, rad]; a positive θz (and tilting moment Mz) increases the axial approach of the
+ball at ψ = 0. The loads F = (Fx, Fy, Fz, My, Mz) act on the inner ring at the bearing's
+centre plane, work-conjugate to q.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+#: The displacements' order, and the stiffness matrix's.
+DEGREES_OF_FREEDOM = ("x", "y", "z", "tilt_y", "tilt_z")
+#: The degrees of freedom a load in the plane of the radial load moves: δx, δy, θz.
+IN_PLANE = (0, 1, 4)
+#: The relative residual at which the equilibrium counts as found.
+RESIDUAL_TOLERANCE = 1e-12
+MAX_ITERATIONS = 80
+
+
+class BallGeometry(NamedTuple):
+    """A radial ball bearing's contacts, arrays over designs. [m, N/m^1.5]"""
+
+    ball_count: NDArray        # Z [1]
+    groove_distance: NDArray   # A = (fi + fe − 1)·Dw, the groove centres' distance at contact
+    axial_offset: NDArray      # the inner groove centre's axial offset from the outer's at q = 0
+    radial_offset: NDArray     # and its radial offset
+    lever: NDArray             # the tilt's lever, Dpw/2
+    spring_constant: NDArray   # K of a ball between both rings, Q = K·δ^1.5
+    #: an angular-contact bearing: its outer ring has one shoulder, so a ball touches it
+    #: only at a positive contact angle (a deep-groove bearing's grooves take both)
+    one_sided: NDArray
+
+
+class BallEquilibrium(NamedTuple):
+    """The solved bearing, arrays over designs (and balls, padded with NaN)."""
+
+    displacement: NDArray      # q, (N, 5) [m, rad]
+    reaction: NDArray          # the rings' internal force at q, (N, 5) [N, N·m]
+    azimuth: NDArray           # ψ of each ball, (N, Zmax) [rad]
+    element_load: NDArray      # Q of each ball, (N, Zmax) [N]
+    contact_angle: NDArray     # |α| of each ball's operating contact, (N, Zmax) [rad]
+    stiffness: NDArray         # the tangent stiffness ∂F/∂q, (N, 5, 5) [SI]
+    residual: NDArray          # the relative equilibrium residual, (N,) [1]
+    converged: NDArray         # (N,) bool
+
+
+def ball_geometry(ball_count: ArrayLike, ball_diameter: ArrayLike, pitch_diameter: ArrayLike,
+                  inner_conformity: ArrayLike, outer_conformity: ArrayLike,
+                  spring_constant: ArrayLike, *, diametral_clearance: ArrayLike | None = None,
+                  free_contact_angle: ArrayLike | None = None) -> BallGeometry:
+    r"""The groove centres of a deep-groove bearing with diametral clearance Pd (axial
+    datum: the centred ring) or of an angular-contact bearing at first contact with its
+    free contact angle α0 (ISO/TS 16281, 6.1):
+
+    .. math:: A = (f_i + f_e - 1) D_w, \quad (s_{x0}, s_{r0}) = (0, A - P_d/2)
+              \ \text{or}\ (A \sin\alpha_0, A \cos\alpha_0)
+    """
+    dw = np.asarray(ball_diameter, dtype=float)
+    distance = (np.asarray(inner_conformity, dtype=float)
+                + np.asarray(outer_conformity, dtype=float) - 1.0) * dw
+    if free_contact_angle is None:
+        clearance = np.asarray(0.0 if diametral_clearance is None else diametral_clearance,
+                               dtype=float)
+        axial, radial = np.zeros_like(distance), distance - clearance / 2.0
+    else:
+        alpha = np.asarray(free_contact_angle, dtype=float)
+        axial, radial = distance * np.sin(alpha), distance * np.cos(alpha)
+    arrays = np.broadcast_arrays(np.asarray(ball_count, dtype=float), distance, axial, radial,
+                                 np.asarray(pitch_diameter, dtype=float) / 2.0,
+                                 np.asarray(spring_constant, dtype=float),
+                                 np.full(np.shape(distance), free_contact_angle is not None))
+    *numbers, one_sided = (np.atleast_1d(a) for a in arrays)
+    return BallGeometry(*(a.astype(float) for a in numbers), one_sided.astype(bool))
+
+
+def _balls(geometry: BallGeometry) -> tuple[NDArray, NDArray, NDArray]:
+    """(cos ψ, sin ψ, mask) of every ball, (N, Zmax): ψ_j = 2πj/Z."""
+    count = geometry.ball_count.astype(int)
+    j = np.arange(int(count.max()))
+    mask = j[None, :] < count[:, None]
+    psi = 2.0 * np.pi * j[None, :] / count[:, None]
+    return np.cos(psi), np.sin(psi), mask
+
+
+class _State(NamedTuple):
+    energy: NDArray     # (N,) the contacts' elastic energy [J]
+    force: NDArray      # (N, k) internal force along the coordinates solved for [N]
+    hessian: NDArray    # (N, k, k) [N/m]
+    load: NDArray       # (N, Zmax) [N]
+    angle: NDArray | None  # (N, Zmax) signed atan2(s_x, s_r) [rad], where asked for
+
+
+def _state(geometry: BallGeometry, u: NDArray, cos: NDArray, sin: NDArray, mask: NDArray,
+           columns: list[int] | None = None, *, angles: bool = False) -> _State:
+    r"""The contacts at the scaled displacement u = (δx, δy, δz, L·θy, L·θz):
+
+    .. math:: s_x = s_{x0} + δx + L(θ_z\cos ψ + θ_y\sin ψ), \quad
+              s_r = s_{r0} + δy\cos ψ + δz\sin ψ, \quad δ = |s| - A, \quad Q = Kδ_+^{3/2}
+
+    The energy Σ 2/5·K·δ₊^(5/2), its gradient Σ Q·∂δ/∂u and its Hessian
+    Σ 3/2·K·δ₊^(1/2)·g gᵀ + Q/|s|·t tᵀ (g = n·∂s/∂u, t = n⊥·∂s/∂u, n = s/|s|), along
+    the coordinates ``columns``.
+    """
+    sx = (geometry.axial_offset[:, None] + u[:, 0:1] + sin * u[:, 3:4] + cos * u[:, 4:5])
+    sr = geometry.radial_offset[:, None] + cos * u[:, 1:2] + sin * u[:, 2:3]
+    distance = np.hypot(sx, sr)
+    touches = mask & ~(geometry.one_sided[:, None] & (sx <= 0.0))
+    deflection = np.where(touches,
+                          np.maximum(distance - geometry.groove_distance[:, None], 0.0), 0.0)
+    k = geometry.spring_constant[:, None]
+    root = np.sqrt(deflection)
+    load = k * deflection * root
+    nx, nr = sx / distance, sr / distance
+    columns = list(range(5)) if columns is None else columns
+    # ∂s/∂u of each coordinate: (the axial part's factor, the radial part's)
+    one = np.ones_like(cos)
+    zero = np.zeros_like(cos)
+    parts = {0: (one, zero), 1: (zero, cos), 2: (zero, sin), 3: (sin, zero), 4: (cos, zero)}
+    normal = [nx * parts[d][0] + nr * parts[d][1] for d in columns]
+    tangent = [nx * parts[d][1] - nr * parts[d][0] for d in columns]
+    along, across = 1.5 * k * root, load / distance
+    size = len(columns)
+    hessian = np.empty((cos.shape[0], size, size))
+    for i in range(size):
+        for j in range(i, size):
+            hessian[:, i, j] = hessian[:, j, i] = np.sum(
+                along * normal[i] * normal[j] + across * tangent[i] * tangent[j], axis=1)
+    force = np.stack([np.sum(load * g, axis=1) for g in normal], axis=1)
+    return _State(0.4 * np.sum(load * deflection, axis=1), force, hessian, load,
+                  np.arctan2(sx, sr) if angles else None)
+
+
+def solve_ball_equilibrium(geometry: BallGeometry, load: ArrayLike, *,
+                           fixed_tilt: ArrayLike | None = None) -> BallEquilibrium:
+    """The inner ring's displacement under ``load`` (N, 5) = (Fx, Fy, Fz, My, Mz) [N, N·m],
+    each ball's load and contact angle, and the tangent stiffness there.
+
+    Only the in-plane degrees of freedom (δx, δy, θz) move: the loads this kind takes
+    lie in the plane of the radial load, and the out-of-plane ones stay 0 by symmetry.
+    With ``fixed_tilt`` (the imposed misalignment θz [rad]) the tilt is held and its
+    moment is a result (``reaction``). ``converged`` is False where no equilibrium was
+    found (an angular-contact bearing that the loads pull off its contacts).
+    """
+    lever = geometry.lever
+    n = geometry.ball_count.size
+    applied = np.broadcast_to(np.asarray(load, dtype=float), (n, 5)).copy()
+    # moments as forces at the lever L, so that every coordinate is a length
+    target = applied / (np.array([1.0, 1.0, 1.0, 0.0, 0.0])[None, :]
+                        + np.outer(lever, [0.0, 0.0, 0.0, 1.0, 1.0]))
+    free = [0, 1] if fixed_tilt is not None else list(IN_PLANE)
+    u = _start(geometry, target)
+    if fixed_tilt is not None:
+        u[:, 4] = np.broadcast_to(np.asarray(fixed_tilt, dtype=float), (n,)) * lever
+    cos, sin, mask = _balls(geometry)
+    u, residual, converged = _newton(geometry, u, target, free, cos, sin, mask)
+    state = _state(geometry, u, cos, sin, mask, angles=True)
+    # u = S·q with S = diag(1, 1, 1, L, L): the force is S·∂U/∂u, the stiffness S·H·S
+    to_si = np.array([1.0, 1.0, 1.0, 0.0, 0.0])[None, :] + np.outer(lever, [0, 0, 0, 1, 1])
+    q = u / to_si
+    stiffness = state.hessian * to_si[:, :, None] * to_si[:, None, :]
+    psi = np.arctan2(sin, cos) % (2.0 * np.pi)
+    blank = np.where(mask, 1.0, np.nan)
+    return BallEquilibrium(q, state.force * to_si, psi * blank, state.load * blank,
+                           np.abs(state.angle) * blank, stiffness, residual, converged)
+
+
+def _start(geometry: BallGeometry, target: NDArray) -> NDArray:
+    """A first displacement that brings the balls under the load into contact: the
+    first-contact play along each load, plus the deflection that would carry it on a
+    fifth of the balls."""
+    u = np.zeros_like(target)
+    a, x0, r0 = geometry.groove_distance, geometry.axial_offset, geometry.radial_offset
+    share = np.maximum(geometry.ball_count / 5.0, 1.0) * geometry.spring_constant
+    radial_play = np.maximum(a - np.hypot(x0, r0), 0.0)
+    axial_play = np.sqrt(np.maximum(a * a - r0 * r0, 0.0)) - x0
+    fr, fa = target[:, 1], target[:, 0]
+    u[:, 1] = np.sign(fr) * (radial_play + (np.abs(fr) / share) ** (2.0 / 3.0))
+    u[:, 0] = np.sign(fa) * (np.maximum(axial_play, 0.0) + (np.abs(fa) / share) ** (2.0 / 3.0))
+    return u
+
+
+def _newton(geometry: BallGeometry, u: NDArray, target: NDArray, free: list[int],
+            cos: NDArray, sin: NDArray, mask: NDArray) -> tuple[NDArray, NDArray, NDArray]:
+    """Damped Newton on U(u) = Σ 2/5·K·δ₊^(5/2) − F·u over the ``free`` coordinates, on
+    the designs not yet solved: a step is taken where it lowers U (Armijo) or halves the
+    residual, else the damping grows tenfold. Returns u, the relative residual and
+    whether it reached the tolerance."""
+    n = u.shape[0]
+    u = u.copy()
+    typical = geometry.ball_count * geometry.spring_constant * np.sqrt(
+        np.maximum(np.abs(u).max(axis=1), geometry.groove_distance * 1e-6))
+    damping = np.full(n, 1e-6)
+    residual = np.full(n, np.inf)
+    size = np.maximum(np.max(np.abs(target[:, free]), axis=1), 1e-300)
+    eye = np.eye(len(free))
+    active = np.arange(n)
+    for _ in range(MAX_ITERATIONS):
+        part = BallGeometry(*(values[active] for values in geometry))
+        shape = (cos[active], sin[active], mask[active])
+        here, goal = u[active], target[active][:, free]
+        state = _state(part, here, *shape, columns=free)
+        gradient = state.force - goal
+        residual[active] = np.max(np.abs(gradient), axis=1) / np.maximum(
+            size[active], np.max(np.abs(state.force), axis=1))
+        solved = residual[active] <= RESIDUAL_TOLERANCE
+        active, here, goal, gradient = (active[~solved], here[~solved], goal[~solved],
+                                        gradient[~solved])
+        if active.size == 0:
+            break
+        part = BallGeometry(*(values[active] for values in geometry))
+        shape = (cos[active], sin[active], mask[active])
+        hessian = state.hessian[~solved] + (damping[active] * typical[active])[:, None, None] * eye
+        step = -np.linalg.solve(hessian, gradient[..., None])[..., 0]
+        trial = here.copy()
+        trial[:, free] += step
+        new = _state(part, trial, *shape, columns=free)
+        energy = state.energy[~solved] - np.einsum("nd,nd->n", goal, here[:, free])
+        energy_new = new.energy - np.einsum("nd,nd->n", goal, trial[:, free])
+        # near the solution U's change is lost in its rounding: a step that shrinks the
+        # residual counts as well
+        shrinks = (np.max(np.abs(new.force - goal), axis=1)
+                   < 0.5 * np.max(np.abs(gradient), axis=1))
+        better = (energy_new <= energy + 1e-4 * np.einsum("nd,nd->n", gradient, step)) | shrinks
+        u[active[better]] = trial[better]
+        damping[active] = np.where(better, np.maximum(damping[active] / 10.0, 1e-14),
+                                   damping[active] * 10.0)
+    return u, residual, residual <= RESIDUAL_TOLERANCE
