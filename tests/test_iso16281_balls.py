@@ -16,7 +16,13 @@ import pytest
 from scipy import integrate, optimize, special
 
 from bearingcalc.core.iso16281_balls import ball_geometry, solve_ball_equilibrium
+from bearingcalc.core.iso16281_life import (
+    ball_contact_pressures,
+    ball_reference_life,
+    ball_spring_constant,
+)
 from tests import iso16281_reference as reference
+from tests.test_iso16281_reference import MINZHUN_CASES, _minzhun
 
 #: Every design of the random set: one vectorised call, each then by the reference.
 DESIGNS = 1000
@@ -182,3 +188,64 @@ def test_an_angular_contact_bearing_without_axial_load_has_no_equilibrium():
                                     free_contact_angle=math.radians(25))
     mine = solve_ball_equilibrium(_geometry([bearing]), np.array([[0.0, 2000.0, 0, 0, 0]]))
     assert not mine.converged[0]
+
+
+# --- the reference life, contacts and the published cases ------------------------------------
+
+def _life(bearing: reference.BallBearing, loads: np.ndarray, c: float):
+    return ball_reference_life(loads, bearing.ball_count, bearing.ball_diameter,
+                               bearing.pitch_diameter, bearing.inner_conformity,
+                               bearing.outer_conformity, bearing.nominal_contact_angle, c)
+
+
+@pytest.mark.parametrize(("clearance", "forces", "expected", "life"), MINZHUN_CASES,
+                         ids=[f"example_{i + 1}" for i in range(7)])
+def test_minzhun_masta_cases(clearance, forces, expected, life):
+    """minzhun/ISO16281 Test_BallBearing.py (commit ade7076), its seven examples with the
+    MASTA values they check against (as ``tests/test_iso16281_reference.py`` lists them),
+    to 0.05 % in displacement, tilt and L10r; C = 23.4 kN."""
+    bearing = _minzhun(clearance)
+    mine = solve_ball_equilibrium(_geometry([bearing]), np.array([forces], dtype=float))
+    assert mine.converged[0]
+    q = mine.displacement[0]
+    got = {"r": math.hypot(q[1], q[2]) / 1e-6, "a": q[0] / 1e-6,
+           "t": math.hypot(q[3], q[4]) / 1e-3}
+    for key, value in expected.items():
+        assert got[key] == pytest.approx(value, rel=5e-4), key
+    found = _life(bearing, mine.element_load, 23400.0)
+    assert found.revolutions[0] / 1e6 == pytest.approx(life, rel=5e-4)
+
+
+def test_life_and_pressures_are_the_references(solved):
+    """L10r, the raceway ratings and equivalent loads, and the largest Hertz pressures
+    against the reference's (its own Hertz from scipy's elliptic integrals), over the
+    random designs, to 1e-9 (pressures to 1e-7: two Hertz implementations)."""
+    for bearings, refs, mine in solved:
+        c = np.array([2e4 + 1e3 * b.ball_count for b in bearings])
+        found = ball_reference_life(
+            mine.element_load, [b.ball_count for b in bearings],
+            [b.ball_diameter for b in bearings], [b.pitch_diameter for b in bearings],
+            [b.inner_conformity for b in bearings], [b.outer_conformity for b in bearings],
+            [b.nominal_contact_angle for b in bearings], c)
+        inner, outer = ball_contact_pressures(
+            mine.element_load, mine.contact_angle, [b.ball_diameter for b in bearings],
+            [b.pitch_diameter for b in bearings], [b.inner_conformity for b in bearings],
+            [b.outer_conformity for b in bearings], 2.1e11, 0.3)
+        for i, (bearing, ref) in enumerate(zip(bearings, refs, strict=True)):
+            expected = reference.ball_reference_life(bearing, ref["load"], c[i])
+            assert found.revolutions[i] / 1e6 == pytest.approx(expected["life_million"],
+                                                               rel=1e-9)
+            assert found.equivalent_load[i] == pytest.approx(expected["reference_load"],
+                                                             rel=1e-9)
+            ref_inner, ref_outer = reference.ball_pressures(bearing, ref["load"], ref["angle"])
+            assert inner[i] == pytest.approx(ref_inner.max(), rel=1e-7)
+            assert outer[i] == pytest.approx(ref_outer.max(), rel=1e-7)
+
+
+def test_the_spring_constant_is_the_references_exact_hertz():
+    for bearing in (_minzhun(0.0), reference.BallBearing(
+            12, 9.525e-3, 46e-3, 0.515, 0.525, free_contact_angle=math.radians(30))):
+        k = ball_spring_constant(bearing.ball_diameter, bearing.pitch_diameter,
+                                 bearing.inner_conformity, bearing.outer_conformity,
+                                 bearing.nominal_contact_angle, 2.1e11, 0.3)
+        assert float(k) == pytest.approx(bearing.spring_constant, rel=1e-9)

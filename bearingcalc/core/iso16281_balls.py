@@ -149,8 +149,9 @@ def solve_ball_equilibrium(geometry: BallGeometry, load: ArrayLike, *,
     """The inner ring's displacement under ``load`` (N, 5) = (Fx, Fy, Fz, My, Mz) [N, N·m],
     each ball's load and contact angle, and the tangent stiffness there.
 
-    Only the in-plane degrees of freedom (δx, δy, θz) move: the loads this kind takes
-    lie in the plane of the radial load, and the out-of-plane ones stay 0 by symmetry.
+    Where the loads lie in the plane of the radial load (Fz = My = 0) only the in-plane
+    degrees of freedom (δx, δy, θz) move, the others staying 0 by symmetry; else all
+    five.
     With ``fixed_tilt`` (the imposed misalignment θz [rad]) the tilt is held and its
     moment is a result (``reaction``). ``converged`` is False where no equilibrium was
     found (an angular-contact bearing that the loads pull off its contacts).
@@ -161,7 +162,10 @@ def solve_ball_equilibrium(geometry: BallGeometry, load: ArrayLike, *,
     # moments as forces at the lever L, so that every coordinate is a length
     target = applied / (np.array([1.0, 1.0, 1.0, 0.0, 0.0])[None, :]
                         + np.outer(lever, [0.0, 0.0, 0.0, 1.0, 1.0]))
-    free = [0, 1] if fixed_tilt is not None else list(IN_PLANE)
+    out_of_plane = bool(np.any(target[:, [2, 3]] != 0.0))
+    free = list(IN_PLANE) if not out_of_plane else list(range(5))
+    if fixed_tilt is not None:
+        free = [0, 1, 2] if out_of_plane else [0, 1]
     u = _start(geometry, target)
     if fixed_tilt is not None:
         u[:, 4] = np.broadcast_to(np.asarray(fixed_tilt, dtype=float), (n,)) * lever
@@ -187,9 +191,9 @@ def _start(geometry: BallGeometry, target: NDArray) -> NDArray:
     share = np.maximum(geometry.ball_count / 5.0, 1.0) * geometry.spring_constant
     radial_play = np.maximum(a - np.hypot(x0, r0), 0.0)
     axial_play = np.sqrt(np.maximum(a * a - r0 * r0, 0.0)) - x0
-    fr, fa = target[:, 1], target[:, 0]
-    u[:, 1] = np.sign(fr) * (radial_play + (np.abs(fr) / share) ** (2.0 / 3.0))
-    u[:, 0] = np.sign(fa) * (np.maximum(axial_play, 0.0) + (np.abs(fa) / share) ** (2.0 / 3.0))
+    for d, play in ((0, np.maximum(axial_play, 0.0)), (1, radial_play), (2, radial_play),
+                    (3, np.maximum(axial_play, 0.0)), (4, np.maximum(axial_play, 0.0))):
+        u[:, d] = np.sign(target[:, d]) * (play + (np.abs(target[:, d]) / share) ** (2 / 3))
     return u
 
 
