@@ -1,0 +1,223 @@
+"""The load on every lamina of every roller of a cylindrical or tapered roller bearing
+from the rings' displacements (ISO/TS 16281:2008, 5 to 7): rigid rings, each roller cut
+into laminae along the raceway that carry q = (c_L/n_s)·δ^(10/9), low speed.
+
+Frame, signs and the displacement q = (δx, δy, δz, θy, θz) as in
+:mod:`bearingcalc.core.iso16281_balls`; for a tapered bearing the loads act at its
+pressure centre and α is the cup's contact angle, for the cone's motion and the
+roller's equilibrium alike. A cylindrical bearing carries no axial load: its δx is held
+at 0. Vectorised over designs in chunks (rollers padded to the largest count, masked).
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+#: ISO/TS 16281's line-contact constant c_L = 35 948·Lwe^(8/9) N/mm^(10/9) of a roller
+#: (both contacts), in SI: N/m^(10/9) per m^(8/9).
+LINE_CONSTANT = 35948.0 * 1e3 ** (10 / 9) * 1e3 ** (8 / 9)
+#: The lamina law's exponent, q ∝ δ^(10/9).
+LAMINA_EXPONENT = 10.0 / 9.0
+RESIDUAL_TOLERANCE = 1e-12
+MAX_ITERATIONS = 100
+#: Designs solved together: a chunk's (designs, rollers, laminae) arrays stay small.
+CHUNK = 512
+
+
+class RollerGeometry(NamedTuple):
+    """A roller bearing's laminae, arrays over designs. [m, rad, N/m^(10/9)]"""
+
+    roller_count: NDArray
+    contact_angle: NDArray     # α (tapered: the cup's)
+    gap: NDArray               # (N, n_s) each lamina's gap at q = 0: (Pd/2)·cosα + 2·p_k
+    positions: NDArray         # (N, n_s) ℓ_k along the raceway from the roller's middle
+    lamina_constant: NDArray   # c_L/n_s of one lamina
+
+
+class RollerEquilibrium(NamedTuple):
+    displacement: NDArray      # (N, 5) [m, rad]
+    reaction: NDArray          # (N, 5) [N, N·m]
+    azimuth: NDArray           # (N, Zmax) [rad], NaN past Z
+    element_load: NDArray      # (N, Zmax) each roller's load, the sum of its laminae [N]
+    lamina_load: NDArray       # (N, Zmax, n_s) [N]
+    stiffness: NDArray         # (N, 5, 5) [SI]
+    residual: NDArray          # (N,) [1]
+    converged: NDArray         # (N,) bool
+
+
+def logarithmic_profile(positions: NDArray, roller_diameter: ArrayLike,
+                        effective_length: ArrayLike) -> NDArray:
+    r"""ISO/TS 16281's logarithmic profile drop p_k [m] of a roller at ℓ_k from its middle:
+
+    .. math:: L_{we} \le 2.5D_{we}:\ p = 0.00035\,D_{we}\ln\frac{1}{1 - (2ℓ/L_{we})^2}
+
+    .. math:: L_{we} > 2.5D_{we}:\ p = 0.0005\,D_{we}\ln\frac{1}{1 - \left(
+              \frac{2|ℓ| - L_{we} + 2.5D_{we}}{2.5D_{we}}\right)^2}\ \text{past the flat
+              middle } |ℓ| \le (L_{we} - 2.5D_{we})/2,\ 0\ \text{on it}
+
+    Source: ISO/TS 16281:2008, 7.2 (eqs. 42 to 44).
+    """
+    dwe = np.asarray(roller_diameter, dtype=float)[..., None]
+    lwe = np.asarray(effective_length, dtype=float)[..., None]
+    ell = np.abs(positions)
+    short = 0.00035 * dwe * -np.log(1.0 - (2.0 * ell / lwe) ** 2)
+    u = np.clip((2.0 * ell - lwe + 2.5 * dwe) / (2.5 * dwe), 0.0, None)
+    long = 0.0005 * dwe * -np.log(1.0 - u * u)
+    return np.where(lwe <= 2.5 * dwe, short, long)
+
+
+def roller_geometry(roller_count: ArrayLike, roller_diameter: ArrayLike,
+                    effective_length: ArrayLike, contact_angle: ArrayLike, *,
+                    diametral_clearance: ArrayLike = 0.0, laminae: int = 30,
+                    profile: str = "iso", line_constant: ArrayLike | None = None
+                    ) -> RollerGeometry:
+    """The laminae of each design: n_s slices of Lwe/n_s, their positions, gaps (the
+    clearance along the contact normal and the profile at both contacts) and constant."""
+    arrays = np.broadcast_arrays(*(np.atleast_1d(np.asarray(v, dtype=float)) for v in (
+        roller_count, roller_diameter, effective_length, contact_angle, diametral_clearance)))
+    count, dwe, lwe, alpha, clearance = arrays
+    k = np.arange(laminae)
+    positions = (k[None, :] - laminae / 2.0 + 0.5) * lwe[:, None] / laminae
+    drop = (np.zeros_like(positions) if profile == "none"
+            else logarithmic_profile(positions, dwe, lwe))
+    gap = (clearance * np.cos(alpha) / 2.0)[:, None] + 2.0 * drop
+    constant = (LINE_CONSTANT * lwe ** (8 / 9) if line_constant is None
+                else np.broadcast_to(np.asarray(line_constant, dtype=float), lwe.shape))
+    return RollerGeometry(count, alpha, gap, positions, constant / laminae)
+
+
+def _gradients(geometry: RollerGeometry, cos: NDArray, sin: NDArray) -> NDArray:
+    r"""∂δ_jk/∂q, (N, Z, n_s, 5): δ_jk = δx·sinα + (δy cosψ + δz sinψ)·cosα
+    − ℓ_k(θz cosψ + θy sinψ) − gap_k (ISO/TS 16281 eqs. 38 to 41 in five degrees)."""
+    n, z = cos.shape
+    ns = geometry.positions.shape[1]
+    alpha = geometry.contact_angle[:, None, None]
+    ell = geometry.positions[:, None, :]
+    grad = np.empty((n, z, ns, 5))
+    grad[..., 0] = np.sin(alpha)
+    grad[..., 1] = np.cos(alpha) * cos[..., None]
+    grad[..., 2] = np.cos(alpha) * sin[..., None]
+    grad[..., 3] = -ell * sin[..., None]
+    grad[..., 4] = -ell * cos[..., None]
+    return grad
+
+
+class _State(NamedTuple):
+    energy: NDArray
+    force: NDArray
+    hessian: NDArray
+    lamina: NDArray
+
+
+def _state(geometry: RollerGeometry, grad: NDArray, mask: NDArray, q: NDArray) -> _State:
+    """The laminae at q: Σ (c/n_s)·9/19·δ₊^(19/9), its gradient and Hessian."""
+    deflection = np.einsum("nzkd,nd->nzk", grad, q) - geometry.gap[:, None, :]
+    deflection = np.where(mask[..., None], np.maximum(deflection, 0.0), 0.0)
+    c = geometry.lamina_constant[:, None, None]
+    ninth = deflection ** (1.0 / 9.0)
+    lamina = c * deflection * ninth
+    slope = LAMINA_EXPONENT * c * ninth
+    force = np.einsum("nzk,nzkd->nd", lamina, grad)
+    hessian = np.einsum("nzk,nzki,nzkj->nij", slope, grad, grad)
+    return _State(np.sum(lamina * deflection, axis=(1, 2)) * 9.0 / 19.0, force, hessian,
+                  lamina)
+
+
+def solve_roller_equilibrium(geometry: RollerGeometry, load: ArrayLike, *,
+                             fixed_tilt: ArrayLike | None = None) -> RollerEquilibrium:
+    """The inner ring's displacement under ``load`` (N, 5), every lamina's load, the
+    tangent stiffness; ``fixed_tilt`` holds θz (a misalignment). A cylindrical bearing's
+    δx is held at 0."""
+    n = geometry.roller_count.size
+    applied = np.broadcast_to(np.asarray(load, dtype=float), (n, 5))
+    tilt = np.zeros(n) if fixed_tilt is None else np.broadcast_to(
+        np.asarray(fixed_tilt, dtype=float), (n,))
+    parts = [_solve_chunk(RollerGeometry(*(v[s] for v in geometry)), applied[s], tilt[s],
+                          fixed_tilt is not None)
+             for s in (slice(i, i + CHUNK) for i in range(0, n, CHUNK))]
+    zmax = int(geometry.roller_count.max())
+
+    def joined(index: int) -> NDArray:
+        pieces = [p[index] for p in parts]
+        if pieces[0].ndim >= 2 and index in (2, 3, 4):
+            pieces = [np.pad(p, [(0, 0), (0, zmax - p.shape[1])] + [(0, 0)] * (p.ndim - 2),
+                             constant_values=np.nan) for p in pieces]
+        return np.concatenate(pieces)
+
+    return RollerEquilibrium(*(joined(i) for i in range(8)))
+
+
+def _solve_chunk(geometry: RollerGeometry, applied: NDArray, tilt: NDArray, fixed: bool
+                 ) -> tuple[NDArray, ...]:
+    count = geometry.roller_count.astype(int)
+    j = np.arange(int(count.max()))
+    mask = j[None, :] < count[:, None]
+    psi = 2.0 * np.pi * j[None, :] / count[:, None]
+    cos, sin = np.cos(psi), np.sin(psi)
+    grad = _gradients(geometry, cos, sin)
+    out_of_plane = bool(np.any(applied[:, [2, 3]] != 0.0))
+    free = [0, 1, 2, 3, 4] if out_of_plane else [0, 1, 4]
+    if fixed:
+        free = [d for d in free if d != 4]
+    cylindrical = geometry.contact_angle == 0.0
+    q = np.zeros_like(applied)
+    q[:, 4] = tilt
+    q[:, 1] = np.sign(applied[:, 1]) * geometry.gap.min(axis=1) / np.maximum(
+        np.cos(geometry.contact_angle), 1e-3)
+    q, residual = _newton(geometry, grad, mask, q, applied, free, cylindrical)
+    state = _state(geometry, grad, mask, q)
+    blank = np.where(mask, 1.0, np.nan)
+    return (q, state.force, (psi % (2 * np.pi)) * blank, state.lamina.sum(axis=2) * blank,
+            np.where(mask[..., None], state.lamina, np.nan), state.hessian, residual,
+            residual <= RESIDUAL_TOLERANCE)
+
+
+def _newton(geometry: RollerGeometry, grad: NDArray, mask: NDArray, q: NDArray,
+            applied: NDArray, free: list[int], cylindrical: NDArray
+            ) -> tuple[NDArray, NDArray]:
+    """Damped Newton on the convex potential U(q) = Σ (c/n_s)·9/19·δ₊^(19/9) − F·q over
+    the free coordinates, scaled to lengths (u = S·q, S = diag(1, 1, 1, L, L), L the
+    roller's half length): a step is taken where it lowers U (Armijo) or halves the
+    residual, else the damping grows tenfold. Returns q and the relative residual."""
+    n = q.shape[0]
+    lever = np.abs(geometry.positions).max(axis=1)
+    scale = np.ones((n, 5))
+    scale[:, 3:] = lever[:, None]
+    moving = np.zeros((n, 5), dtype=bool)
+    moving[:, free] = True
+    moving[:, 0] &= ~cylindrical
+    target = np.where(moving, applied / scale, 0.0)
+    typical = geometry.roller_count * geometry.lamina_constant * grad.shape[2] * (
+        np.maximum(geometry.gap.max(axis=1), 1e-6 * lever)) ** (1.0 / 9.0)
+    damping = np.full(n, 1e-3)
+    residual = np.full(n, np.inf)
+    size = np.maximum(np.max(np.abs(target), axis=1), 1e-300)
+    state = _state(geometry, grad, mask, q)
+    held = ~moving[:, :, None] | ~moving[:, None, :]
+    for _ in range(MAX_ITERATIONS):
+        force = np.where(moving, state.force / scale, 0.0)
+        gradient = force - target
+        residual = np.max(np.abs(gradient), axis=1) / np.maximum(
+            size, np.max(np.abs(force), axis=1))
+        done = residual <= RESIDUAL_TOLERANCE
+        if done.all():
+            break
+        hessian = np.where(held, 0.0, state.hessian / scale[:, :, None] / scale[:, None, :])
+        hessian += np.eye(5) * np.where(moving, (damping * typical)[:, None], 1.0)[:, None, :]
+        step = -np.linalg.solve(hessian, gradient[..., None])[..., 0]
+        step[done] = 0.0
+        trial = q + step / scale
+        new = _state(geometry, grad, mask, trial)
+        energy = state.energy - np.sum(target * q * scale, axis=1)
+        energy_new = new.energy - np.sum(target * trial * scale, axis=1)
+        shrinks = (np.max(np.abs(np.where(moving, new.force / scale, 0.0) - target), axis=1)
+                   < 0.5 * np.max(np.abs(gradient), axis=1))
+        better = ((energy_new <= energy + 1e-4 * np.sum(gradient * step, axis=1)) | shrinks) & ~done
+        q = np.where(better[:, None], trial, q)
+        state = _State(*(np.where(better.reshape((n,) + (1,) * (a.ndim - 1)), b, a)
+                         for a, b in zip(state, new, strict=True)))
+        damping = np.where(better, np.maximum(damping / 10.0, 1e-14), damping * 10.0)
+    return q, residual
