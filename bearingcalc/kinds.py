@@ -35,7 +35,7 @@ if TYPE_CHECKING:
 #: Status of a design whose inputs are valid but whose results overflow double precision.
 OUT_OF_RANGE = 99
 #: The heading of the table of an axis's results, where its rows carry none of their own.
-TABLE_HEADINGS = {"bin": "duty cycle"}
+TABLE_HEADINGS = {"bin": "duty cycle", "element": "rolling elements as mounted"}
 OUT_OF_RANGE_REASON = ("", "the design's numbers are out of the range of double precision; "
                        "check the magnitudes of the inputs")
 

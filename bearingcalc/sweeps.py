@@ -235,8 +235,8 @@ def shown_results(solved: Sweep, asked: list[str] | None) -> list[str]:
         for margin in solved.kind.margins:
             values = solved.results.get(margin)
             judged = solved.kind.judged.get(margin)
-            quantity = judged.quantity if judged is not None else None
-            shown = quantity if isinstance(quantity, str) and quantity in solved.results \
+            quantity = judged.key(solved.results) if judged is not None else None
+            shown = quantity if quantity is not None and quantity in solved.results \
                 else margin
             if values is not None and bool(np.any(values < 0)) and not {margin, shown} & {
                     *keys}:

@@ -5,7 +5,7 @@ line that says a verdict (:func:`verdict_line`)."""
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass
 
 from bearingcalc.units import to_display
@@ -24,7 +24,9 @@ class Judged:
 
     #: what is judged, in words (or a function of the results: which gear governs)
     name: str | Callable[[Mapping[str, float | None]], str]
-    quantity: str | Callable[[Mapping[str, float | None]], float | None]
+    #: the result judged; or results in order of preference, the first the design has
+    #: (a bearing solved as mounted is judged on its reference life); or a function
+    quantity: str | tuple[str, ...] | Callable[[Mapping[str, float | None]], float | None]
     at_least: bool
     form: str = "difference"
     #: how a verdict names the limit: "required" (a life), "min" (a safety), "max"
@@ -44,10 +46,22 @@ class Judged:
     def named(self, results: Mapping[str, float | None]) -> str:
         return self.name(results) if callable(self.name) else self.name
 
+    def key(self, available: Collection[str]) -> str | None:
+        """The result judged among the ``available`` ones; None where it is a function
+        of several."""
+        if isinstance(self.quantity, str):
+            return self.quantity
+        if isinstance(self.quantity, tuple):
+            return next((key for key in self.quantity if key in available), None)
+        return None
+
     def value(self, results: Mapping[str, float | None]) -> float | None:
         """The judged quantity (its size, for an upper limit on a signed one)."""
-        value = (self.quantity(results) if callable(self.quantity)
-                 else results.get(self.quantity))
+        if callable(self.quantity):
+            value = self.quantity(results)
+        else:
+            key = self.key({k for k, v in results.items() if v is not None})
+            value = None if key is None else results.get(key)
         return None if value is None else (value if self.at_least else abs(value))
 
     def limit(self, value: float, margin: float) -> float:
@@ -116,8 +130,8 @@ def judge(judges: Mapping[str, Judged], declared: Mapping[str, tuple[str, str]],
         limit = judged.limit(value, margin)
         if not math.isfinite(limit):  # said as the plain margin instead
             continue
-        unit = (declared[judged.quantity][0] if isinstance(judged.quantity, str)
-                else declared[key][0])
+        judged_key = judged.key({k for k, v in results.items() if v is not None})
+        unit = declared[judged_key][0] if judged_key is not None else declared[key][0]
         verdicts.append(Verdict(key, judged.named(results), value, limit, unit,
                                 judged.fraction(margin, limit), judged.at_least,
                                 judged.limit_word))
@@ -154,7 +168,14 @@ def _engineering(value: float) -> str:
 
 
 #: What the margins the kinds share judge.
-LIFE = Judged("modified rating life", "modified_rating_life", True, "ratio", "required")
+def _life_named(results: Mapping[str, float | None]) -> str:
+    return ("modified reference rating life"
+            if results.get("modified_reference_rating_life") is not None
+            else "modified rating life")
+
+
+LIFE = Judged(_life_named, ("modified_reference_rating_life", "modified_rating_life"), True,
+              "ratio", "required")
 STATIC = Judged("static safety s0", "static_safety_factor", True)
 CONTACT = Judged("contact pressure", "max_contact_pressure", False, "fraction")
 

@@ -44,7 +44,9 @@ def _random_bearings(seed: int = 3) -> list[tuple[reference.BallBearing, np.ndar
             z, dw, dpw, rng.uniform(0.505, 0.54), rng.uniform(0.51, 0.56),
             diametral_clearance=0.0 if angular else rng.uniform(-8e-6, 40e-6),
             free_contact_angle=alpha if angular else None)
-        fr = rng.uniform(50.0, 0.4 * z * dw * dw * 4e8)
+        # up to about ISO 76's C0 (f0·Z·Dw² with f0 ≈ 12 MPa·...), where the contacts
+        # stay on their shoulders (0 < α < 90°) as a real bearing's must
+        fr = rng.uniform(50.0, 0.4 * z * dw * dw * 4e7)
         fa = rng.uniform(0.0, 0.5 * fr)
         if angular:
             fa = fr * math.tan(alpha) * rng.uniform(1.3, 3.0)
@@ -123,19 +125,29 @@ def test_the_reaction_of_an_imposed_tilt_is_the_references_moment(solved):
 
 def test_the_stiffness_is_the_central_differences_of_the_contacts(solved):
     """The analytic tangent stiffness against the reference's central differences of the
-    contacts' force (steps of 1 nm) at the solved displacement, to 1e-6 of its largest
-    entry in consistent units (tilts over the pitch radius)."""
+    contacts' force (steps of 10 pm) at the solved displacement, to 1e-6 of its largest
+    entry in consistent units (tilts over the pitch radius). A ball's Q ∝ δ^1.5 has an
+    unbounded second derivative at first contact, so a design with a ball within 10 nm
+    of it is left out (a difference quotient there sees the ball, the tangent does not);
+    most designs have none."""
+    checked = total = 0
     for bearings, _, mine in solved:
         for i, bearing in enumerate(bearings):
+            total += 1
+            deflection = reference.ball_state(bearing, mine.displacement[i])["deflection"]
+            if np.min(np.abs(deflection)) < 1e-8:
+                continue
+            checked += 1
             lever = bearing.pitch_diameter / 2
             scale = np.array([1, 1, 1, 1 / lever, 1 / lever])
-            numeric = reference.stiffness_matrix(bearing, mine.displacement[i])
+            numeric = reference.stiffness_matrix(bearing, mine.displacement[i], step=1e-11)
             mine_scaled = mine.stiffness[i] * scale[:, None] * scale[None, :]
             numeric_scaled = numeric * scale[:, None] * scale[None, :]
             np.testing.assert_allclose(mine_scaled, numeric_scaled, rtol=0,
                                        atol=1e-6 * np.max(np.abs(numeric_scaled)))
             np.testing.assert_allclose(mine.stiffness[i], mine.stiffness[i].T, rtol=1e-12,
                                        atol=1e-12 * np.max(np.abs(mine.stiffness[i])))
+    assert checked > 0.8 * total
 
 
 def test_designs_of_different_ball_counts_in_one_call_are_each_alone():

@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 from scipy import optimize
 
+from bearingcalc.core.iso16281_life import roller_reference_life
 from bearingcalc.core.iso16281_rollers import (
     CHUNK,
     LINE_CONSTANT,
@@ -157,3 +158,17 @@ def test_the_profile_is_the_references_iso_profile():
         positions = bearing.lamina_positions
         np.testing.assert_allclose(logarithmic_profile(positions, dwe, lwe),
                                    bearing.profile_drop, rtol=1e-12, atol=1e-18)
+
+
+def test_the_reference_life_is_the_references(solved):
+    """L10r and P_ref from every lamina's load against the reference's, to 1e-9."""
+    bearings, refs, mine = solved
+    c = np.array([5e4 + 2e3 * b.roller_count for b in bearings])
+    found = roller_reference_life(mine.lamina_load, [b.roller_count for b in bearings],
+                                  [b.roller_diameter for b in bearings],
+                                  [b.pitch_diameter for b in bearings],
+                                  [b.contact_angle for b in bearings], c)
+    for i, (bearing, ref) in enumerate(zip(bearings, refs, strict=True)):
+        expected = reference.roller_reference_life(bearing, ref["lamina_load"], c[i])
+        assert found.revolutions[i] / 1e6 == pytest.approx(expected["life_million"], rel=1e-9)
+        assert found.equivalent_load[i] == pytest.approx(expected["reference_load"], rel=1e-9)

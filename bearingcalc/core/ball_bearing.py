@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from bearingcalc.core import mounted_ball_bearing
 from bearingcalc.core.arrangements import (
     DOUBLE_ROW_PAIRS,
     PAIRS,
@@ -93,6 +94,7 @@ RESULTS: dict[str, tuple[str, str]] = {
     "inner_spin_to_roll": ("1", "spin/roll of the inner race relative to the ball"),
     "outer_spin_to_roll": ("1", "spin/roll of the outer race relative to the ball"),
     "spin_to_roll_margin": ("1", "max_spin_to_roll − the larger |spin_to_roll|"),
+    **mounted_ball_bearing.RESULTS,
 }
 
 #: Headings of the table, each with its results.
@@ -117,12 +119,14 @@ GROUPS: dict[str, tuple[str, ...]] = {
                    "ball_spin_frequency", "cage_speed", "ball_speed_relative_to_cage",
                    "ball_attitude_angle", "inner_spin_to_roll", "outer_spin_to_roll",
                    "spin_to_roll_margin"),
+    mounted_ball_bearing.GROUP: tuple(mounted_ball_bearing.RESULTS),
 }
 
 #: How tables show results whose SI unit alone does not say it (revolutions in millions).
 DISPLAY: dict[str, tuple[str, float]] = {
     "basic_rating_life_revolutions": ("10⁶ rev", 1e-6),
     "modified_rating_life_revolutions": ("10⁶ rev", 1e-6),
+    "reference_rating_life_revolutions": ("10⁶ rev", 1e-6),
 }
 
 #: Conditions the solver reports per design as warnings: flag key -> message.
@@ -168,6 +172,7 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
                                     "temperature, or the viscosity itself"),
     14: ("radial_load", _CONTACT_TOO_LARGE),
     15: ("axial_load", _CONTACT_TOO_LARGE),
+    **mounted_ball_bearing.STATUS_REASONS,
 }
 
 
@@ -234,7 +239,8 @@ def evaluate(inputs: RollingBearingInputs,
                              contacts["outer_contact_semi_major"])
         found.checks.append((15 if thrust else 14, ~(largest <= np.asarray(dw) / 2.0)))
 
-    return Solution(*found.packed(RESULTS))
+    mounted, along = mounted_ball_bearing.as_mounted(inputs, c, out, speed)
+    return Solution(*found.add(mounted).packed(RESULTS), along=along)
 
 
 def _ratings(z: ArrayLike, dw: ArrayLike, dpw: ArrayLike, alpha: NDArray, thrust: bool
@@ -343,4 +349,5 @@ def _given_or(given: ArrayLike | None, computed: NDArray | None) -> NDArray | No
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS, display=DISPLAY,
+                along={"element": mounted_ball_bearing.ELEMENT_RESULTS},
                 inputs="RollingBearingInputs")

@@ -107,6 +107,9 @@ class BearingTraits(NamedTuple):
     cupped: bool = False
     #: Designation forms whose ring has no ribs, so carry no axial load: (form, ring).
     ribless_forms: tuple[tuple[str, str], ...] = ()
+    #: ISO/TS 16281's load distribution solves a single bearing of the type
+    #: (``method: iso-16281``).
+    mounted: bool = False
 
     @property
     def fields(self) -> frozenset[str]:
@@ -136,12 +139,12 @@ TABLE: tuple[BearingTraits, ...] = (
                   one_way=False, angle_rule=AngleRule.DEFAULT, contact_angle=0.0,
                   example_angle=None, rating_formula=RatingFormula.RADIAL_BALL,
                   static_formula=StaticFormula.RADIAL_BALL,
-                  load_rule=LoadRule.GROOVE_TABLE, **_BALL),
+                  load_rule=LoadRule.GROOVE_TABLE, mounted=True, **_BALL),
     BearingTraits("angular-contact", ("angular-contact",), thrust=False, pairable=True,
                   one_way=True, angle_rule=AngleRule.GIVEN, contact_angle=None,
                   example_angle="40 deg", rating_formula=RatingFormula.RADIAL_BALL,
                   static_formula=StaticFormula.RADIAL_BALL,
-                  load_rule=LoadRule.ANGLE_TABLE, **_BALL),
+                  load_rule=LoadRule.ANGLE_TABLE, mounted=True, **_BALL),
     BearingTraits("self-aligning-ball", ("self-aligning-ball",), thrust=False,
                   pairable=False, one_way=False, angle_rule=AngleRule.DEFAULT,
                   contact_angle=0.0, example_angle=None,

@@ -118,7 +118,9 @@ def _state(geometry: BallGeometry, u: NDArray, cos: NDArray, sin: NDArray, mask:
     sx = (geometry.axial_offset[:, None] + u[:, 0:1] + sin * u[:, 3:4] + cos * u[:, 4:5])
     sr = geometry.radial_offset[:, None] + cos * u[:, 1:2] + sin * u[:, 2:3]
     distance = np.hypot(sx, sr)
-    touches = mask & ~(geometry.one_sided[:, None] & (sx <= 0.0))
+    # an angular-contact bearing's ball touches only its shoulder: at 0 < α < 90°
+    # an angular-contact bearing's ball touches only its shoulder: at 0 < α < 90°
+    touches = mask & ~(geometry.one_sided[:, None] & ((sx <= 0.0) | (sr <= 0.0)))
     deflection = np.where(touches,
                           np.maximum(distance - geometry.groove_distance[:, None], 0.0), 0.0)
     k = geometry.spring_constant[:, None]

@@ -64,6 +64,6 @@ def evaluate(inputs: RollingBearingInputs,
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
-                display=ball_bearing.DISPLAY,
+                display=ball_bearing.DISPLAY, along=ball_bearing.SOLVER.along,
                 duty=DutyCycle(rolling_bearing_cycle, BEARING_CYCLE_RESULTS, BEARING_BINS),
                 inputs="RollingBearingInputs")

@@ -125,7 +125,17 @@ class _OperatingInputs(TypedDict):
     min_rating_life: MaybeNumbers        # [s]
 
 
-class RollingBearingInputs(_BearingOwnInputs, _OperatingInputs, _RollerInputs, CycleInputs):
+class _MountingInputs(TypedDict, total=False):
+    """ISO/TS 16281's method (absent in a drive's bearing)."""
+
+    method: str                          # "iso-281" or "iso-16281"
+    operating_clearance: MaybeNumbers    # the mounted diametral clearance [m]
+    tilting_moment: MaybeNumbers         # on the inner ring, about z [N·m]
+    misalignment: MaybeNumbers           # the inner ring's tilt, imposed [rad]
+
+
+class RollingBearingInputs(_BearingOwnInputs, _OperatingInputs, _RollerInputs, _MountingInputs,
+                           CycleInputs):
     """:func:`bearingcalc.core.rolling_bearing.evaluate` (ball and roller bearings)."""
 
 

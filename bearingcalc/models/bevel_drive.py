@@ -11,6 +11,7 @@ from pydantic import Field, model_validator
 
 from bearingcalc.core.bearing_types import traits
 from bearingcalc.errors import SpecFieldError
+from bearingcalc.models.bearing_method_rules import MOUNTING_INPUTS
 from bearingcalc.models.bevel_gears import BevelGearsLimits, BevelPair
 from bearingcalc.models.duty import (
     OIL_BIN_FIELDS,
@@ -335,7 +336,7 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
 
     def _bearing_inputs(self, bearing: DriveBearing) -> MountedBearingInputs:
         own = {key: value for key, value in self.rolling_bearing(bearing).solver_inputs().items()
-               if key not in (*_DRIVE_SETS, "min_rating_life")}
+               if key not in (*_DRIVE_SETS, *MOUNTING_INPUTS, "min_rating_life")}
         return {"position": bearing.position,
                 "locating": "locating" if bearing.locating else "floating",
                 "induced_axial_factor": bearing.induced_axial_factor, **own}

@@ -326,6 +326,8 @@ Temperature = quantity(TEMPERATURE, "positive")
 PositiveDensity = quantity(DENSITY, "positive")
 PositivePower = quantity(POWER, "positive")
 Torque = quantity(TORQUE, "positive")
+#: A moment of either sense (a tilting moment). [N·m]
+Moment = quantity(TORQUE)
 
 #: Groove radius over ball diameter: above 0.5 (at 0.5 or below the ball would not fit
 #: its groove) and below 1. A plain number that may carry a tolerance (0.52 ± 0.005).

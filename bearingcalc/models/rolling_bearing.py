@@ -15,6 +15,7 @@ from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.bearing_geometry_rules import GeometryRules
 from bearingcalc.models.bearing_load_rules import LoadFactorRules, LoadRules
+from bearingcalc.models.bearing_method_rules import MethodRules, MountingFields
 from bearingcalc.models.bearing_operating_rules import (
     ArrangementRules,
     LubricationRules,
@@ -192,9 +193,10 @@ BearingBin = bin_model("BearingBin", {
     "outer_speed": (AngularSpeed, "outer ring, fixed frame"), **OIL_BIN_FIELDS})
 
 
-class RollingBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, LubricationRules,
-                         ArrangementRules, LoadFactorRules, LoadRules, OperatingRules,
-                         AngleRules, RatingRules, GeometryRules, BearingFields, Spec):
+class RollingBearingSpec(MethodRules, BinOilRules, DutyCycleRules, ElementFitRules,
+                         LubricationRules, ArrangementRules, LoadFactorRules, LoadRules,
+                         OperatingRules, AngleRules, RatingRules, GeometryRules, MountingFields,
+                         BearingFields, Spec):
     """A rolling bearing sized by ISO 281 (life) and ISO 76 (static safety), at one
     operating point or over a duty cycle."""
 
@@ -235,8 +237,7 @@ class RollingBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, Lubricati
 
     def with_turning_speed(self, speed: Any) -> RollingBearingSpec:
         """The bearing with its inner ring at ``speed`` and its outer ring fixed."""
-        return self.model_copy(update={"speed": speed, "inner_speed": None,
-                                       "outer_speed": None})
+        return self.model_copy(update={"speed": speed, "inner_speed": None, "outer_speed": None})
 
     @property
     def angle(self) -> float:
@@ -376,6 +377,7 @@ class RollingBearingSpec(BinOilRules, DutyCycleRules, ElementFitRules, Lubricati
             "elastic_modulus": self.material.elastic_modulus,
             "poisson_ratio": self.material.poisson_ratio,
             "max_contact_pressure": self.contact_pressure_limit,
+            **self.mounting_inputs(),
         }
 
     @property

@@ -80,4 +80,4 @@ def limit_levels(kind: Kind, limits: Mapping[str, float], margins: Iterable[str]
 
 def judged_quantity(sweep: Sweep, margin: str) -> str | None:
     judged = sweep.kind.judged.get(margin)
-    return judged.quantity if judged is not None and isinstance(judged.quantity, str) else None
+    return judged.key(sweep.results) if judged is not None else None

@@ -54,9 +54,8 @@ class StudyReport:
             # the quantity it judges says the same with its limit in its own unit (a life
             # in hours against the required life), where it was sampled
             judges = KINDS[self.record["kind"]].judged.get(weakest)
-            quantity = getattr(judges, "quantity", None)
-            return quantity if isinstance(quantity, str) and quantity in self.histograms \
-                else weakest
+            quantity = None if judges is None else judges.key(self.histograms)
+            return quantity if quantity is not None else weakest
         return self.governing[0] if self.governing else None
 
     @property
