@@ -87,13 +87,37 @@ def ball_geometry(ball_count: ArrayLike, ball_diameter: ArrayLike, pitch_diamete
     return BallGeometry(*(a.astype(float) for a in numbers), one_sided.astype(bool))
 
 
-def _balls(geometry: BallGeometry) -> tuple[NDArray, NDArray, NDArray]:
-    """(cos ψ, sin ψ, mask) of every ball, (N, Zmax): ψ_j = 2πj/Z."""
+#: Each coordinate's part of ∂s/∂u: whether it moves s_x (else s_r), and its factor as
+#: powers of (cos ψ, sin ψ).
+_PARTS = {0: (True, (0, 0)), 1: (False, (1, 0)), 2: (False, (0, 1)), 3: (True, (0, 1)),
+          4: (True, (1, 0))}
+#: Designs solved together: a chunk's (designs × balls) temporaries stay in cache.
+CHUNK = 1 << 12
+
+
+class _Balls(NamedTuple):
+    """Every ball of a set of designs, (N, Zmax): the products of cos ψ and sin ψ that
+    the force and the stiffness weigh, keyed by their powers, and each ball's groove
+    distance A (+inf for padding, which so never touches)."""
+
+    trig: dict[tuple[int, int], NDArray]
+    reach: NDArray
+
+    def take(self, rows: NDArray) -> _Balls:
+        return _Balls({key: value[rows] for key, value in self.trig.items()},
+                      self.reach[rows])
+
+
+def _balls(geometry: BallGeometry) -> tuple[_Balls, NDArray]:
+    """Every ball (ψ_j = 2πj/Z) and the mask of real balls, (N, Zmax)."""
     count = geometry.ball_count.astype(int)
     j = np.arange(int(count.max()))
     mask = j[None, :] < count[:, None]
     psi = 2.0 * np.pi * j[None, :] / count[:, None]
-    return np.cos(psi), np.sin(psi), mask
+    cos, sin = np.cos(psi), np.sin(psi)
+    trig = {(1, 0): cos, (0, 1): sin, (2, 0): cos * cos, (0, 2): sin * sin,
+            (1, 1): cos * sin}
+    return _Balls(trig, np.where(mask, geometry.groove_distance[:, None], np.inf)), mask
 
 
 class _State(NamedTuple):
@@ -104,8 +128,15 @@ class _State(NamedTuple):
     angle: NDArray | None  # (N, Zmax) signed atan2(s_x, s_r) [rad], where asked for
 
 
-def _state(geometry: BallGeometry, u: NDArray, cos: NDArray, sin: NDArray, mask: NDArray,
-           columns: list[int] | None = None, *, angles: bool = False) -> _State:
+def _weighed(weight: NDArray, balls: _Balls, power: tuple[int, int]) -> NDArray:
+    """Σ over the balls of weight·cos^a ψ·sin^b ψ, (N,)."""
+    if power == (0, 0):
+        return weight.sum(axis=1)
+    return np.einsum("nz,nz->n", weight, balls.trig[power])
+
+
+def _state(geometry: BallGeometry, u: NDArray, balls: _Balls, columns: list[int], *,
+           angles: bool = False) -> _State:
     r"""The contacts at the scaled displacement u = (δx, δy, δz, L·θy, L·θz):
 
     .. math:: s_x = s_{x0} + δx + L(θ_z\cos ψ + θ_y\sin ψ), \quad
@@ -113,34 +144,44 @@ def _state(geometry: BallGeometry, u: NDArray, cos: NDArray, sin: NDArray, mask:
 
     The energy Σ 2/5·K·δ₊^(5/2), its gradient Σ Q·∂δ/∂u and its Hessian
     Σ 3/2·K·δ₊^(1/2)·g gᵀ + Q/|s|·t tᵀ (g = n·∂s/∂u, t = n⊥·∂s/∂u, n = s/|s|), along
-    the coordinates ``columns``.
+    the coordinates ``columns``. With ∂s/∂u = (f, 0) for an axial coordinate and (0, f)
+    for a radial one, the Hessian's entries are Σ w·f_i·f_j with w = a, b or c for two
+    axial, two radial or mixed coordinates (a = k_t + (k_n − k_t)·n_x², b = k_t +
+    (k_n − k_t)·n_r², c = (k_n − k_t)·n_x·n_r), the force's Σ Q·n·f.
     """
-    sx = (geometry.axial_offset[:, None] + u[:, 0:1] + sin * u[:, 3:4] + cos * u[:, 4:5])
-    sr = geometry.radial_offset[:, None] + cos * u[:, 1:2] + sin * u[:, 2:3]
-    distance = np.hypot(sx, sr)
-    touches = mask & ~(geometry.one_sided[:, None] & (sx <= 0.0))
-    deflection = np.where(touches,
-                          np.maximum(distance - geometry.groove_distance[:, None], 0.0), 0.0)
+    cos, sin = balls.trig[(1, 0)], balls.trig[(0, 1)]
+    sx = geometry.axial_offset[:, None] + u[:, 0:1] + cos * u[:, 4:5]
+    sr = geometry.radial_offset[:, None] + cos * u[:, 1:2]
+    if np.any(u[:, 3]):
+        sx = sx + sin * u[:, 3:4]
+    if np.any(u[:, 2]):
+        sr = sr + sin * u[:, 2:3]
+    distance = np.sqrt(sx * sx + sr * sr)
+    deflection = np.maximum(distance - balls.reach, 0.0)
+    if geometry.one_sided.any():
+        deflection = np.where(geometry.one_sided[:, None] & (sx <= 0.0), 0.0, deflection)
     k = geometry.spring_constant[:, None]
     root = np.sqrt(deflection)
     load = k * deflection * root
     nx, nr = sx / distance, sr / distance
-    columns = list(range(5)) if columns is None else columns
-    # ∂s/∂u of each coordinate: (the axial part's factor, the radial part's)
-    one = np.ones_like(cos)
-    zero = np.zeros_like(cos)
-    parts = {0: (one, zero), 1: (zero, cos), 2: (zero, sin), 3: (sin, zero), 4: (cos, zero)}
-    normal = [nx * parts[d][0] + nr * parts[d][1] for d in columns]
-    tangent = [nx * parts[d][1] - nr * parts[d][0] for d in columns]
-    along, across = 1.5 * k * root, load / distance
+    across = load / distance
+    difference = 1.5 * k * root - across
+    weights = {"x": load * nx, "r": load * nr}
+    along_x = difference * nx
+    weights["xx"], weights["rr"] = across + along_x * nx, across + difference * nr * nr
+    weights["xr"] = weights["rx"] = along_x * nr
     size = len(columns)
-    hessian = np.empty((cos.shape[0], size, size))
-    for i in range(size):
+    hessian = np.empty((u.shape[0], size, size))
+    force = np.empty((u.shape[0], size))
+    for i, ci in enumerate(columns):
+        axial_i, (a_i, b_i) = _PARTS[ci]
+        force[:, i] = _weighed(weights["x" if axial_i else "r"], balls, (a_i, b_i))
         for j in range(i, size):
-            hessian[:, i, j] = hessian[:, j, i] = np.sum(
-                along * normal[i] * normal[j] + across * tangent[i] * tangent[j], axis=1)
-    force = np.stack([np.sum(load * g, axis=1) for g in normal], axis=1)
-    return _State(0.4 * np.sum(load * deflection, axis=1), force, hessian, load,
+            axial_j, (a_j, b_j) = _PARTS[columns[j]]
+            key = ("x" if axial_i else "r") + ("x" if axial_j else "r")
+            hessian[:, i, j] = hessian[:, j, i] = _weighed(weights[key], balls,
+                                                           (a_i + a_j, b_i + b_j))
+    return _State(0.4 * np.einsum("nz,nz->n", load, deflection), force, hessian, load,
                   np.arctan2(sx, sr) if angles else None)
 
 
@@ -169,17 +210,22 @@ def solve_ball_equilibrium(geometry: BallGeometry, load: ArrayLike, *,
     u = _start(geometry, target)
     if fixed_tilt is not None:
         u[:, 4] = np.broadcast_to(np.asarray(fixed_tilt, dtype=float), (n,)) * lever
-    cos, sin, mask = _balls(geometry)
-    u, residual, converged = _newton(geometry, u, target, free, cos, sin, mask)
-    state = _state(geometry, u, cos, sin, mask, angles=True)
+    balls, mask = _balls(geometry)
+    residual = np.empty(n)
+    for first in range(0, n, CHUNK):
+        rows = slice(first, first + CHUNK)
+        u[rows], residual[rows] = _newton(_take(geometry, rows), u[rows], target[rows],
+                                          free, balls.take(rows))
+    state = _state(geometry, u, balls, list(range(5)), angles=True)
     # u = S·q with S = diag(1, 1, 1, L, L): the force is S·∂U/∂u, the stiffness S·H·S
     to_si = np.array([1.0, 1.0, 1.0, 0.0, 0.0])[None, :] + np.outer(lever, [0, 0, 0, 1, 1])
     q = u / to_si
     stiffness = state.hessian * to_si[:, :, None] * to_si[:, None, :]
-    psi = np.arctan2(sin, cos) % (2.0 * np.pi)
+    psi = np.arctan2(balls.trig[(0, 1)], balls.trig[(1, 0)]) % (2.0 * np.pi)
     blank = np.where(mask, 1.0, np.nan)
     return BallEquilibrium(q, state.force * to_si, psi * blank, state.load * blank,
-                           np.abs(state.angle) * blank, stiffness, residual, converged)
+                           np.abs(state.angle) * blank, stiffness, residual,
+                           residual <= RESIDUAL_TOLERANCE)
 
 
 def _start(geometry: BallGeometry, target: NDArray) -> NDArray:
@@ -197,49 +243,52 @@ def _start(geometry: BallGeometry, target: NDArray) -> NDArray:
     return u
 
 
+def _take(geometry: BallGeometry, rows: NDArray | slice) -> BallGeometry:
+    return BallGeometry(*(values[rows] for values in geometry))
+
+
 def _newton(geometry: BallGeometry, u: NDArray, target: NDArray, free: list[int],
-            cos: NDArray, sin: NDArray, mask: NDArray) -> tuple[NDArray, NDArray, NDArray]:
+            balls: _Balls) -> tuple[NDArray, NDArray]:
     """Damped Newton on U(u) = Σ 2/5·K·δ₊^(5/2) − F·u over the ``free`` coordinates, on
     the designs not yet solved: a step is taken where it lowers U (Armijo) or halves the
-    residual, else the damping grows tenfold. Returns u, the relative residual and
-    whether it reached the tolerance."""
+    residual, else the damping grows tenfold; the contacts at a step taken are those
+    the next iteration starts from. Returns u and the relative residual."""
     n = u.shape[0]
     u = u.copy()
     typical = geometry.ball_count * geometry.spring_constant * np.sqrt(
         np.maximum(np.abs(u).max(axis=1), geometry.groove_distance * 1e-6))
     damping = np.full(n, 1e-6)
     residual = np.full(n, np.inf)
-    size = np.maximum(np.max(np.abs(target[:, free]), axis=1), 1e-300)
+    goal = target[:, free]
+    size = np.maximum(np.max(np.abs(goal), axis=1), 1e-300)
     eye = np.eye(len(free))
+    state = _state(geometry, u, balls, free)
+    energy, force, hessian = state.energy - np.einsum("nd,nd->n", goal, u[:, free]), \
+        state.force, state.hessian
     active = np.arange(n)
     for _ in range(MAX_ITERATIONS):
-        part = BallGeometry(*(values[active] for values in geometry))
-        shape = (cos[active], sin[active], mask[active])
-        here, goal = u[active], target[active][:, free]
-        state = _state(part, here, *shape, columns=free)
-        gradient = state.force - goal
+        gradient = force[active] - goal[active]
         residual[active] = np.max(np.abs(gradient), axis=1) / np.maximum(
-            size[active], np.max(np.abs(state.force), axis=1))
-        solved = residual[active] <= RESIDUAL_TOLERANCE
-        active, here, goal, gradient = (active[~solved], here[~solved], goal[~solved],
-                                        gradient[~solved])
+            size[active], np.max(np.abs(force[active]), axis=1))
+        unsolved = residual[active] > RESIDUAL_TOLERANCE
+        active, gradient = active[unsolved], gradient[unsolved]
         if active.size == 0:
             break
-        part = BallGeometry(*(values[active] for values in geometry))
-        shape = (cos[active], sin[active], mask[active])
-        hessian = state.hessian[~solved] + (damping[active] * typical[active])[:, None, None] * eye
-        step = -np.linalg.solve(hessian, gradient[..., None])[..., 0]
-        trial = here.copy()
+        damped = hessian[active] + (damping[active] * typical[active])[:, None, None] * eye
+        step = -np.linalg.solve(damped, gradient[..., None])[..., 0]
+        trial = u[active]
         trial[:, free] += step
-        new = _state(part, trial, *shape, columns=free)
-        energy = state.energy[~solved] - np.einsum("nd,nd->n", goal, here[:, free])
-        energy_new = new.energy - np.einsum("nd,nd->n", goal, trial[:, free])
+        new = _state(_take(geometry, active), trial, balls.take(active), free)
+        energy_new = new.energy - np.einsum("nd,nd->n", goal[active], trial[:, free])
         # near the solution U's change is lost in its rounding: a step that shrinks the
         # residual counts as well
-        shrinks = (np.max(np.abs(new.force - goal), axis=1)
+        shrinks = (np.max(np.abs(new.force - goal[active]), axis=1)
                    < 0.5 * np.max(np.abs(gradient), axis=1))
-        better = (energy_new <= energy + 1e-4 * np.einsum("nd,nd->n", gradient, step)) | shrinks
-        u[active[better]] = trial[better]
+        better = (energy_new <= energy[active] + 1e-4 * np.einsum("nd,nd->n", gradient, step)
+                  ) | shrinks
+        taken = active[better]
+        u[taken], energy[taken] = trial[better], energy_new[better]
+        force[taken], hessian[taken] = new.force[better], new.hessian[better]
         damping[active] = np.where(better, np.maximum(damping[active] / 10.0, 1e-14),
                                    damping[active] * 10.0)
-    return u, residual, residual <= RESIDUAL_TOLERANCE
+    return u, residual
