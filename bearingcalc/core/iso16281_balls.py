@@ -29,6 +29,11 @@ IN_PLANE = (0, 1, 4)
 #: The relative residual at which the equilibrium counts as found.
 RESIDUAL_TOLERANCE = 1e-12
 MAX_ITERATIONS = 80
+#: The Levenberg–Marquardt damping of the first step, relative to Z·K·√|u|: the undamped
+#: step from the rough start is often too long and refused. Not larger: from 1e-3 on, an
+#: angular-contact bearing with no axial load slides to a stationary point with its ring
+#: pulled through the balls (contact angles past 90°) instead of failing.
+INITIAL_DAMPING = 1e-4
 
 
 class BallGeometry(NamedTuple):
@@ -92,7 +97,7 @@ def ball_geometry(ball_count: ArrayLike, ball_diameter: ArrayLike, pitch_diamete
 _PARTS = {0: (True, (0, 0)), 1: (False, (1, 0)), 2: (False, (0, 1)), 3: (True, (0, 1)),
           4: (True, (1, 0))}
 #: Designs solved together: a chunk's (designs × balls) temporaries stay in cache.
-CHUNK = 1 << 12
+CHUNK = 1 << 11
 
 
 class _Balls(NamedTuple):
@@ -211,21 +216,22 @@ def solve_ball_equilibrium(geometry: BallGeometry, load: ArrayLike, *,
     if fixed_tilt is not None:
         u[:, 4] = np.broadcast_to(np.asarray(fixed_tilt, dtype=float), (n,)) * lever
     balls, mask = _balls(geometry)
-    residual = np.empty(n)
+    residual, force = np.empty(n), np.empty((n, 5))
+    loads, angles, hessian = np.empty(mask.shape), np.empty(mask.shape), np.empty((n, 5, 5))
     for first in range(0, n, CHUNK):
         rows = slice(first, first + CHUNK)
-        u[rows], residual[rows] = _newton(_take(geometry, rows), u[rows], target[rows],
-                                          free, balls.take(rows))
-    state = _state(geometry, u, balls, list(range(5)), angles=True)
+        part, chunk_balls = _take(geometry, rows), balls.take(rows)
+        u[rows], residual[rows] = _newton(part, u[rows], target[rows], free, chunk_balls)
+        state = _state(part, u[rows], chunk_balls, list(range(5)), angles=True)
+        force[rows], hessian[rows], loads[rows], angles[rows] = (
+            state.force, state.hessian, state.load, state.angle)
     # u = S·q with S = diag(1, 1, 1, L, L): the force is S·∂U/∂u, the stiffness S·H·S
     to_si = np.array([1.0, 1.0, 1.0, 0.0, 0.0])[None, :] + np.outer(lever, [0, 0, 0, 1, 1])
-    q = u / to_si
-    stiffness = state.hessian * to_si[:, :, None] * to_si[:, None, :]
     psi = np.arctan2(balls.trig[(0, 1)], balls.trig[(1, 0)]) % (2.0 * np.pi)
     blank = np.where(mask, 1.0, np.nan)
-    return BallEquilibrium(q, state.force * to_si, psi * blank, state.load * blank,
-                           np.abs(state.angle) * blank, stiffness, residual,
-                           residual <= RESIDUAL_TOLERANCE)
+    return BallEquilibrium(u / to_si, force * to_si, psi * blank, loads * blank,
+                           np.abs(angles) * blank, hessian * to_si[:, :, None] * to_si[:, None, :],
+                           residual, residual <= RESIDUAL_TOLERANCE)
 
 
 def _start(geometry: BallGeometry, target: NDArray) -> NDArray:
@@ -257,7 +263,7 @@ def _newton(geometry: BallGeometry, u: NDArray, target: NDArray, free: list[int]
     u = u.copy()
     typical = geometry.ball_count * geometry.spring_constant * np.sqrt(
         np.maximum(np.abs(u).max(axis=1), geometry.groove_distance * 1e-6))
-    damping = np.full(n, 1e-6)
+    damping = np.full(n, INITIAL_DAMPING)
     residual = np.full(n, np.inf)
     goal = target[:, free]
     size = np.maximum(np.max(np.abs(goal), axis=1), 1e-300)
