@@ -271,30 +271,32 @@ def _newton(geometry: BallGeometry, u: NDArray, target: NDArray, free: list[int]
     state = _state(geometry, u, balls, free)
     energy, force, hessian = state.energy - np.einsum("nd,nd->n", goal, u[:, free]), \
         state.force, state.hessian
-    active = np.arange(n)
+    active, rows = np.arange(n), slice(None)
     for _ in range(MAX_ITERATIONS):
-        gradient = force[active] - goal[active]
-        residual[active] = np.max(np.abs(gradient), axis=1) / np.maximum(
-            size[active], np.max(np.abs(force[active]), axis=1))
-        unsolved = residual[active] > RESIDUAL_TOLERANCE
+        gradient = force[rows] - goal[rows]
+        residual[rows] = np.max(np.abs(gradient), axis=1) / np.maximum(
+            size[rows], np.max(np.abs(force[rows]), axis=1))
+        unsolved = residual[rows] > RESIDUAL_TOLERANCE
         active, gradient = active[unsolved], gradient[unsolved]
         if active.size == 0:
             break
-        damped = hessian[active] + (damping[active] * typical[active])[:, None, None] * eye
+        # while every design is unsolved, views instead of copies
+        rows = active if active.size < n else slice(None)
+        damped = hessian[rows] + (damping[rows] * typical[rows])[:, None, None] * eye
         step = -np.linalg.solve(damped, gradient[..., None])[..., 0]
         trial = u[active]
         trial[:, free] += step
-        new = _state(_take(geometry, active), trial, balls.take(active), free)
-        energy_new = new.energy - np.einsum("nd,nd->n", goal[active], trial[:, free])
+        new = _state(_take(geometry, rows), trial, balls.take(rows), free)
+        energy_new = new.energy - np.einsum("nd,nd->n", goal[rows], trial[:, free])
         # near the solution U's change is lost in its rounding: a step that shrinks the
         # residual counts as well
-        shrinks = (np.max(np.abs(new.force - goal[active]), axis=1)
+        shrinks = (np.max(np.abs(new.force - goal[rows]), axis=1)
                    < 0.5 * np.max(np.abs(gradient), axis=1))
-        better = (energy_new <= energy[active] + 1e-4 * np.einsum("nd,nd->n", gradient, step)
+        better = (energy_new <= energy[rows] + 1e-4 * np.einsum("nd,nd->n", gradient, step)
                   ) | shrinks
         taken = active[better]
         u[taken], energy[taken] = trial[better], energy_new[better]
         force[taken], hessian[taken] = new.force[better], new.hessian[better]
-        damping[active] = np.where(better, np.maximum(damping[active] / 10.0, 1e-14),
-                                   damping[active] * 10.0)
+        damping[rows] = np.where(better, np.maximum(damping[rows] / 10.0, 1e-14),
+                                 damping[rows] * 10.0)
     return u, residual
