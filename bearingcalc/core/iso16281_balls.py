@@ -237,7 +237,7 @@ def solve_ball_equilibrium(geometry: BallGeometry, load: ArrayLike, *,
 def _start(geometry: BallGeometry, target: NDArray) -> NDArray:
     """A first displacement that brings the balls under the load into contact: the
     first-contact play along each load, plus the deflection that would carry it on a
-    fifth of the balls."""
+    fifth of the balls; axially, where every ball would carry an equal share."""
     u = np.zeros_like(target)
     a, x0, r0 = geometry.groove_distance, geometry.axial_offset, geometry.radial_offset
     share = np.maximum(geometry.ball_count / 5.0, 1.0) * geometry.spring_constant
@@ -246,7 +246,41 @@ def _start(geometry: BallGeometry, target: NDArray) -> NDArray:
     for d, play in ((0, np.maximum(axial_play, 0.0)), (1, radial_play), (2, radial_play),
                     (3, np.maximum(axial_play, 0.0)), (4, np.maximum(axial_play, 0.0))):
         u[:, d] = np.sign(target[:, d]) * (play + (np.abs(target[:, d]) / share) ** (2 / 3))
+    u[:, 0] = np.sign(target[:, 0]) * _axial_start(geometry, np.abs(target[:, 0]))
     return u
+
+
+
+
+def _axial_start(geometry: BallGeometry, force: NDArray) -> NDArray:
+    """The axial displacement at which every ball carries an equal share of ``force``
+    [m]: F = Z·K·δ^1.5·sin α, sin α = s_x/(A + δ), s_x² = (A + δ)² − s_r0², by a few
+    fixed-point steps on δ (a contraction: δ enters the right side at a power ≤ 1/3)."""
+    a, x0, r0 = geometry.groove_distance, geometry.axial_offset, geometry.radial_offset
+    zk = geometry.ball_count * geometry.spring_constant
+    # a preloaded ring's balls are deflected by s_r0 − A at least; sin α ≥ 1e-3 bounds
+    # the estimate of a bearing at zero clearance
+    least = np.maximum(r0 - a, 0.0)
+    deflection = np.maximum((force / zk) ** (2 / 3), least)
+    for _ in range(6):
+        axial = np.sqrt(np.maximum((a + deflection) ** 2 - r0 * r0, (1e-3 * a) ** 2))
+        deflection = np.maximum((force * (a + deflection) / (zk * axial)) ** (2 / 3), least)
+    return np.sqrt(np.maximum((a + deflection) ** 2 - r0 * r0, 0.0)) - x0
+
+
+def _solve(matrix: NDArray, vector: NDArray) -> NDArray:
+    """x of M·x = v for each design, (N, k): a symmetric 3×3 M by its cofactors (a
+    quarter of LAPACK's time on small batches), any other by LAPACK."""
+    if matrix.shape[1] != 3:
+        return np.linalg.solve(matrix, vector[..., None])[..., 0]
+    a00, a01, a02 = matrix[:, 0, 0], matrix[:, 0, 1], matrix[:, 0, 2]
+    a11, a12, a22 = matrix[:, 1, 1], matrix[:, 1, 2], matrix[:, 2, 2]
+    c00, c01, c02 = a11 * a22 - a12 * a12, a02 * a12 - a01 * a22, a01 * a12 - a02 * a11
+    c11, c12, c22 = a00 * a22 - a02 * a02, a01 * a02 - a00 * a12, a00 * a11 - a01 * a01
+    v0, v1, v2 = vector[:, 0], vector[:, 1], vector[:, 2]
+    inverse_det = 1.0 / (a00 * c00 + a01 * c01 + a02 * c02)
+    return np.stack([c00 * v0 + c01 * v1 + c02 * v2, c01 * v0 + c11 * v1 + c12 * v2,
+                     c02 * v0 + c12 * v1 + c22 * v2], axis=1) * inverse_det[:, None]
 
 
 def _take(geometry: BallGeometry, rows: NDArray | slice) -> BallGeometry:
@@ -283,7 +317,7 @@ def _newton(geometry: BallGeometry, u: NDArray, target: NDArray, free: list[int]
         # while every design is unsolved, views instead of copies
         rows = active if active.size < n else slice(None)
         damped = hessian[rows] + (damping[rows] * typical[rows])[:, None, None] * eye
-        step = -np.linalg.solve(damped, gradient[..., None])[..., 0]
+        step = -_solve(damped, gradient)
         trial = u[active]
         trial[:, free] += step
         new = _state(_take(geometry, rows), trial, balls.take(rows), free)
