@@ -113,10 +113,10 @@ class _Balls(NamedTuple):
                       self.reach[rows])
 
 
-def _balls(geometry: BallGeometry) -> tuple[_Balls, NDArray]:
-    """Every ball (ψ_j = 2πj/Z) and the mask of real balls, (N, Zmax)."""
+def _balls(geometry: BallGeometry, width: int) -> tuple[_Balls, NDArray]:
+    """Every ball (ψ_j = 2πj/Z) and the mask of real balls, (N, width)."""
     count = geometry.ball_count.astype(int)
-    j = np.arange(int(count.max()))
+    j = np.arange(width)
     mask = j[None, :] < count[:, None]
     psi = 2.0 * np.pi * j[None, :] / count[:, None]
     cos, sin = np.cos(psi), np.sin(psi)
@@ -215,23 +215,32 @@ def solve_ball_equilibrium(geometry: BallGeometry, load: ArrayLike, *,
     u = _start(geometry, target)
     if fixed_tilt is not None:
         u[:, 4] = np.broadcast_to(np.asarray(fixed_tilt, dtype=float), (n,)) * lever
-    balls, mask = _balls(geometry)
-    residual, force = np.empty(n), np.empty((n, 5))
-    loads, angles, hessian = np.empty(mask.shape), np.empty(mask.shape), np.empty((n, 5, 5))
+    width = int(geometry.ball_count.max())
+    residual, force, hessian = np.empty(n), np.empty((n, 5)), np.empty((n, 5, 5))
+    azimuth, loads, angles = (np.empty((n, width)) for _ in range(3))
     for first in range(0, n, CHUNK):
         rows = slice(first, first + CHUNK)
-        part, chunk_balls = _take(geometry, rows), balls.take(rows)
-        u[rows], residual[rows] = _newton(part, u[rows], target[rows], free, chunk_balls)
-        state = _state(part, u[rows], chunk_balls, list(range(5)), angles=True)
-        force[rows], hessian[rows], loads[rows], angles[rows] = (
-            state.force, state.hessian, state.load, state.angle)
+        (u[rows], residual[rows], force[rows], hessian[rows], azimuth[rows], loads[rows],
+         angles[rows]) = _solve_chunk(_take(geometry, rows), u[rows], target[rows], free,
+                                      width)
     # u = S·q with S = diag(1, 1, 1, L, L): the force is S·∂U/∂u, the stiffness S·H·S
     to_si = np.array([1.0, 1.0, 1.0, 0.0, 0.0])[None, :] + np.outer(lever, [0, 0, 0, 1, 1])
-    psi = np.arctan2(balls.trig[(0, 1)], balls.trig[(1, 0)]) % (2.0 * np.pi)
+    return BallEquilibrium(u / to_si, force * to_si, azimuth, loads, angles,
+                           hessian * to_si[:, :, None] * to_si[:, None, :], residual,
+                           residual <= RESIDUAL_TOLERANCE)
+
+
+def _solve_chunk(geometry: BallGeometry, u: NDArray, target: NDArray, free: list[int],
+                 width: int) -> tuple[NDArray, ...]:
+    """One chunk's equilibrium: u, the residual, the force and Hessian in all five
+    coordinates, and each ball's azimuth, load and |contact angle| (NaN for padding)."""
+    balls, mask = _balls(geometry, width)
+    u, residual = _newton(geometry, u, target, free, balls)
+    state = _state(geometry, u, balls, list(range(5)), angles=True)
     blank = np.where(mask, 1.0, np.nan)
-    return BallEquilibrium(u / to_si, force * to_si, psi * blank, loads * blank,
-                           np.abs(angles) * blank, hessian * to_si[:, :, None] * to_si[:, None, :],
-                           residual, residual <= RESIDUAL_TOLERANCE)
+    azimuth = np.arctan2(balls.trig[(0, 1)], balls.trig[(1, 0)]) % (2.0 * np.pi)
+    return (u, residual, state.force, state.hessian, azimuth * blank, state.load * blank,
+            np.abs(state.angle) * blank)
 
 
 def _start(geometry: BallGeometry, target: NDArray) -> NDArray:
