@@ -155,26 +155,41 @@ def _state(geometry: BallGeometry, u: NDArray, balls: _Balls, columns: list[int]
     (k_n − k_t)·n_r², c = (k_n − k_t)·n_x·n_r), the force's Σ Q·n·f.
     """
     cos, sin = balls.trig[(1, 0)], balls.trig[(0, 1)]
-    sx = geometry.axial_offset[:, None] + u[:, 0:1] + cos * u[:, 4:5]
-    sr = geometry.radial_offset[:, None] + cos * u[:, 1:2]
+    # each temporary is made once and then updated in place: the chunk's arrays stay in
+    # cache and no allocation is repeated
+    sx = cos * u[:, 4:5]
+    sx += geometry.axial_offset[:, None] + u[:, 0:1]
+    sr = cos * u[:, 1:2]
+    sr += geometry.radial_offset[:, None]
     if np.any(u[:, 3]):
-        sx = sx + sin * u[:, 3:4]
+        sx += sin * u[:, 3:4]
     if np.any(u[:, 2]):
-        sr = sr + sin * u[:, 2:3]
-    distance = np.sqrt(sx * sx + sr * sr)
-    deflection = np.maximum(distance - balls.reach, 0.0)
+        sr += sin * u[:, 2:3]
+    inverse = sx * sx
+    inverse += sr * sr
+    np.sqrt(inverse, out=inverse)
+    deflection = inverse - balls.reach
+    np.maximum(deflection, 0.0, out=deflection)
     if geometry.one_sided.any():
-        deflection = np.where(geometry.one_sided[:, None] & (sx <= 0.0), 0.0, deflection)
+        np.copyto(deflection, 0.0, where=geometry.one_sided[:, None] & (sx <= 0.0))
+    np.divide(1.0, inverse, out=inverse)
     k = geometry.spring_constant[:, None]
     root = np.sqrt(deflection)
-    load = k * deflection * root
-    nx, nr = sx / distance, sr / distance
-    across = load / distance
-    difference = 1.5 * k * root - across
+    load = deflection * root
+    load *= k
+    nx, nr = sx * inverse, sr * inverse
+    across = load * inverse
+    difference = root * (1.5 * k)
+    difference -= across
     weights = {"x": load * nx, "r": load * nr}
     along_x = difference * nx
-    weights["xx"], weights["rr"] = across + along_x * nx, across + difference * nr * nr
     weights["xr"] = weights["rx"] = along_x * nr
+    along_x *= nx
+    along_x += across
+    difference *= nr
+    difference *= nr
+    difference += across
+    weights["xx"], weights["rr"] = along_x, difference
     size = len(columns)
     hessian = np.empty((u.shape[0], size, size))
     force = np.empty((u.shape[0], size))
