@@ -5,7 +5,8 @@ Vectorised over designs: every input is an array over N designs (or a scalar), t
 of each design padded to the largest count and masked. The equilibrium is found by a
 damped Newton method on the bearing's potential energy, which is convex in the inner
 ring's displacement, with its analytic gradient (the ring's internal force) and Hessian
-(the tangent stiffness).
+(the tangent stiffness), on chunks of designs small enough for their per-ball arrays to
+stay in cache, from a start at the play along each load plus a deflection estimate.
 
 Frame and signs: x along the bearing axis, positive along the axial load on the inner
 ring; y along the radial load; the ball at azimuth ψ = 0 on +y, ψ counted toward +z. The
@@ -140,20 +141,9 @@ def _weighed(weight: NDArray, balls: _Balls, power: tuple[int, int]) -> NDArray:
     return np.einsum("nz,nz->n", weight, balls.trig[power])
 
 
-def _state(geometry: BallGeometry, u: NDArray, balls: _Balls, columns: list[int], *,
-           angles: bool = False) -> _State:
-    r"""The contacts at the scaled displacement u = (δx, δy, δz, L·θy, L·θz):
-
-    .. math:: s_x = s_{x0} + δx + L(θ_z\cos ψ + θ_y\sin ψ), \quad
-              s_r = s_{r0} + δy\cos ψ + δz\sin ψ, \quad δ = |s| - A, \quad Q = Kδ_+^{3/2}
-
-    The energy Σ 2/5·K·δ₊^(5/2), its gradient Σ Q·∂δ/∂u and its Hessian
-    Σ 3/2·K·δ₊^(1/2)·g gᵀ + Q/|s|·t tᵀ (g = n·∂s/∂u, t = n⊥·∂s/∂u, n = s/|s|), along
-    the coordinates ``columns``. With ∂s/∂u = (f, 0) for an axial coordinate and (0, f)
-    for a radial one, the Hessian's entries are Σ w·f_i·f_j with w = a, b or c for two
-    axial, two radial or mixed coordinates (a = k_t + (k_n − k_t)·n_x², b = k_t +
-    (k_n − k_t)·n_r², c = (k_n − k_t)·n_x·n_r), the force's Σ Q·n·f.
-    """
+def _contacts(geometry: BallGeometry, u: NDArray, balls: _Balls
+              ) -> tuple[NDArray, NDArray, NDArray, NDArray]:
+    """s_x, s_r, 1/|s| and δ₊ of every ball at u, (N, Zmax) [m, m, 1/m, m]."""
     cos, sin = balls.trig[(1, 0)], balls.trig[(0, 1)]
     # each temporary is made once and then updated in place: the chunk's arrays stay in
     # cache and no allocation is repeated
@@ -173,6 +163,24 @@ def _state(geometry: BallGeometry, u: NDArray, balls: _Balls, columns: list[int]
     if geometry.one_sided.any():
         np.copyto(deflection, 0.0, where=geometry.one_sided[:, None] & (sx <= 0.0))
     np.divide(1.0, inverse, out=inverse)
+    return sx, sr, inverse, deflection
+
+
+def _state(geometry: BallGeometry, u: NDArray, balls: _Balls, columns: list[int], *,
+           angles: bool = False) -> _State:
+    r"""The contacts at the scaled displacement u = (δx, δy, δz, L·θy, L·θz):
+
+    .. math:: s_x = s_{x0} + δx + L(θ_z\cos ψ + θ_y\sin ψ), \quad
+              s_r = s_{r0} + δy\cos ψ + δz\sin ψ, \quad δ = |s| - A, \quad Q = Kδ_+^{3/2}
+
+    The energy Σ 2/5·K·δ₊^(5/2), its gradient Σ Q·∂δ/∂u and its Hessian
+    Σ 3/2·K·δ₊^(1/2)·g gᵀ + Q/|s|·t tᵀ (g = n·∂s/∂u, t = n⊥·∂s/∂u, n = s/|s|), along
+    the coordinates ``columns``. With ∂s/∂u = (f, 0) for an axial coordinate and (0, f)
+    for a radial one, the Hessian's entries are Σ w·f_i·f_j with w = a, b or c for two
+    axial, two radial or mixed coordinates (a = k_t + (k_n − k_t)·n_x², b = k_t +
+    (k_n − k_t)·n_r², c = (k_n − k_t)·n_x·n_r), the force's Σ Q·n·f.
+    """
+    sx, sr, inverse, deflection = _contacts(geometry, u, balls)
     k = geometry.spring_constant[:, None]
     root = np.sqrt(deflection)
     load = deflection * root
