@@ -5,7 +5,8 @@ Vectorised over designs: every input is an array over N designs (or a scalar), t
 of each design padded to the largest count and masked. The equilibrium is found by a
 damped Newton method on the bearing's potential energy, which is convex in the inner
 ring's displacement, with its analytic gradient (the ring's internal force) and Hessian
-(the tangent stiffness).
+(the tangent stiffness), on chunks of designs small enough for their per-ball arrays to
+stay in cache, from a start at the play along each load plus a deflection estimate.
 
 Frame and signs: x along the bearing axis, positive along the axial load on the inner
 ring; y along the radial load; the ball at azimuth ψ = 0 on +y, ψ counted toward +z. The
@@ -29,6 +30,11 @@ IN_PLANE = (0, 1, 4)
 #: The relative residual at which the equilibrium counts as found.
 RESIDUAL_TOLERANCE = 1e-12
 MAX_ITERATIONS = 80
+#: The Levenberg–Marquardt damping of the first step, relative to Z·K·√|u|: the undamped
+#: step from the rough start is often too long and refused. Not larger: from 1e-3 on, an
+#: angular-contact bearing with no axial load slides to a stationary point with its ring
+#: pulled through the balls (contact angles past 90°) instead of failing.
+INITIAL_DAMPING = 1e-4
 
 
 class BallGeometry(NamedTuple):
@@ -87,13 +93,37 @@ def ball_geometry(ball_count: ArrayLike, ball_diameter: ArrayLike, pitch_diamete
     return BallGeometry(*(a.astype(float) for a in numbers), one_sided.astype(bool))
 
 
-def _balls(geometry: BallGeometry) -> tuple[NDArray, NDArray, NDArray]:
-    """(cos ψ, sin ψ, mask) of every ball, (N, Zmax): ψ_j = 2πj/Z."""
+#: Each coordinate's part of ∂s/∂u: whether it moves s_x (else s_r), and its factor as
+#: powers of (cos ψ, sin ψ).
+_PARTS = {0: (True, (0, 0)), 1: (False, (1, 0)), 2: (False, (0, 1)), 3: (True, (0, 1)),
+          4: (True, (1, 0))}
+#: Designs solved together: a chunk's (designs × balls) temporaries stay in cache.
+CHUNK = 1 << 11
+
+
+class _Balls(NamedTuple):
+    """Every ball of a set of designs, (N, Zmax): the products of cos ψ and sin ψ that
+    the force and the stiffness weigh, keyed by their powers, and each ball's groove
+    distance A (+inf for padding, which so never touches)."""
+
+    trig: dict[tuple[int, int], NDArray]
+    reach: NDArray
+
+    def take(self, rows: NDArray) -> _Balls:
+        return _Balls({key: value[rows] for key, value in self.trig.items()},
+                      self.reach[rows])
+
+
+def _balls(geometry: BallGeometry, width: int) -> tuple[_Balls, NDArray]:
+    """Every ball (ψ_j = 2πj/Z) and the mask of real balls, (N, width)."""
     count = geometry.ball_count.astype(int)
-    j = np.arange(int(count.max()))
+    j = np.arange(width)
     mask = j[None, :] < count[:, None]
     psi = 2.0 * np.pi * j[None, :] / count[:, None]
-    return np.cos(psi), np.sin(psi), mask
+    cos, sin = np.cos(psi), np.sin(psi)
+    trig = {(1, 0): cos, (0, 1): sin, (2, 0): cos * cos, (0, 2): sin * sin,
+            (1, 1): cos * sin}
+    return _Balls(trig, np.where(mask, geometry.groove_distance[:, None], np.inf)), mask
 
 
 class _State(NamedTuple):
@@ -104,8 +134,42 @@ class _State(NamedTuple):
     angle: NDArray | None  # (N, Zmax) signed atan2(s_x, s_r) [rad], where asked for
 
 
-def _state(geometry: BallGeometry, u: NDArray, cos: NDArray, sin: NDArray, mask: NDArray,
-           columns: list[int] | None = None, *, angles: bool = False) -> _State:
+def _weighed(weight: NDArray, balls: _Balls, power: tuple[int, int]) -> NDArray:
+    """Σ over the balls of weight·cos^a ψ·sin^b ψ, (N,)."""
+    if power == (0, 0):
+        return weight.sum(axis=1)
+    return np.einsum("nz,nz->n", weight, balls.trig[power])
+
+
+def _contacts(geometry: BallGeometry, u: NDArray, balls: _Balls
+              ) -> tuple[NDArray, NDArray, NDArray, NDArray]:
+    """s_x, s_r, 1/|s| and δ₊ of every ball at u, (N, Zmax) [m, m, 1/m, m]."""
+    cos, sin = balls.trig[(1, 0)], balls.trig[(0, 1)]
+    # each temporary is made once and then updated in place: the chunk's arrays stay in
+    # cache and no allocation is repeated
+    sx = cos * u[:, 4:5]
+    sx += geometry.axial_offset[:, None] + u[:, 0:1]
+    sr = cos * u[:, 1:2]
+    sr += geometry.radial_offset[:, None]
+    if np.any(u[:, 3]):
+        sx += sin * u[:, 3:4]
+    if np.any(u[:, 2]):
+        sr += sin * u[:, 2:3]
+    inverse = sx * sx
+    inverse += sr * sr
+    np.sqrt(inverse, out=inverse)
+    deflection = inverse - balls.reach
+    np.maximum(deflection, 0.0, out=deflection)
+    if geometry.one_sided.any():
+        # an angular-contact bearing's ball touches only its shoulder: at 0 < α < 90°
+        np.copyto(deflection, 0.0,
+                  where=geometry.one_sided[:, None] & ((sx <= 0.0) | (sr <= 0.0)))
+    np.divide(1.0, inverse, out=inverse)
+    return sx, sr, inverse, deflection
+
+
+def _state(geometry: BallGeometry, u: NDArray, balls: _Balls, columns: list[int], *,
+           angles: bool = False) -> _State:
     r"""The contacts at the scaled displacement u = (δx, δy, δz, L·θy, L·θz):
 
     .. math:: s_x = s_{x0} + δx + L(θ_z\cos ψ + θ_y\sin ψ), \quad
@@ -113,36 +177,41 @@ def _state(geometry: BallGeometry, u: NDArray, cos: NDArray, sin: NDArray, mask:
 
     The energy Σ 2/5·K·δ₊^(5/2), its gradient Σ Q·∂δ/∂u and its Hessian
     Σ 3/2·K·δ₊^(1/2)·g gᵀ + Q/|s|·t tᵀ (g = n·∂s/∂u, t = n⊥·∂s/∂u, n = s/|s|), along
-    the coordinates ``columns``.
+    the coordinates ``columns``. With ∂s/∂u = (f, 0) for an axial coordinate and (0, f)
+    for a radial one, the Hessian's entries are Σ w·f_i·f_j with w = a, b or c for two
+    axial, two radial or mixed coordinates (a = k_t + (k_n − k_t)·n_x², b = k_t +
+    (k_n − k_t)·n_r², c = (k_n − k_t)·n_x·n_r), the force's Σ Q·n·f.
     """
-    sx = (geometry.axial_offset[:, None] + u[:, 0:1] + sin * u[:, 3:4] + cos * u[:, 4:5])
-    sr = geometry.radial_offset[:, None] + cos * u[:, 1:2] + sin * u[:, 2:3]
-    distance = np.hypot(sx, sr)
-    # an angular-contact bearing's ball touches only its shoulder: at 0 < α < 90°
-    # an angular-contact bearing's ball touches only its shoulder: at 0 < α < 90°
-    touches = mask & ~(geometry.one_sided[:, None] & ((sx <= 0.0) | (sr <= 0.0)))
-    deflection = np.where(touches,
-                          np.maximum(distance - geometry.groove_distance[:, None], 0.0), 0.0)
+    sx, sr, inverse, deflection = _contacts(geometry, u, balls)
     k = geometry.spring_constant[:, None]
     root = np.sqrt(deflection)
-    load = k * deflection * root
-    nx, nr = sx / distance, sr / distance
-    columns = list(range(5)) if columns is None else columns
-    # ∂s/∂u of each coordinate: (the axial part's factor, the radial part's)
-    one = np.ones_like(cos)
-    zero = np.zeros_like(cos)
-    parts = {0: (one, zero), 1: (zero, cos), 2: (zero, sin), 3: (sin, zero), 4: (cos, zero)}
-    normal = [nx * parts[d][0] + nr * parts[d][1] for d in columns]
-    tangent = [nx * parts[d][1] - nr * parts[d][0] for d in columns]
-    along, across = 1.5 * k * root, load / distance
+    load = deflection * root
+    load *= k
+    nx, nr = sx * inverse, sr * inverse
+    across = load * inverse
+    difference = root * (1.5 * k)
+    difference -= across
+    weights = {"x": load * nx, "r": load * nr}
+    along_x = difference * nx
+    weights["xr"] = weights["rx"] = along_x * nr
+    along_x *= nx
+    along_x += across
+    difference *= nr
+    difference *= nr
+    difference += across
+    weights["xx"], weights["rr"] = along_x, difference
     size = len(columns)
-    hessian = np.empty((cos.shape[0], size, size))
-    for i in range(size):
+    hessian = np.empty((u.shape[0], size, size))
+    force = np.empty((u.shape[0], size))
+    for i, ci in enumerate(columns):
+        axial_i, (a_i, b_i) = _PARTS[ci]
+        force[:, i] = _weighed(weights["x" if axial_i else "r"], balls, (a_i, b_i))
         for j in range(i, size):
-            hessian[:, i, j] = hessian[:, j, i] = np.sum(
-                along * normal[i] * normal[j] + across * tangent[i] * tangent[j], axis=1)
-    force = np.stack([np.sum(load * g, axis=1) for g in normal], axis=1)
-    return _State(0.4 * np.sum(load * deflection, axis=1), force, hessian, load,
+            axial_j, (a_j, b_j) = _PARTS[columns[j]]
+            key = ("x" if axial_i else "r") + ("x" if axial_j else "r")
+            hessian[:, i, j] = hessian[:, j, i] = _weighed(weights[key], balls,
+                                                           (a_i + a_j, b_i + b_j))
+    return _State(0.4 * np.einsum("nz,nz->n", load, deflection), force, hessian, load,
                   np.arctan2(sx, sr) if angles else None)
 
 
@@ -171,23 +240,38 @@ def solve_ball_equilibrium(geometry: BallGeometry, load: ArrayLike, *,
     u = _start(geometry, target)
     if fixed_tilt is not None:
         u[:, 4] = np.broadcast_to(np.asarray(fixed_tilt, dtype=float), (n,)) * lever
-    cos, sin, mask = _balls(geometry)
-    u, residual, converged = _newton(geometry, u, target, free, cos, sin, mask)
-    state = _state(geometry, u, cos, sin, mask, angles=True)
+    width = int(geometry.ball_count.max())
+    residual, force, hessian = np.empty(n), np.empty((n, 5)), np.empty((n, 5, 5))
+    azimuth, loads, angles = (np.empty((n, width)) for _ in range(3))
+    for first in range(0, n, CHUNK):
+        rows = slice(first, first + CHUNK)
+        (u[rows], residual[rows], force[rows], hessian[rows], azimuth[rows], loads[rows],
+         angles[rows]) = _solve_chunk(_take(geometry, rows), u[rows], target[rows], free,
+                                      width)
     # u = S·q with S = diag(1, 1, 1, L, L): the force is S·∂U/∂u, the stiffness S·H·S
     to_si = np.array([1.0, 1.0, 1.0, 0.0, 0.0])[None, :] + np.outer(lever, [0, 0, 0, 1, 1])
-    q = u / to_si
-    stiffness = state.hessian * to_si[:, :, None] * to_si[:, None, :]
-    psi = np.arctan2(sin, cos) % (2.0 * np.pi)
+    return BallEquilibrium(u / to_si, force * to_si, azimuth, loads, angles,
+                           hessian * to_si[:, :, None] * to_si[:, None, :], residual,
+                           residual <= RESIDUAL_TOLERANCE)
+
+
+def _solve_chunk(geometry: BallGeometry, u: NDArray, target: NDArray, free: list[int],
+                 width: int) -> tuple[NDArray, ...]:
+    """One chunk's equilibrium: u, the residual, the force and Hessian in all five
+    coordinates, and each ball's azimuth, load and |contact angle| (NaN for padding)."""
+    balls, mask = _balls(geometry, width)
+    u, residual = _newton(geometry, u, target, free, balls)
+    state = _state(geometry, u, balls, list(range(5)), angles=True)
     blank = np.where(mask, 1.0, np.nan)
-    return BallEquilibrium(q, state.force * to_si, psi * blank, state.load * blank,
-                           np.abs(state.angle) * blank, stiffness, residual, converged)
+    azimuth = np.arctan2(balls.trig[(0, 1)], balls.trig[(1, 0)]) % (2.0 * np.pi)
+    return (u, residual, state.force, state.hessian, azimuth * blank, state.load * blank,
+            np.abs(state.angle) * blank)
 
 
 def _start(geometry: BallGeometry, target: NDArray) -> NDArray:
     """A first displacement that brings the balls under the load into contact: the
     first-contact play along each load, plus the deflection that would carry it on a
-    fifth of the balls."""
+    fifth of the balls; axially, where every ball would carry an equal share."""
     u = np.zeros_like(target)
     a, x0, r0 = geometry.groove_distance, geometry.axial_offset, geometry.radial_offset
     share = np.maximum(geometry.ball_count / 5.0, 1.0) * geometry.spring_constant
@@ -196,52 +280,91 @@ def _start(geometry: BallGeometry, target: NDArray) -> NDArray:
     for d, play in ((0, np.maximum(axial_play, 0.0)), (1, radial_play), (2, radial_play),
                     (3, np.maximum(axial_play, 0.0)), (4, np.maximum(axial_play, 0.0))):
         u[:, d] = np.sign(target[:, d]) * (play + (np.abs(target[:, d]) / share) ** (2 / 3))
+    u[:, 0] = np.sign(target[:, 0]) * _axial_start(geometry, np.abs(target[:, 0]))
     return u
 
 
+
+
+def _axial_start(geometry: BallGeometry, force: NDArray) -> NDArray:
+    """The axial displacement at which every ball carries an equal share of ``force``
+    [m]: F = Z·K·δ^1.5·sin α, sin α = s_x/(A + δ), s_x² = (A + δ)² − s_r0², by a few
+    fixed-point steps on δ (a contraction: δ enters the right side at a power ≤ 1/3)."""
+    a, x0, r0 = geometry.groove_distance, geometry.axial_offset, geometry.radial_offset
+    zk = geometry.ball_count * geometry.spring_constant
+    # a preloaded ring's balls are deflected by s_r0 − A at least; sin α ≥ 1e-3 bounds
+    # the estimate of a bearing at zero clearance
+    least = np.maximum(r0 - a, 0.0)
+    deflection = np.maximum((force / zk) ** (2 / 3), least)
+    for _ in range(6):
+        axial = np.sqrt(np.maximum((a + deflection) ** 2 - r0 * r0, (1e-3 * a) ** 2))
+        deflection = np.maximum((force * (a + deflection) / (zk * axial)) ** (2 / 3), least)
+    return np.sqrt(np.maximum((a + deflection) ** 2 - r0 * r0, 0.0)) - x0
+
+
+def _solve(matrix: NDArray, vector: NDArray) -> NDArray:
+    """x of M·x = v for each design, (N, k): a symmetric 3×3 M by its cofactors (a
+    quarter of LAPACK's time on small batches), any other by LAPACK."""
+    if matrix.shape[1] != 3:
+        return np.linalg.solve(matrix, vector[..., None])[..., 0]
+    a00, a01, a02 = matrix[:, 0, 0], matrix[:, 0, 1], matrix[:, 0, 2]
+    a11, a12, a22 = matrix[:, 1, 1], matrix[:, 1, 2], matrix[:, 2, 2]
+    c00, c01, c02 = a11 * a22 - a12 * a12, a02 * a12 - a01 * a22, a01 * a12 - a02 * a11
+    c11, c12, c22 = a00 * a22 - a02 * a02, a01 * a02 - a00 * a12, a00 * a11 - a01 * a01
+    v0, v1, v2 = vector[:, 0], vector[:, 1], vector[:, 2]
+    inverse_det = 1.0 / (a00 * c00 + a01 * c01 + a02 * c02)
+    return np.stack([c00 * v0 + c01 * v1 + c02 * v2, c01 * v0 + c11 * v1 + c12 * v2,
+                     c02 * v0 + c12 * v1 + c22 * v2], axis=1) * inverse_det[:, None]
+
+
+def _take(geometry: BallGeometry, rows: NDArray | slice) -> BallGeometry:
+    return BallGeometry(*(values[rows] for values in geometry))
+
+
 def _newton(geometry: BallGeometry, u: NDArray, target: NDArray, free: list[int],
-            cos: NDArray, sin: NDArray, mask: NDArray) -> tuple[NDArray, NDArray, NDArray]:
+            balls: _Balls) -> tuple[NDArray, NDArray]:
     """Damped Newton on U(u) = Σ 2/5·K·δ₊^(5/2) − F·u over the ``free`` coordinates, on
     the designs not yet solved: a step is taken where it lowers U (Armijo) or halves the
-    residual, else the damping grows tenfold. Returns u, the relative residual and
-    whether it reached the tolerance."""
+    residual, else the damping grows tenfold; the contacts at a step taken are those
+    the next iteration starts from. Returns u and the relative residual."""
     n = u.shape[0]
     u = u.copy()
     typical = geometry.ball_count * geometry.spring_constant * np.sqrt(
         np.maximum(np.abs(u).max(axis=1), geometry.groove_distance * 1e-6))
-    damping = np.full(n, 1e-6)
+    damping = np.full(n, INITIAL_DAMPING)
     residual = np.full(n, np.inf)
-    size = np.maximum(np.max(np.abs(target[:, free]), axis=1), 1e-300)
+    goal = target[:, free]
+    size = np.maximum(np.max(np.abs(goal), axis=1), 1e-300)
     eye = np.eye(len(free))
-    active = np.arange(n)
+    state = _state(geometry, u, balls, free)
+    energy, force, hessian = state.energy - np.einsum("nd,nd->n", goal, u[:, free]), \
+        state.force, state.hessian
+    active, rows = np.arange(n), slice(None)
     for _ in range(MAX_ITERATIONS):
-        part = BallGeometry(*(values[active] for values in geometry))
-        shape = (cos[active], sin[active], mask[active])
-        here, goal = u[active], target[active][:, free]
-        state = _state(part, here, *shape, columns=free)
-        gradient = state.force - goal
-        residual[active] = np.max(np.abs(gradient), axis=1) / np.maximum(
-            size[active], np.max(np.abs(state.force), axis=1))
-        solved = residual[active] <= RESIDUAL_TOLERANCE
-        active, here, goal, gradient = (active[~solved], here[~solved], goal[~solved],
-                                        gradient[~solved])
+        gradient = force[rows] - goal[rows]
+        residual[rows] = np.max(np.abs(gradient), axis=1) / np.maximum(
+            size[rows], np.max(np.abs(force[rows]), axis=1))
+        unsolved = residual[rows] > RESIDUAL_TOLERANCE
+        active, gradient = active[unsolved], gradient[unsolved]
         if active.size == 0:
             break
-        part = BallGeometry(*(values[active] for values in geometry))
-        shape = (cos[active], sin[active], mask[active])
-        hessian = state.hessian[~solved] + (damping[active] * typical[active])[:, None, None] * eye
-        step = -np.linalg.solve(hessian, gradient[..., None])[..., 0]
-        trial = here.copy()
+        # while every design is unsolved, views instead of copies
+        rows = active if active.size < n else slice(None)
+        damped = hessian[rows] + (damping[rows] * typical[rows])[:, None, None] * eye
+        step = -_solve(damped, gradient)
+        trial = u[active]
         trial[:, free] += step
-        new = _state(part, trial, *shape, columns=free)
-        energy = state.energy[~solved] - np.einsum("nd,nd->n", goal, here[:, free])
-        energy_new = new.energy - np.einsum("nd,nd->n", goal, trial[:, free])
+        new = _state(_take(geometry, rows), trial, balls.take(rows), free)
+        energy_new = new.energy - np.einsum("nd,nd->n", goal[rows], trial[:, free])
         # near the solution U's change is lost in its rounding: a step that shrinks the
         # residual counts as well
-        shrinks = (np.max(np.abs(new.force - goal), axis=1)
+        shrinks = (np.max(np.abs(new.force - goal[rows]), axis=1)
                    < 0.5 * np.max(np.abs(gradient), axis=1))
-        better = (energy_new <= energy + 1e-4 * np.einsum("nd,nd->n", gradient, step)) | shrinks
-        u[active[better]] = trial[better]
-        damping[active] = np.where(better, np.maximum(damping[active] / 10.0, 1e-14),
-                                   damping[active] * 10.0)
-    return u, residual, residual <= RESIDUAL_TOLERANCE
+        better = (energy_new <= energy[rows] + 1e-4 * np.einsum("nd,nd->n", gradient, step)
+                  ) | shrinks
+        taken = active[better]
+        u[taken], energy[taken] = trial[better], energy_new[better]
+        force[taken], hessian[taken] = new.force[better], new.hessian[better]
+        damping[rows] = np.where(better, np.maximum(damping[rows] / 10.0, 1e-14),
+                                 damping[rows] * 10.0)
+    return u, residual
