@@ -261,3 +261,35 @@ def test_the_spring_constant_is_the_references_exact_hertz():
                                  bearing.inner_conformity, bearing.outer_conformity,
                                  bearing.nominal_contact_angle, 2.1e11, 0.3)
         assert float(k) == pytest.approx(bearing.spring_constant, rel=1e-9)
+
+
+def test_the_load_zone_of_a_radial_load_with_clearance_is_harris_closed_form():
+    """A deep-groove bearing under a radial load: δ(ψ) = δr·cosψ − Pd/2, so the load zone
+    ends at cosψ_l = Pd/(2δr) (Harris & Kotzalas, Part 1, ch. 7); between 360 balls the
+    interpolation is within 1e-4 of it, and at zero clearance between 10 balls exact by
+    symmetry (180°)."""
+    from bearingcalc.core.iso16281_balls import ball_deflections
+    from bearingcalc.core.mounted_ball_bearing import load_zone_angle
+
+    for z, clearance, expected in ((360, 12e-6, None), (10, 0.0, math.pi)):
+        bearing = reference.BallBearing(z, 2e-3, 200e-3, 0.52, 0.53,
+                                        diametral_clearance=clearance)
+        geometry = _geometry([bearing])
+        mine = solve_ball_equilibrium(geometry, np.array([[0.0, 3000.0, 0, 0, 0]]))
+        zone = load_zone_angle(ball_deflections(geometry, mine.displacement, mine.azimuth),
+                               mine.azimuth)[0]
+        radial = mine.displacement[0, 1]
+        closed = 2 * math.acos(clearance / (2 * radial)) if expected is None else expected
+        assert zone == pytest.approx(closed, abs=1e-4 if expected is None else 1e-12)
+
+
+def test_the_load_zone_is_whole_under_an_axial_load():
+    from bearingcalc.core.iso16281_balls import ball_deflections
+    from bearingcalc.core.mounted_ball_bearing import load_zone_angle
+
+    bearing = reference.BallBearing(12, 9.525e-3, 46e-3, 0.52, 0.53, diametral_clearance=1e-5)
+    geometry = _geometry([bearing])
+    mine = solve_ball_equilibrium(geometry, np.array([[2000.0, 100.0, 0, 0, 0]]))
+    zone = load_zone_angle(ball_deflections(geometry, mine.displacement, mine.azimuth),
+                           mine.azimuth)
+    assert zone[0] == 2 * math.pi

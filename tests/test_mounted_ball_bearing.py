@@ -170,3 +170,18 @@ def test_a_sweep_of_the_clearance_is_each_point_solved_alone(cli, spec_file, tmp
                                         diametral_clearance=clearance, elastic_modulus=STEEL)
         solved, _, _ = _reference(bearing, (300.0, 2000.0, 0, 0, 0), 14800.0)
         assert found == pytest.approx(solved["q"][1], rel=1e-8)
+
+
+def test_a_light_load_with_much_clearance_warns(cli, spec_file):
+    """40 µm of clearance under 100 N: one ball carries the load, the zone is below 90°,
+    and P is below 1 % of C."""
+    [record] = solve_json(cli, spec_file(DEEP_GROOVE.format(
+        clearance="40 µm", axial="0 N", extra="").replace("radial_load: 2 kN",
+                                                         "radial_load: 100 N")))
+    results = record["results"]
+    assert results["loaded_elements"] == 1
+    assert results["load_zone_angle"] < math.pi / 2
+    warned = " ".join(record["warnings"])
+    assert "one ball carries the whole load" in warned
+    assert "load zone is below 90°" in warned
+    assert "minimum load" in warned

@@ -137,6 +137,7 @@ WARNINGS: dict[str, str] = {
                               "e and Y of that row are used",
     "kappa_capped": "κ is above 4: ISO 281 takes κ = 4 for aISO",
     "aiso_capped": "aISO reached its cap of 50",
+    **mounted_ball_bearing.WARNINGS,
 }
 
 FEASIBLE = 0

@@ -368,3 +368,19 @@ def _newton(geometry: BallGeometry, u: NDArray, target: NDArray, free: list[int]
         damping[rows] = np.where(better, np.maximum(damping[rows] / 10.0, 1e-14),
                                  damping[rows] * 10.0)
     return u, residual
+
+
+def ball_deflections(geometry: BallGeometry, displacement: NDArray, azimuth: NDArray
+                     ) -> NDArray:
+    """Every ball's signed deflection δ = |s| − A [m] at the displacement (N, 5): its
+    compression where positive, its play where negative (an angular-contact ball off
+    its shoulder has no contact: its δ is made negative). ``azimuth`` (N, Zmax) as the
+    equilibrium gives it, NaN past Z."""
+    q = displacement
+    cos, sin = np.cos(azimuth), np.sin(azimuth)
+    sx = (geometry.axial_offset[:, None] + q[:, 0:1]
+          + geometry.lever[:, None] * (q[:, 4:5] * cos + q[:, 3:4] * sin))
+    sr = geometry.radial_offset[:, None] + q[:, 1:2] * cos + q[:, 2:3] * sin
+    deflection = np.sqrt(sx * sx + sr * sr) - geometry.groove_distance[:, None]
+    off = geometry.one_sided[:, None] & ((sx <= 0.0) | (sr <= 0.0))
+    return np.where(off, -np.abs(deflection), deflection)

@@ -16,7 +16,11 @@ from bearingcalc.core.bearing_life import life_margin
 from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.common import Found
 from bearingcalc.core.iso281 import life_modification_factor
-from bearingcalc.core.iso16281_balls import ball_geometry, solve_ball_equilibrium
+from bearingcalc.core.iso16281_balls import (
+    ball_deflections,
+    ball_geometry,
+    solve_ball_equilibrium,
+)
 from bearingcalc.core.iso16281_life import (
     ball_contact_pressures,
     ball_reference_life,
@@ -36,6 +40,8 @@ RESULTS: dict[str, tuple[str, str]] = {
                                 "misalignment"),
     "max_element_load": ("N", "the largest ball load Q"),
     "loaded_elements": ("1", "the balls that carry load"),
+    "load_zone_angle": ("rad", "2ψ_l, ψ_l the azimuth where a ball's deflection falls to 0 "
+                        "(between balls, interpolated); 2π where every ball is loaded"),
     "operating_contact_angle_min": ("rad", "the smallest contact angle of a loaded ball"),
     "operating_contact_angle_max": ("rad", "the largest contact angle of a loaded ball"),
     "max_contact_pressure_inner": ("Pa", "the largest Hertz pressure at the inner ring"),
@@ -58,6 +64,17 @@ ELEMENT_RESULTS = AxisResults({
 }, after="equilibrium_residual", meaning="ball {position}: {meaning}")
 #: The table's heading of the method's results.
 GROUP = "as mounted (ISO/TS 16281)"
+#: Warnings of the method: flag -> message.
+WARNINGS = {
+    "single_element_loaded": "one ball carries the whole load (ISO/TS 16281): check the "
+                             "clearance and the loads",
+    "narrow_load_zone": "the load zone is below 90°: a few balls carry the load; a smaller "
+                        "operating clearance spreads it",
+    "below_minimum_load": "the equivalent load is below 1 % of C, the makers' minimum load of "
+                          "a ball bearing: the balls may skid",
+}
+#: The makers' minimum load of a ball bearing, a share of C.
+MINIMUM_LOAD_SHARE = 0.01
 #: Status codes of the method: no equilibrium.
 NO_EQUILIBRIUM = 25
 STATUS_REASONS = {
@@ -119,11 +136,42 @@ def mounted_results(inputs: Mapping[str, Any], c: NDArray, iso281: Mapping[str, 
                                                   >= np.abs(inputs["outer_speed"])) > 0)
     found = _found(inputs, solved, life, (dw, dpw, fi, fe, modulus, poisson), iso281,
                    speed, shape)
+    zone = load_zone_angle(ball_deflections(geometry, solved.displacement, solved.azimuth),
+                           solved.azimuth).reshape(shape)
+    found.results["load_zone_angle"] = zone
+    found.flags.update(
+        single_element_loaded=found.results["loaded_elements"] == 1,
+        narrow_load_zone=zone < np.pi / 2,
+        below_minimum_load=np.asarray(iso281["equivalent_dynamic_load"], dtype=float)
+        < MINIMUM_LOAD_SHARE * np.asarray(c, dtype=float))
     rows = tuple(f"element_{k}" for k in range(1, solved.element_load.shape[1] + 1))
     values = {"azimuth": solved.azimuth, "load": solved.element_load,
               "contact_angle": solved.contact_angle}
     return found, Along(rows, {key: value.T.reshape((len(rows), *shape))
                                for key, value in values.items()})
+
+
+def load_zone_angle(deflection: NDArray, azimuth: NDArray) -> NDArray:
+    """2ψ_l [rad]: ψ_l where the deflection, walking from the ball at ψ = 0 (under the
+    radial load) toward ψ = π, falls to zero, linearly between the two balls around it;
+    2π where every ball is loaded or the zone reaches past ψ = π, 0 where the ball at
+    ψ = 0 is not loaded."""
+    valid = ~np.isnan(azimuth)
+    half = valid & (azimuth <= np.pi)
+    unloaded = half & ~(deflection > 0)
+    first = np.argmax(unloaded, axis=1)[:, None]
+    before = np.maximum(first - 1, 0)
+
+    def at(values: NDArray, index: NDArray) -> NDArray:
+        return np.take_along_axis(values, index, axis=1)[:, 0]
+
+    d_after, d_before = at(deflection, first), at(deflection, before)
+    psi_after, psi_before = at(azimuth, first), at(azimuth, before)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        crossing = psi_before + (psi_after - psi_before) * d_before / (d_before - d_after)
+    loaded_at_zero = deflection[:, 0] > 0
+    whole = np.all(~valid | (deflection > 0), axis=1) | (loaded_at_zero & ~unloaded.any(axis=1))
+    return np.where(whole, 2 * np.pi, np.where(loaded_at_zero, 2 * crossing, 0.0))
 
 
 def _or_zero(value: Any) -> Any:
