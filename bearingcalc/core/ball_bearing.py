@@ -69,7 +69,8 @@ RESULTS: dict[str, tuple[str, str]] = {
     "modified_rating_life_revolutions": ("1", "Lnm in revolutions"),
     "static_equivalent_load": ("N", "P0"),
     "static_safety_factor": ("1", "s0 = C0/P0"),
-    "life_margin": ("1", "modified_rating_life / min_rating_life − 1"),
+    "life_margin": ("1", "modified_rating_life (as mounted: modified_reference_rating_life) "
+                    "/ min_rating_life − 1"),
     "static_safety_margin": ("1", "s0 − min_static_safety"),
     "max_ball_load": ("N", "Q of the most heavily loaded ball"),
     "inner_contact_pressure": ("Pa", "Hertz peak pressure at the inner race"),
