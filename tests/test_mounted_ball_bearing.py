@@ -185,3 +185,17 @@ def test_a_light_load_with_much_clearance_warns(cli, spec_file):
     assert "one ball carries the whole load" in warned
     assert "load zone is below 90°" in warned
     assert "minimum load" in warned
+
+
+def test_new_prints_the_methods_template_and_it_checks(cli, spec_file):
+    run = cli("new", "rolling-bearing", "--method", "iso-16281")
+    assert run.code == 0 and "method: iso-16281" in run.out
+    [record] = solve_json(cli, spec_file(run.out))
+    assert record["results"]["equilibrium_residual"] < 1e-9
+
+
+@pytest.mark.parametrize("args", [("--method", "iso-1628"),
+                                  ("--method", "iso-16281", "--type", "deep-groove")])
+def test_new_refuses_an_unknown_method_or_both_options(cli, args):
+    run = cli("new", "rolling-bearing", *args)
+    assert run.code == 2 and "--method" in run.err

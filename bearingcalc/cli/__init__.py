@@ -176,6 +176,9 @@ def new(
     bearing_type: Annotated[str | None, typer.Option(
         "--type", metavar="TYPE", help="A template of this type, where the kind has several.",
         show_default=False)] = None,
+    method: Annotated[str | None, typer.Option(
+        "--method", metavar="METHOD", help="A template solved by this method, where the "
+        "kind has several (rolling-bearing: iso-16281).", show_default=False)] = None,
     list_kinds: Annotated[bool, typer.Option("--list", help="List the kinds.")] = False,
 ) -> None:
     """Print a commented template spec of KIND, ready for 'bearingcalc check'.
@@ -183,17 +186,21 @@ def new(
     Exit status: 0; 2 for an unknown kind or type, or no KIND (the kinds are listed).
     """
     from bearingcalc.kinds import KINDS, unknown_kind
-    from bearingcalc.templates import template_text
+    from bearingcalc.templates import method_template_text, template_text
 
     if list_kinds or kind_name is None:
         text = "".join(f"{name:16} {entry.summary}\n" for name, entry in KINDS.items())
     elif kind_name not in KINDS:
         raise bad_option("KIND", unknown_kind(kind_name))
+    elif method is not None and bearing_type is not None:
+        raise bad_option("--method", "give --type or --method, not both: a method's "
+                         "template has its own type")
     else:
         try:
-            text = template_text(kind_name, bearing_type)
+            text = (template_text(kind_name, bearing_type) if method is None
+                    else method_template_text(kind_name, method))
         except LookupError as error:
-            raise bad_option("--type", str(error)) from None
+            raise bad_option("--type" if method is None else "--method", str(error)) from None
     with errors_as_exit(debug=False):
         write_stdout(lambda stream: stream.write(text))
     if kind_name is None and not list_kinds:
