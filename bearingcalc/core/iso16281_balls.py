@@ -160,10 +160,12 @@ def _contacts(geometry: BallGeometry, u: NDArray, balls: _Balls
     np.sqrt(inverse, out=inverse)
     deflection = inverse - balls.reach
     np.maximum(deflection, 0.0, out=deflection)
+    # a ball touches its rings only between them (α < 90°), and an angular-contact
+    # bearing's only on its shoulder (α > 0)
+    off = sr <= 0.0
     if geometry.one_sided.any():
-        # an angular-contact bearing's ball touches only its shoulder: at 0 < α < 90°
-        np.copyto(deflection, 0.0,
-                  where=geometry.one_sided[:, None] & ((sx <= 0.0) | (sr <= 0.0)))
+        off |= geometry.one_sided[:, None] & (sx <= 0.0)
+    np.copyto(deflection, 0.0, where=off)
     np.divide(1.0, inverse, out=inverse)
     return sx, sr, inverse, deflection
 
@@ -382,5 +384,5 @@ def ball_deflections(geometry: BallGeometry, displacement: NDArray, azimuth: NDA
           + geometry.lever[:, None] * (q[:, 4:5] * cos + q[:, 3:4] * sin))
     sr = geometry.radial_offset[:, None] + q[:, 1:2] * cos + q[:, 2:3] * sin
     deflection = np.sqrt(sx * sx + sr * sr) - geometry.groove_distance[:, None]
-    off = geometry.one_sided[:, None] & ((sx <= 0.0) | (sr <= 0.0))
+    off = (sr <= 0.0) | (geometry.one_sided[:, None] & (sx <= 0.0))
     return np.where(off, -np.abs(deflection), deflection)

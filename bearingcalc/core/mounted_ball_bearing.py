@@ -78,10 +78,10 @@ MINIMUM_LOAD_SHARE = 0.01
 #: Status codes of the method: no equilibrium.
 NO_EQUILIBRIUM = 25
 STATUS_REASONS = {
-    NO_EQUILIBRIUM: ("axial_load", "the rings find no equilibrium under these loads: an "
-                     "angular-contact bearing needs an axial load that holds its balls on "
-                     "their contact (about Fr·tanα or more), and a tilting moment it can "
-                     "carry"),
+    NO_EQUILIBRIUM: ("axial_load", "the rings find no equilibrium under these loads: the "
+                     "balls cannot carry them (an angular-contact bearing needs an axial load "
+                     "that holds its balls on their contact, about Fr·tanα or more, and any "
+                     "bearing a tilting moment its balls can carry)"),
 }
 
 
