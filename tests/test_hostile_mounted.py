@@ -316,7 +316,7 @@ def test_example_solves_finite(tmp_path):
 
 
 def test_only_axial_deep_groove_loads_every_ball(tmp_path):
-    """Pure axial load on a deep-groove bearing with clearance: equal balls, a real contact angle."""
+    """Pure axial load on a deep-groove bearing with clearance: equal balls, contact angle > 0."""
     results = assert_solved(
         run(
             tmp_path,
