@@ -91,7 +91,12 @@ def assert_refused(result, field: str) -> None:
     assert result.exit_code == 2, result.output
     lines = [line for line in result.stderr.splitlines() if line.strip()]
     assert len(lines) == 1, result.stderr
-    assert field in lines[0], lines[0]
+    assert field in message_after_location(lines[0]), lines[0]
+
+
+def message_after_location(line: str) -> str:
+    """The line without its 'path:line: ' prefix (the path holds the test's own name)."""
+    return line.split("spec.yaml:", 1)[-1]
 
 
 def finite_numbers(value) -> bool:
@@ -209,7 +214,7 @@ def test_refused_on_check_names_field_in_table(tmp_path):
     result = run(tmp_path, spec_with(BASE, operating_clearance="-0.5 mm"), "check")
     assert_no_crash(result)
     assert result.exit_code == 2
-    assert "operating_clearance" in result.output
+    assert "operating_clearance" in message_after_location(result.output)
 
 
 def test_duty_cycle_with_method_refused(tmp_path):
@@ -492,7 +497,7 @@ def test_sweep_bad_unit_refused(tmp_path):
     result = run(tmp_path, BASE, "sweep", "--vary", "operating_clearance=0N:10N:3", "{spec}")
     assert_no_crash(result)
     assert result.exit_code == 2
-    assert "operating_clearance" in result.stderr
+    assert "operating_clearance" in message_after_location(result.stderr)
 
 
 # ---------------------------------------------------------------- tolerance
@@ -512,7 +517,7 @@ def tolerance_contract(tmp_path, spec, field):
     assert_no_crash(result)
     if result.exit_code == 2:
         lines = [line for line in result.stderr.splitlines() if line.strip()]
-        assert len(lines) == 1 and field in lines[0], result.stderr
+        assert len(lines) == 1 and field in message_after_location(lines[0]), result.stderr
     else:
         assert result.exit_code in (0, 1), result.output
         assert finite_numbers(json.loads(result.stdout))
@@ -599,7 +604,7 @@ def test_report_bad_spec_leaves_no_file(tmp_path):
     assert_no_crash(result)
     assert result.exit_code == 2
     assert not out.exists()
-    assert "operating_clearance" in result.stderr
+    assert "operating_clearance" in message_after_location(result.stderr)
 
 
 def test_report_one_ball(tmp_path):
@@ -701,3 +706,28 @@ def test_pure_moment_solves(tmp_path):
             "json",
         )
     )
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="a misalignment of 7 rad on a deep-groove bearing is not refused as "
+    "misalignment: it reaches the solver and comes back naming axial_load with the angular-contact "
+    "message",
+)
+def test_misalignment_beyond_a_turn_names_misalignment(tmp_path):
+    spec = spec_with(BASE, tilting_moment=DROP, misalignment="7 rad")
+    assert_refused(run(tmp_path, spec, "solve", "--format", "json"), "misalignment")
+
+
+@pytest.mark.parametrize(
+    "changes",
+    [
+        pytest.param({"tilting_moment": None}, id="moment-null"),
+        pytest.param({"tilting_moment": DROP, "misalignment": None}, id="misalignment-null"),
+        pytest.param({"operating_clearance": "0.0004 in"}, id="clearance-inch"),
+        pytest.param({"tilting_moment": DROP, "misalignment": "0.1 deg"}, id="misalignment-deg"),
+        pytest.param({"reliability": "95 %"}, id="reliability"),
+    ],
+)
+def test_more_inputs_contract(tmp_path, changes):
+    assert_contract(run(tmp_path, spec_with(BASE, **changes), "solve", "--format", "json"))
