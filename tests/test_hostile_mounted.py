@@ -645,12 +645,6 @@ def test_angular_contact_near_zero_axial_refused(tmp_path, axial):
     )
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="a deep-groove bearing with no equilibrium (ball_count 1 under radial, "
-    "axial and moment) is refused with the angular-contact message ('an angular-contact "
-    "bearing needs an axial load ... about Fr*tan(alpha)'), wrong for its type",
-)
 def test_deep_groove_no_equilibrium_message_fits_type(tmp_path):
     result = run(tmp_path, spec_with(BASE, ball_count=1), "solve", "--format", "json")
     assert_no_crash(result)
@@ -658,12 +652,6 @@ def test_deep_groove_no_equilibrium_message_fits_type(tmp_path):
     assert "angular-contact" not in result.stderr
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="the Hertz validity check (ellipse semi-axis over Dw/2) refuses a 10 MN "
-    "radial load, but a 1e6 N*m tilting_moment (ball load 12.8 MN, ring tilt 0.69 rad, "
-    "59 GPa) or a 0.25-0.5 rad misalignment (7.8 MN, 50 GPa) is solved and reported",
-)
 @pytest.mark.parametrize(
     ("changes", "field"),
     [
@@ -675,12 +663,6 @@ def test_moment_beyond_hertz_refused(tmp_path, changes, field):
     assert_refused(run(tmp_path, spec_with(BASE, **changes), "solve", "--format", "json"), field)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="with 390 um clearance (groove distance 396.9 um) the solved "
-    "operating_contact_angle_max is 1.608 rad (92 deg): past the groove's side, no real "
-    "contact; should be refused or bounded below 90 deg",
-)
 def test_contact_angle_stays_below_right_angle(tmp_path):
     result = run(
         tmp_path, spec_with(BASE, operating_clearance="390 µm"), "solve", "--format", "json"
@@ -708,12 +690,6 @@ def test_pure_moment_solves(tmp_path):
     )
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="a misalignment of 7 rad on a deep-groove bearing is not refused as "
-    "misalignment: it reaches the solver and comes back naming axial_load with the angular-contact "
-    "message",
-)
 def test_misalignment_beyond_a_turn_names_misalignment(tmp_path):
     spec = spec_with(BASE, tilting_moment=DROP, misalignment="7 rad")
     assert_refused(run(tmp_path, spec, "solve", "--format", "json"), "misalignment")

@@ -75,10 +75,11 @@ def ball_spring_constant(ball_diameter: ArrayLike, pitch_diameter: ArrayLike,
 def ball_contact_pressures(element_load: NDArray, contact_angle: NDArray,
                            ball_diameter: ArrayLike, pitch_diameter: ArrayLike,
                            inner_conformity: ArrayLike, outer_conformity: ArrayLike,
-                           elastic_modulus: ArrayLike, poisson_ratio: ArrayLike
-                           ) -> tuple[NDArray, NDArray]:
+                           elastic_modulus: ArrayLike, poisson_ratio: ArrayLike,
+                           quantity: str = "max_pressure") -> tuple[NDArray, NDArray]:
     """The largest Hertz pressure at the inner and at the outer ring over the balls
-    [Pa], each ball's contact with the curvatures at its operating contact angle."""
+    [Pa], each ball's contact with the curvatures at its operating contact angle; or the
+    largest of another of :data:`bearingcalc.core.hertz.CONTACT_KEYS` (``semi_major``)."""
     def column(value: ArrayLike) -> NDArray:
         return np.asarray(value, dtype=float).reshape(-1, 1)
 
@@ -86,10 +87,10 @@ def ball_contact_pressures(element_load: NDArray, contact_angle: NDArray,
     angle = np.nan_to_num(contact_angle, nan=0.0)
     found = []
     for conformity, inner in ((inner_conformity, True), (outer_conformity, False)):
-        pressure = _contact(load, column(ball_diameter), column(pitch_diameter),
-                            column(conformity), angle, column(elastic_modulus),
-                            column(poisson_ratio), inner)["max_pressure"]
-        found.append(np.max(np.where(load > 0, pressure, 0.0), axis=1))
+        values = _contact(load, column(ball_diameter), column(pitch_diameter),
+                          column(conformity), angle, column(elastic_modulus),
+                          column(poisson_ratio), inner)[quantity]
+        found.append(np.max(np.where(load > 0, values, 0.0), axis=1))
     return found[0], found[1]
 
 

@@ -14,7 +14,7 @@ from numpy.typing import NDArray
 
 from bearingcalc.core.bearing_life import life_margin
 from bearingcalc.core.bearing_types import traits
-from bearingcalc.core.common import Found
+from bearingcalc.core.common import DerivedTest, Found
 from bearingcalc.core.iso281 import life_modification_factor
 from bearingcalc.core.iso16281_balls import (
     ball_deflections,
@@ -75,13 +75,21 @@ WARNINGS = {
 }
 #: The makers' minimum load of a ball bearing, a share of C.
 MINIMUM_LOAD_SHARE = 0.01
-#: Status codes of the method: no equilibrium.
+#: Status codes of the method: no equilibrium; a contact beyond Hertz's theory.
 NO_EQUILIBRIUM = 25
+#: by the input that loads the bearing beyond Hertz: (code, in words)
+CONTACT_TOO_LARGE = {"radial_load": (26, "load"), "tilting_moment": (27, "tilting moment"),
+                     "misalignment": (28, "misalignment")}
 STATUS_REASONS = {
     NO_EQUILIBRIUM: ("axial_load", "the rings find no equilibrium under these loads: the "
-                     "balls cannot carry them (an angular-contact bearing needs an axial load "
-                     "that holds its balls on their contact, about Fr·tanα or more, and any "
-                     "bearing a tilting moment its balls can carry)"),
+                     "balls cannot carry them (a bearing at its free contact angle needs an "
+                     "axial load that holds its balls on their contact, about Fr·tanα or "
+                     "more, and any bearing a tilting moment its balls can carry)"),
+    **{code: (field, DerivedTest(
+        "the most heavily loaded ball's contact ellipse outgrows the ball (a semi-axis "
+        "above Dw/2): Hertz's theory does not hold, and the bearing would be crushed; "
+        f"the {what} is too large for it"))
+       for field, (code, what) in CONTACT_TOO_LARGE.items()},
 }
 
 
@@ -174,6 +182,15 @@ def load_zone_angle(deflection: NDArray, azimuth: NDArray) -> NDArray:
     return np.where(whole, 2 * np.pi, np.where(loaded_at_zero, 2 * crossing, 0.0))
 
 
+def _crushing_code(inputs: Mapping[str, Any]) -> int:
+    """The status code of a contact beyond Hertz's theory, by what tilts the ring if
+    anything does (an imposed misalignment, a moment), else the loads."""
+    for field in ("misalignment", "tilting_moment"):
+        if inputs.get(field) is not None:
+            return CONTACT_TOO_LARGE[field][0]
+    return CONTACT_TOO_LARGE["radial_load"][0]
+
+
 def _or_zero(value: Any) -> Any:
     """An optional number, 0 where the spec leaves it out."""
     return 0.0 if value is None else value
@@ -189,6 +206,8 @@ def _found(inputs: Mapping[str, Any], solved: Any, life: Any, contact: tuple, is
     angle_max = np.where(none_loaded, np.nan,
                          np.max(np.where(loaded, solved.contact_angle, -np.inf), axis=1))
     inner, outer = ball_contact_pressures(solved.element_load, solved.contact_angle, *contact)
+    ellipse = np.maximum(*ball_contact_pressures(solved.element_load, solved.contact_angle,
+                                                 *contact, quantity="semi_major"))
     revolutions_per_second = np.abs(speed) / (2.0 * np.pi)
     l10r = life.revolutions.reshape(shape)
     a1 = np.asarray(iso281["reliability_factor"], dtype=float)
@@ -218,7 +237,9 @@ def _found(inputs: Mapping[str, Any], solved: Any, life: Any, contact: tuple, is
     if inputs.get("misalignment") is not None:
         results["tilting_moment_reaction"] = solved.reaction[:, 4]
     found = Found({key: value.reshape(shape) for key, value in results.items()},
-                  checks=[(NO_EQUILIBRIUM, ~solved.converged.reshape(shape))])
+                  checks=[(NO_EQUILIBRIUM, ~solved.converged.reshape(shape)),
+                          (_crushing_code(inputs),
+                           ~(ellipse <= contact[0] / 2.0).reshape(shape))])
     found.results.update({
         "reference_rating_life": l10r / revolutions_per_second,
         "reference_rating_life_revolutions": l10r,

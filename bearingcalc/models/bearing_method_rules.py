@@ -125,4 +125,14 @@ class MethodRules(ReadsBearing):
         if self.tilting_moment is not None and self.misalignment is not None:
             return SpecFieldError("misalignment", "give a tilting_moment (the ring finds its "
                                   "tilt) or a misalignment (the tilt imposed), not both")
+        geometry = (self.ball_diameter, self.pitch_diameter, self.inner_groove_conformity,
+                    self.outer_groove_conformity)
+        if self.misalignment is None or None in geometry:
+            return None
+        dw, dpw, fi, fo = geometry
+        largest = (fi + fo - 1.0) * dw / (dpw / 2.0)
+        if not abs(self.misalignment) < largest:
+            return SpecFieldError("misalignment", f"must be smaller in size than "
+                                  f"(fi + fo − 1)·Dw/(Dpw/2) = {largest * 1e3:.4g} mrad: "
+                                  "beyond it the tilt moves a ball past its groove")
         return None
