@@ -57,12 +57,11 @@ def ball_contacts(ball_count: ArrayLike, ball_diameter: ArrayLike, pitch_diamete
     gamma = dw * cos_alpha / np.asarray(pitch_diameter, dtype=float)
     load = (np.asarray(static_equivalent_load, dtype=float) / z
             / (np.sin(alpha) if thrust else cos_alpha / 5.0))
-    ball = 2.0 / dw
     e, nu = elastic_modulus, poisson_ratio
-    inner = hertz_point_contact(load, ball, ball, 2.0 * gamma / (dw * (1.0 - gamma)),
-                                -1.0 / (np.asarray(inner_conformity) * dw), e, nu, e, nu)
-    outer = hertz_point_contact(load, ball, ball, -2.0 * gamma / (dw * (1.0 + gamma)),
-                                -1.0 / (np.asarray(outer_conformity) * dw), e, nu, e, nu)
+    inner = hertz_point_contact(load, *raceway_curvatures(dw, gamma, inner_conformity, True),
+                                e, nu, e, nu)
+    outer = hertz_point_contact(load, *raceway_curvatures(dw, gamma, outer_conformity, False),
+                                e, nu, e, nu)
     peak = np.maximum(inner["max_pressure"], outer["max_pressure"])
     return {
         "max_ball_load": load,
@@ -77,3 +76,16 @@ def ball_contacts(ball_count: ArrayLike, ball_diameter: ArrayLike, pitch_diamete
         "max_contact_pressure": peak,
         "contact_pressure_margin": 1.0 - peak / np.asarray(max_contact_pressure),
     }
+
+
+def raceway_curvatures(ball_diameter: ArrayLike, gamma: ArrayLike, conformity: ArrayLike,
+                       inner: bool) -> tuple[NDArray, NDArray, NDArray, NDArray]:
+    """A ball's principal curvatures (2/Dw in both planes) and its raceway's, in the
+    rolling direction ±2γ/(Dw(1 ∓ γ)) (inner, outer) and across the groove −1/(f·Dw),
+    γ = Dw·cosα/Dpw [1/m] (Harris & Kotzalas, ch. 2)."""
+    dw = np.asarray(ball_diameter, dtype=float)
+    gamma = np.asarray(gamma, dtype=float)
+    ball = 2.0 / dw
+    rolling = (2.0 * gamma / (dw * (1.0 - gamma)) if inner
+               else -2.0 * gamma / (dw * (1.0 + gamma)))
+    return ball, ball, rolling, -1.0 / (np.asarray(conformity) * dw)

@@ -10,6 +10,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from bearingcalc.core.ball_bearing_contacts import raceway_curvatures
 from bearingcalc.core.hertz import hertz_point_contact
 
 #: Lundberg–Palmgren's constants of a ball bearing's C from its raceway ratings: the
@@ -32,24 +33,13 @@ class ReferenceLife(NamedTuple):
     outer_equivalent: NDArray    # Q_ee [N]
 
 
-def _raceway_curvatures(ball_diameter: NDArray, pitch_diameter: NDArray,
-                        conformity: NDArray, contact_angle: NDArray, inner: bool
-                        ) -> tuple[NDArray, NDArray, NDArray, NDArray]:
-    """The ball's (2/Dw, 2/Dw) and the raceway's (rolling direction, across the groove)
-    curvatures [1/m]: ±2γ/(Dw(1 ∓ γ)) and −1/(f·Dw), γ = Dw·cosα/Dpw."""
-    gamma = ball_diameter * np.cos(contact_angle) / pitch_diameter
-    ball = 2.0 / ball_diameter
-    rolling = (2.0 * gamma / (ball_diameter * (1.0 - gamma)) if inner
-               else -2.0 * gamma / (ball_diameter * (1.0 + gamma)))
-    return ball, ball, rolling, -1.0 / (conformity * ball_diameter)
-
-
 def _contact(load: ArrayLike, ball_diameter: ArrayLike, pitch_diameter: ArrayLike,
              conformity: ArrayLike, contact_angle: ArrayLike, modulus: ArrayLike,
              poisson: ArrayLike, inner: bool) -> dict[str, NDArray]:
-    arrays = [np.asarray(v, dtype=float) for v in (ball_diameter, pitch_diameter, conformity,
-                                                   contact_angle)]
-    return hertz_point_contact(load, *_raceway_curvatures(*arrays, inner=inner),
+    dw = np.asarray(ball_diameter, dtype=float)
+    gamma = dw * np.cos(np.asarray(contact_angle, dtype=float)) / np.asarray(
+        pitch_diameter, dtype=float)
+    return hertz_point_contact(load, *raceway_curvatures(dw, gamma, conformity, inner),
                                modulus, poisson, modulus, poisson)
 
 
@@ -72,26 +62,38 @@ def ball_spring_constant(ball_diameter: ArrayLike, pitch_diameter: ArrayLike,
     return compliance ** -1.5
 
 
-def ball_contact_pressures(element_load: NDArray, contact_angle: NDArray,
-                           ball_diameter: ArrayLike, pitch_diameter: ArrayLike,
-                           inner_conformity: ArrayLike, outer_conformity: ArrayLike,
-                           elastic_modulus: ArrayLike, poisson_ratio: ArrayLike,
-                           quantity: str = "max_pressure") -> tuple[NDArray, NDArray]:
-    """The largest Hertz pressure at the inner and at the outer ring over the balls
-    [Pa], each ball's contact with the curvatures at its operating contact angle; or the
-    largest of another of :data:`bearingcalc.core.hertz.CONTACT_KEYS` (``semi_major``)."""
+def largest_ball_contacts(element_load: NDArray, contact_angle: NDArray,
+                          ball_diameter: ArrayLike, pitch_diameter: ArrayLike,
+                          inner_conformity: ArrayLike, outer_conformity: ArrayLike,
+                          elastic_modulus: ArrayLike, poisson_ratio: ArrayLike,
+                          quantities: tuple[str, ...] = ("max_pressure",)
+                          ) -> dict[str, tuple[NDArray, NDArray]]:
+    """Of each of ``quantities`` (of :data:`bearingcalc.core.hertz.CONTACT_KEYS`: the
+    peak pressure [Pa], the semi-major axis [m] …), its largest over the loaded balls at
+    the inner and at the outer ring, each ball's contact with the curvatures at its
+    operating contact angle; one Hertz solution per contact for all of them."""
     def column(value: ArrayLike) -> NDArray:
         return np.asarray(value, dtype=float).reshape(-1, 1)
 
     load = np.nan_to_num(element_load, nan=0.0)
     angle = np.nan_to_num(contact_angle, nan=0.0)
-    found = []
-    for conformity, inner in ((inner_conformity, True), (outer_conformity, False)):
-        values = _contact(load, column(ball_diameter), column(pitch_diameter),
-                          column(conformity), angle, column(elastic_modulus),
-                          column(poisson_ratio), inner)[quantity]
-        found.append(np.max(np.where(load > 0, values, 0.0), axis=1))
-    return found[0], found[1]
+    rings = [_contact(load, column(ball_diameter), column(pitch_diameter), column(conformity),
+                      angle, column(elastic_modulus), column(poisson_ratio), inner)
+             for conformity, inner in ((inner_conformity, True), (outer_conformity, False))]
+    return {key: tuple(np.max(np.where(load > 0, ring[key], 0.0), axis=1)  # type: ignore[misc]
+                       for ring in rings) for key in quantities}
+
+
+def ball_contact_pressures(element_load: NDArray, contact_angle: NDArray,
+                           ball_diameter: ArrayLike, pitch_diameter: ArrayLike,
+                           inner_conformity: ArrayLike, outer_conformity: ArrayLike,
+                           elastic_modulus: ArrayLike, poisson_ratio: ArrayLike
+                           ) -> tuple[NDArray, NDArray]:
+    """The largest Hertz pressure at the inner and at the outer ring over the balls [Pa]
+    (see :func:`largest_ball_contacts`)."""
+    return largest_ball_contacts(element_load, contact_angle, ball_diameter, pitch_diameter,
+                                 inner_conformity, outer_conformity, elastic_modulus,
+                                 poisson_ratio)["max_pressure"]
 
 
 def ball_reference_life(element_load: NDArray, ball_count: ArrayLike, ball_diameter: ArrayLike,

@@ -22,9 +22,9 @@ from bearingcalc.core.iso16281_balls import (
     solve_ball_equilibrium,
 )
 from bearingcalc.core.iso16281_life import (
-    ball_contact_pressures,
     ball_reference_life,
     ball_spring_constant,
+    largest_ball_contacts,
 )
 from bearingcalc.core.solver import Along, AxisResults
 
@@ -205,9 +205,10 @@ def _found(inputs: Mapping[str, Any], solved: Any, life: Any, contact: tuple, is
                          np.min(np.where(loaded, solved.contact_angle, np.inf), axis=1))
     angle_max = np.where(none_loaded, np.nan,
                          np.max(np.where(loaded, solved.contact_angle, -np.inf), axis=1))
-    inner, outer = ball_contact_pressures(solved.element_load, solved.contact_angle, *contact)
-    ellipse = np.maximum(*ball_contact_pressures(solved.element_load, solved.contact_angle,
-                                                 *contact, quantity="semi_major"))
+    hertz = largest_ball_contacts(solved.element_load, solved.contact_angle, *contact,
+                                  quantities=("max_pressure", "semi_major"))
+    inner, outer = hertz["max_pressure"]
+    ellipse = np.maximum(*hertz["semi_major"])
     revolutions_per_second = np.abs(speed) / (2.0 * np.pi)
     l10r = life.revolutions.reshape(shape)
     a1 = np.asarray(iso281["reliability_factor"], dtype=float)
