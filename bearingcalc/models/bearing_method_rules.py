@@ -50,6 +50,16 @@ class MountingFields(SpecModel):
 class MethodRules(ReadsBearing):
     """What each method takes."""
 
+    def _groove_distance(self) -> float | None:
+        """A = (fi + fo − 1)·Dw, the groove centres' distance at contact [m]; None where
+        the spec leaves a part of it out."""
+        parts = (self.inner_groove_conformity, self.outer_groove_conformity,
+                 self.ball_diameter)
+        if None in parts:
+            return None
+        fi, fo, dw = parts
+        return (fi + fo - 1.0) * dw
+
     @rule
     def _mounting_fields_need_the_method(self) -> SpecFieldError | None:
         if self.method == "iso-16281":
@@ -109,15 +119,13 @@ class MethodRules(ReadsBearing):
             return SpecFieldError("operating_clearance", "a single angular-contact bearing "
                                   "takes its free contact_angle, not a clearance: leave "
                                   "operating_clearance out")
-        if takes_clearance and self.ball_diameter is not None and None not in (
-                self.inner_groove_conformity, self.outer_groove_conformity):
-            distance = (self.inner_groove_conformity + self.outer_groove_conformity
-                        - 1.0) * self.ball_diameter
-            if not abs(self.operating_clearance) < distance:
-                return SpecFieldError("operating_clearance", f"must be smaller in size than "
-                                      f"the grooves' distance (fi + fo − 1)·Dw = "
-                                      f"{distance * 1e6:.4g} µm: beyond it the balls would "
-                                      "not sit in their grooves")
+        distance = self._groove_distance()
+        if takes_clearance and distance is not None and not abs(
+                self.operating_clearance) < distance:
+            return SpecFieldError("operating_clearance", f"must be smaller in size than "
+                                  f"the grooves' distance (fi + fo − 1)·Dw = "
+                                  f"{distance * 1e6:.4g} µm: beyond it the balls would "
+                                  "not sit in their grooves")
         return None
 
     @rule
@@ -125,12 +133,10 @@ class MethodRules(ReadsBearing):
         if self.tilting_moment is not None and self.misalignment is not None:
             return SpecFieldError("misalignment", "give a tilting_moment (the ring finds its "
                                   "tilt) or a misalignment (the tilt imposed), not both")
-        geometry = (self.ball_diameter, self.pitch_diameter, self.inner_groove_conformity,
-                    self.outer_groove_conformity)
-        if self.misalignment is None or None in geometry:
+        distance = self._groove_distance()
+        if self.misalignment is None or distance is None or self.pitch_diameter is None:
             return None
-        dw, dpw, fi, fo = geometry
-        largest = (fi + fo - 1.0) * dw / (dpw / 2.0)
+        largest = distance / (self.pitch_diameter / 2.0)
         if not abs(self.misalignment) < largest:
             return SpecFieldError("misalignment", f"must be smaller in size than "
                                   f"(fi + fo − 1)·Dw/(Dpw/2) = {largest * 1e3:.4g} mrad: "
