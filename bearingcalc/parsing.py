@@ -18,7 +18,7 @@ from pydantic import BaseModel, ValidationError
 from bearingcalc.catalogue.places import names_a_designation
 from bearingcalc.errors import SpecError, SpecFieldError
 from bearingcalc.kinds import KINDS, Kind, unknown_kind
-from bearingcalc.models.base import Spec, nested_model
+from bearingcalc.models.base import Spec, nested_model, spec_errors
 from bearingcalc.models.field_path import FieldPath, is_list_field
 from bearingcalc.models.rules import problems_despite
 from bearingcalc.models.yaml_loader import Document
@@ -46,7 +46,7 @@ def parse_document(document: Document, *, rules: bool = True) -> tuple[Kind, Spe
         spec = kind.model.model_validate(data, context=None if rules else {"rules": False})
     except ValidationError as exc:
         errors = [_one_problem(document, kind.model, problem)
-                  for problem in _typos_for_missing(kind.model, exc.errors(include_url=False))]
+                  for problem in _typos_for_missing(kind.model, spec_errors(exc))]
         # A hinted unknown key (bevel-gears' 'speed') already says what its rule would.
         said = {field for key, (_, fields) in getattr(kind.model, "UNKNOWN_KEY_HINTS",
                                                       {}).items() if key in data
@@ -132,9 +132,9 @@ def _rule_problems_despite(model: type[Spec], data: dict[str, Any],
     example, an empty list or group) so that the model can be built; rules that read
     them are not run. When no stand-in serves, no rule runs: the field errors come first.
     """
-    invalid = {str(error["loc"][0]) for error in exc.errors() if error["loc"]}
+    invalid = {str(error["loc"][0]) for error in spec_errors(exc) if error["loc"]}
     # A field that an unknown key is a typo of: the spec gives it, under another name.
-    invalid |= {meant for error in exc.errors() if error["type"] == "extra_forbidden"
+    invalid |= {meant for error in spec_errors(exc) if error["type"] == "extra_forbidden"
                 and len(error["loc"]) == 1
                 and (meant := closest(str(error["loc"][0]), model.model_fields))}
     stand_in = {key: value for key, value in data.items() if key not in invalid}
@@ -158,7 +158,7 @@ def _typo_problems(document: Document, model: type[Spec], data: dict[str, Any]
         model.model_validate(data, context={"rules": False})
     except ValidationError as exc:
         return [_one_problem(document, model, error)
-                for error in exc.errors(include_url=False)
+                for error in spec_errors(exc)
                 if error["type"] == "extra_forbidden" and error["loc"]
                 and (_near_field(model, tuple(str(part) for part in error["loc"]))
                      or _misplaced(model, tuple(str(part) for part in error["loc"])))]

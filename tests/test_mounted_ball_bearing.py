@@ -122,7 +122,7 @@ def test_an_imposed_misalignment_reports_the_moment_it_takes(cli, spec_file):
 
 @pytest.mark.parametrize(("text", "field"), [
     (DEEP_GROOVE.format(clearance="10 µm", axial="0 N", extra="").replace(
-        "type: deep-groove", "type: cylindrical-roller"), "type"),
+        "type: deep-groove", "type: spherical-roller"), "type"),
     (DEEP_GROOVE.format(clearance="10 µm", axial="0 N", extra="").replace(
         "method: iso-16281", "method: iso-281"), "operating_clearance"),
     (DEEP_GROOVE.format(clearance="10 µm", axial="0 N",
@@ -182,7 +182,7 @@ def test_a_light_load_with_much_clearance_warns(cli, spec_file):
     assert results["loaded_elements"] == 1
     assert results["load_zone_angle"] < math.pi / 2
     warned = " ".join(record["warnings"])
-    assert "one ball carries the whole load" in warned
+    assert "one rolling element carries the whole load" in warned
     assert "load zone is below 90°" in warned
     assert "minimum load" in warned
 

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core import mounted_ball_bearing
+from bearingcalc.core import mounted_ball_bearing, mounted_bearing
 from bearingcalc.core.arrangements import (
     DOUBLE_ROW_PAIRS,
     PAIRS,
@@ -120,7 +120,7 @@ GROUPS: dict[str, tuple[str, ...]] = {
                    "ball_spin_frequency", "cage_speed", "ball_speed_relative_to_cage",
                    "ball_attitude_angle", "inner_spin_to_roll", "outer_spin_to_roll",
                    "spin_to_roll_margin"),
-    mounted_ball_bearing.GROUP: tuple(mounted_ball_bearing.RESULTS),
+    mounted_bearing.GROUP: tuple(mounted_ball_bearing.RESULTS),
 }
 
 #: How tables show results whose SI unit alone does not say it (revolutions in millions).
@@ -241,7 +241,8 @@ def evaluate(inputs: RollingBearingInputs,
                              contacts["outer_contact_semi_major"])
         found.checks.append((15 if thrust else 14, ~(largest <= np.asarray(dw) / 2.0)))
 
-    mounted, along = mounted_ball_bearing.as_mounted(inputs, c, out, speed)
+    mounted, along = mounted_bearing.as_mounted(inputs, mounted_ball_bearing.mounted_results,
+                                                c, out, speed)
     return Solution(*found.add(mounted).packed(RESULTS), along=along)
 
 
@@ -351,5 +352,5 @@ def _given_or(given: ArrayLike | None, computed: NDArray | None) -> NDArray | No
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS, display=DISPLAY,
-                along={"element": mounted_ball_bearing.ELEMENT_RESULTS},
+                along={"element": mounted_bearing.ELEMENT_RESULTS},
                 inputs="RollingBearingInputs")

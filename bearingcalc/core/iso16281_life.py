@@ -12,6 +12,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from bearingcalc.core.ball_bearing_contacts import raceway_curvatures
 from bearingcalc.core.hertz import hertz_point_contact
+from bearingcalc.core.roller_bearing_contacts import line_contact
 
 #: Lundberg–Palmgren's constants of a ball bearing's C from its raceway ratings: the
 #: load-zone means of the rotating ring (cubic, J1) and the stationary one (10/3, J2)
@@ -160,8 +161,8 @@ ROLLER_RACEWAY_RATIO = 1.038
 def roller_reference_life(lamina_load: NDArray, roller_count: ArrayLike,
                           roller_diameter: ArrayLike, pitch_diameter: ArrayLike,
                           contact_angle: ArrayLike, dynamic_load_rating: ArrayLike, *,
-                          rows: ArrayLike = 1, inner_rotates: ArrayLike = True
-                          ) -> ReferenceLife:
+                          rows: ArrayLike = 1, inner_rotates: ArrayLike = True,
+                          laminae: ArrayLike | None = None) -> ReferenceLife:
     r"""ISO/TS 16281's reference rating life of a roller bearing from every lamina's
     load, ``lamina_load`` (N, Zmax, n_s), NaN past Z.
 
@@ -177,8 +178,9 @@ def roller_reference_life(lamina_load: NDArray, roller_count: ArrayLike,
     .. math:: L_{10r} = \left[\sum_k (q_{ei,k}/q_{ci})^{9/2} + (q_{ee,k}/q_{ce})^{9/2}
               \right]^{-8/9} \cdot 10^6
 
-    revolutions; P_ref with L10r = (C/P_ref)^(10/3)·10⁶. Source: ISO/TS 16281:2008, 8.3
-    (eqs. 47 to 65), its edge-stress factor off.
+    revolutions; P_ref with L10r = (C/P_ref)^(10/3)·10⁶. ``laminae``: each design's n_s
+    where some are padded with NaN (default: every one of ``lamina_load``'s). Source:
+    ISO/TS 16281:2008, 8.3 (eqs. 47 to 65), its edge-stress factor off.
     """
     count = np.asarray(roller_count, dtype=float)
     alpha = np.asarray(contact_angle, dtype=float)
@@ -188,8 +190,8 @@ def roller_reference_life(lamina_load: NDArray, roller_count: ArrayLike,
     ratio = ROLLER_RACEWAY_RATIO * ((1 - gamma) / (1 + gamma)) ** (143 / 108)
     base = c / (ROLLER_REDUCTION * count * np.asarray(rows, dtype=float) ** (7 / 9)
                 * np.cos(alpha))
-    laminae = lamina_load.shape[2]
-    share = laminae ** (-7 / 9)
+    share = (lamina_load.shape[2] if laminae is None
+             else np.asarray(laminae, dtype=float)) ** (-7 / 9)
     inner_rating = base / ROLLER_ROTATING_MEAN * (1 + ratio ** 4.5) ** (2 / 9) * share
     outer_rating = base / ROLLER_STATIONARY_MEAN * (1 + ratio ** -4.5) ** (2 / 9) * share
     loads = np.nan_to_num(lamina_load, nan=0.0)
@@ -203,3 +205,36 @@ def roller_reference_life(lamina_load: NDArray, roller_count: ArrayLike,
                           + (outer_load / outer_rating[:, None]) ** 4.5, axis=1) ** (-8 / 9)
     return ReferenceLife(millions * 1e6, c / millions ** 0.3, inner_rating, outer_rating,
                          inner_load.max(axis=1), outer_load.max(axis=1))
+
+
+def largest_roller_contacts(lamina_load: NDArray, roller_diameter: ArrayLike,
+                            effective_length: ArrayLike, pitch_diameter: ArrayLike,
+                            contact_angle: ArrayLike, elastic_modulus: ArrayLike,
+                            poisson_ratio: ArrayLike, laminae: ArrayLike | None = None
+                            ) -> dict[str, tuple[NDArray, NDArray]]:
+    r"""The largest Hertz line-contact pressure [Pa] and half-width [m] over every lamina
+    of every roller, at the inner and at the outer ring, each lamina a line contact of
+    length Lwe/n_s under its load q:
+
+    .. math:: p_0 = \sqrt{\frac{q E^*}{\pi (L_{we}/n_s) R'}}, \qquad R'_{i,e} =
+              \frac{D_{we}(1 \mp γ)}{2}, \qquad γ = \frac{D_{we}\cos α}{D_{pw}}
+
+    ``lamina_load`` (N, Zmax, n_s), NaN past Z (and past each design's ``laminae``,
+    default all); the end laminae are included, so a profile's edge loading shows.
+    Source: ISO/TS 16281:2008, 7.3; K. L. Johnson, *Contact Mechanics*, 1985, §4.2.
+    """
+    def column(value: ArrayLike) -> NDArray:
+        return np.asarray(value, dtype=float).reshape(-1, 1)
+
+    count = column(lamina_load.shape[2] if laminae is None else laminae)
+    largest = np.max(np.nan_to_num(lamina_load, nan=0.0), axis=(1, 2)).reshape(-1, 1)
+    dwe = column(roller_diameter)
+    gamma = dwe * np.cos(column(contact_angle)) / column(pitch_diameter)
+    found: dict[str, list[NDArray]] = {"max_pressure": [], "half_width": []}
+    for sign in (-1.0, 1.0):
+        pressure, half_width = line_contact(largest, column(effective_length) / count,
+                                            dwe * (1.0 + sign * gamma) / 2.0,
+                                            column(elastic_modulus), column(poisson_ratio))
+        found["max_pressure"].append(pressure[:, 0])
+        found["half_width"].append(half_width[:, 0])
+    return {key: (inner, outer) for key, (inner, outer) in found.items()}

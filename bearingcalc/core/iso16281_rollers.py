@@ -69,24 +69,53 @@ def logarithmic_profile(positions: NDArray, roller_diameter: ArrayLike,
     return np.where(lwe <= 2.5 * dwe, short, long)
 
 
+def crowned_profile(positions: NDArray, crown_radius: ArrayLike) -> NDArray:
+    r"""The drop p_k [m] of a roller crowned by one circular arc of radius R over its
+    length, at ℓ_k from its middle:
+
+    .. math:: p = R - \sqrt{R^2 - ℓ^2}
+
+    Source: Harris & Kotzalas, *Advanced Concepts of Bearing Technology*, 5th ed., 1.7
+    (crowned rollers).
+    """
+    radius = np.asarray(crown_radius, dtype=float)[..., None]
+    return radius - np.sqrt(radius * radius - positions * positions)
+
+
 def roller_geometry(roller_count: ArrayLike, roller_diameter: ArrayLike,
                     effective_length: ArrayLike, contact_angle: ArrayLike, *,
                     diametral_clearance: ArrayLike = 0.0, laminae: int = 30,
-                    profile: str = "iso", line_constant: ArrayLike | None = None
-                    ) -> RollerGeometry:
+                    profile: str = "iso", line_constant: ArrayLike | None = None,
+                    crown_radius: ArrayLike | None = None) -> RollerGeometry:
     """The laminae of each design: n_s slices of Lwe/n_s, their positions, gaps (the
-    clearance along the contact normal and the profile at both contacts) and constant."""
+    clearance along the contact normal and the profile at both contacts) and constant.
+    ``profile``: "iso" (ISO/TS 16281's logarithmic profile), "none" or "crown" (one arc
+    of ``crown_radius``)."""
     arrays = np.broadcast_arrays(*(np.atleast_1d(np.asarray(v, dtype=float)) for v in (
-        roller_count, roller_diameter, effective_length, contact_angle, diametral_clearance)))
-    count, dwe, lwe, alpha, clearance = arrays
+        roller_count, roller_diameter, effective_length, contact_angle, diametral_clearance,
+        np.inf if crown_radius is None else crown_radius)))
+    count, dwe, lwe, alpha, clearance, crown = arrays
     k = np.arange(laminae)
     positions = (k[None, :] - laminae / 2.0 + 0.5) * lwe[:, None] / laminae
-    drop = (np.zeros_like(positions) if profile == "none"
-            else logarithmic_profile(positions, dwe, lwe))
+    if profile == "none":
+        drop = np.zeros_like(positions)
+    elif profile == "crown":
+        drop = crowned_profile(positions, crown)
+    else:
+        drop = logarithmic_profile(positions, dwe, lwe)
     gap = (clearance * np.cos(alpha) / 2.0)[:, None] + 2.0 * drop
     constant = (LINE_CONSTANT * lwe ** (8 / 9) if line_constant is None
                 else np.broadcast_to(np.asarray(line_constant, dtype=float), lwe.shape))
     return RollerGeometry(count, alpha, gap, positions, constant / laminae)
+
+
+def lamina_deflections(geometry: RollerGeometry, displacement: NDArray, azimuth: NDArray
+                       ) -> NDArray:
+    """Every lamina's signed deflection δ_jk [m], (N, Zmax, n_s), at the displacement
+    (N, 5): its compression where positive, its play where negative. ``azimuth``
+    (N, Zmax) as the equilibrium gives it, NaN past Z."""
+    grad = _gradients(geometry, np.cos(azimuth), np.sin(azimuth))
+    return np.einsum("nzkd,nd->nzk", grad, displacement) - geometry.gap[:, None, :]
 
 
 def _gradients(geometry: RollerGeometry, cos: NDArray, sin: NDArray) -> NDArray:

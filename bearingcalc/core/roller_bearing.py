@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core import ball_bearing
+from bearingcalc.core import ball_bearing, mounted_bearing, mounted_roller_bearing
 from bearingcalc.core.arrangements import DOUBLE_ROW_PAIRS, PAIRS, pair_ratings_used
 from bearingcalc.core.bearing_life import operating_point, rating_life
 from bearingcalc.core.bearing_types import LoadRule, traits
@@ -70,6 +70,7 @@ RESULTS: dict[str, tuple[str, str]] = {
     "roller_spin_frequency": ("Hz", "the roller's turns about its axis relative to the "
                                     "cage"),
     "cage_speed": _BALL["cage_speed"],
+    **mounted_roller_bearing.RESULTS,
 }
 
 GROUPS: dict[str, tuple[str, ...]] = {
@@ -84,6 +85,7 @@ GROUPS: dict[str, tuple[str, ...]] = {
                 "max_contact_pressure", "contact_pressure_margin"),
     "kinematics": ("cage_frequency", "ball_pass_frequency_outer", "ball_pass_frequency_inner",
                    "roller_spin_frequency", "cage_speed"),
+    mounted_bearing.GROUP: tuple(mounted_roller_bearing.RESULTS),
 }
 
 WARNINGS: dict[str, str] = {
@@ -93,6 +95,7 @@ WARNINGS: dict[str, str] = {
                                  "contact reaches the roller's ends, where Hertz's point "
                                  "contact understates the pressure; check raceway_radius "
                                  "against roller_profile_radius",
+    **mounted_roller_bearing.WARNINGS,
 }
 
 _CONTACT_TOO_WIDE = ("the most heavily loaded roller's contact is not narrow against the "
@@ -122,6 +125,7 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
         "length (its semi-major axis exceeds Lwe), so the crowned point contact of Hertz "
         "does not hold: raceway_radius is too close to roller_profile_radius (a spherical roller "
         "bearing's raceway radius is a few per cent larger), or the load too high")),
+    **mounted_roller_bearing.STATUS_REASONS,
 }
 
 
@@ -180,7 +184,9 @@ def evaluate(inputs: RollingBearingInputs,
         found.add(_contacts(inputs, bearing_type, thrust, arrangement, rows, alpha, fa, p0))
         out.update(roller_kinematics(z, dwe, dpw, alpha, inputs["inner_speed"],
                                      inputs["outer_speed"], thrust))
-    return Solution(*found.packed(RESULTS))
+    mounted, along = mounted_bearing.as_mounted(
+        inputs, mounted_roller_bearing.mounted_results, c, out, speed)
+    return Solution(*found.add(mounted).packed(RESULTS), along=along)
 
 
 def _equivalent_dynamic_load(inputs: Mapping[str, ArrayLike | str | None], bearing_type: str,
@@ -235,4 +241,5 @@ def _given(value: ArrayLike | None) -> NDArray | None:
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
-                display=ball_bearing.DISPLAY, inputs="RollingBearingInputs")
+                display=ball_bearing.DISPLAY, along={"element": mounted_bearing.ELEMENT_RESULTS},
+                inputs="RollingBearingInputs")

@@ -132,6 +132,10 @@ class _MountingInputs(TypedDict, total=False):
     operating_clearance: MaybeNumbers    # the mounted diametral clearance [m]
     tilting_moment: MaybeNumbers         # on the inner ring, about z [N·m]
     misalignment: MaybeNumbers           # the inner ring's tilt, imposed [rad]
+    roller_profile: str                  # "iso", "none" or "crown" (rollers)
+    crown_radius: MaybeNumbers           # a "crown" profile's radius [m]
+    laminae: MaybeNumbers                # slices of each roller [1]
+    roller_included_angle: MaybeNumbers  # a tapered roller's included angle [rad]
 
 
 class RollingBearingInputs(_BearingOwnInputs, _OperatingInputs, _RollerInputs, _MountingInputs,

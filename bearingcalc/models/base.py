@@ -8,7 +8,15 @@ import typing
 from collections.abc import Collection, Mapping, Sequence
 from typing import Any, ClassVar
 
-from pydantic import BaseModel, ConfigDict, PrivateAttr, ValidationInfo, model_validator
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    PrivateAttr,
+    Tag,
+    ValidationError,
+    ValidationInfo,
+    model_validator,
+)
 from pydantic.fields import FieldInfo
 
 from bearingcalc.models.plain_numbers import _Count, _Percentage, _plain_number, _RangedNumber
@@ -97,6 +105,25 @@ class Spec(SpecModel):
         """What the reader of a sweep or study that varies the dotted fields ``varied``
         should know (inputs typed for one design that the others keep)."""
         return []
+
+
+#: What marks a tagged union's branch (``roller_profile``'s named or crowned form) in
+#: pydantic's error locations: a branch is not a key of the spec, so errors leave it out.
+BRANCH_MARK = "~"
+
+
+def branch(name: str) -> Tag:
+    """The tag of a union's branch ``name``, which error locations leave out."""
+    return Tag(BRANCH_MARK + name)
+
+
+def spec_errors(exc: ValidationError) -> list[Any]:
+    """pydantic's errors of a spec, each located by the spec's keys alone (no branch of
+    a tagged union)."""
+    return [{**error, "loc": tuple(part for part in error["loc"]
+                                   if not (isinstance(part, str)
+                                           and part.startswith(BRANCH_MARK)))}
+            for error in exc.errors(include_url=False)]
 
 
 def nested_model(info: FieldInfo) -> type[BaseModel] | None:

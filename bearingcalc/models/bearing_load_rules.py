@@ -41,11 +41,10 @@ class LoadRules(ReadsBearing):
                               "radial load (P = Fr), and it is zero: give the radial load, "
                               "like 5 kN; a thrust bearing carries an axial load alone")
 
-    @rule
-    def _ribless_ring_takes_no_thrust(self) -> SpecFieldError | None:
-        """An NU bearing has no ribs on its inner ring, an N bearing none on its outer:
-        neither carries an axial load (NJ, NUP and NF do)."""
-        if not self.designation or not self.axial_load > 0:
+    def ribless_ring(self) -> tuple[str, str] | None:
+        """(form, ring) of a designation whose ring has no ribs (NU: inner, N: outer),
+        else None."""
+        if not self.designation:
             return None
         from bearingcalc.catalogue.designation import parse_designation  # only with one
 
@@ -54,8 +53,18 @@ class LoadRules(ReadsBearing):
             return None
         form = parsed.basic.rstrip("0123456789")
         ring = dict(self.type_traits.ribless_forms).get(form)
-        if ring is None:
+        return None if ring is None else (form, ring)
+
+    @rule
+    def _ribless_ring_takes_no_thrust(self) -> SpecFieldError | None:
+        """An NU bearing has no ribs on its inner ring, an N bearing none on its outer:
+        neither carries an axial load (NJ, NUP and NF do)."""
+        if not self.axial_load > 0:
             return None
+        ribless = self.ribless_ring()
+        if ribless is None:
+            return None
+        form, ring = ribless
         return SpecFieldError("axial_load", f"{self.designation} is an {form} bearing, with "
                               f"no ribs on its {ring} ring: it carries no axial load; choose "
                               "an NJ or NUP bearing, or let another bearing take the thrust",
@@ -92,7 +101,9 @@ class LoadRules(ReadsBearing):
                          "permissible axial load")
         if self.rollers and None not in (
                 self.roller_count, self.roller_diameter, self.roller_length) and (
-                self.roller_profile_radius is None):
+                self.roller_profile_radius is None) and self.method != "iso-16281":
+            # as mounted, every lamina's pressure follows the profile, and the limit
+            # judges those
             notes.append("the contact pressures are those of a straight line contact: they "
                          "ignore the rollers' crowning and their edge stresses")
         return notes

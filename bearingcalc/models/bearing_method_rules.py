@@ -5,24 +5,57 @@ consistent), mixed into :class:`bearingcalc.models.rolling_bearing.RollingBearin
 
 from __future__ import annotations
 
-from typing import Literal
+import math
+from typing import Annotated, Literal
 
-from pydantic import Field
+from pydantic import Discriminator, Field
 
 from bearingcalc.core.bearing_types import names_where
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.models.base import SpecModel
+from bearingcalc.models.base import BRANCH_MARK, SpecModel, branch
 from bearingcalc.models.bearing_reads import ReadsBearing
-from bearingcalc.models.quantities import Angle, Length, Moment
+from bearingcalc.models.plain_numbers import LaminaCount
+from bearingcalc.models.quantities import Angle, Length, Moment, PositiveLength
 from bearingcalc.models.rules import rule, whole_spec_rule
 
 #: The types ISO/TS 16281's method solves here (their trait ``mounted``).
 MOUNTED_TYPES = names_where(mounted=True)
 #: The method's own solver inputs (a drive's bearings take none of them).
-MOUNTING_INPUTS = ("method", "operating_clearance", "tilting_moment", "misalignment")
-#: The internal geometry the method needs of a ball bearing.
-MOUNTED_GEOMETRY = ("ball_count", "ball_diameter", "pitch_diameter",
-                    "inner_groove_conformity", "outer_groove_conformity")
+MOUNTING_INPUTS = ("method", "operating_clearance", "tilting_moment", "misalignment",
+                   "roller_profile", "crown_radius", "laminae", "roller_included_angle")
+#: The internal geometry the method needs, by the family of the rolling elements.
+MOUNTED_GEOMETRY = {
+    "ball": ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_conformity",
+             "outer_groove_conformity"),
+    "roller": ("roller_count", "roller_diameter", "roller_length", "pitch_diameter"),
+}
+#: The fields that size the rolling elements, by family.
+ELEMENT_FIELDS = {"ball": ("ball_count", "ball_diameter"),
+                  "roller": ("roller_count", "roller_diameter", "roller_length")}
+#: The method's fields of roller bearings alone.
+ROLLER_MOUNTING_FIELDS = ("roller_profile", "laminae", "roller_included_angle")
+#: ISO/TS 16281's count of laminae where the spec gives none.
+DEFAULT_LAMINAE = 30
+
+
+class CrownProfile(SpecModel):
+    """A roller crowned by one circular arc over its length."""
+
+    crown_radius: PositiveLength = Field(description="the arc's radius in the roller's "
+                                         "axial section")
+
+
+def _profile_form(value: object) -> str:
+    """Which form of roller_profile a value is: a mapping is a crown, anything else
+    names a profile (so a wrong value gets one line, of the form it was meant as)."""
+    return BRANCH_MARK + ("crown" if isinstance(value, (dict, CrownProfile)) else "named")
+
+
+#: A roller's profile: a named one, or a crown of its radius.
+RollerProfile = Annotated[
+    Annotated[Literal["iso", "none"], branch("named")]
+    | Annotated[CrownProfile, branch("crown")],
+    Discriminator(_profile_form)]
 
 
 class MountingFields(SpecModel):
@@ -40,11 +73,30 @@ class MountingFields(SpecModel):
         "radial load (the ring finds its own tilt)")
     misalignment: Angle | None = Field(
         None, description="iso-16281: the inner ring's tilt relative to the outer, imposed")
+    roller_profile: RollerProfile | None = Field(
+        None, description="iso-16281, rollers: the rollers' profile: iso (ISO/TS 16281's "
+        "logarithmic profile, the default), none (straight) or {crown_radius: …}")
+    laminae: LaminaCount | None = Field(
+        None, description=f"iso-16281, rollers: the slices of each roller (default "
+        f"{DEFAULT_LAMINAE})")
+    roller_included_angle: Angle | None = Field(
+        None, description="iso-16281, tapered rollers: the roller's included angle θ, for "
+        "the rib's load 2·Q·sin(θ/2)")
 
     def mounting_inputs(self) -> dict[str, object]:
-        """The method's solver inputs (SI)."""
-        return {"method": self.method, "operating_clearance": self.operating_clearance,
-                "tilting_moment": self.tilting_moment, "misalignment": self.misalignment}
+        """The method's solver inputs (SI); a roller bearing's own only where it has
+        rollers."""
+        inputs: dict[str, object] = {
+            "method": self.method, "operating_clearance": self.operating_clearance,
+            "tilting_moment": self.tilting_moment, "misalignment": self.misalignment}
+        if self.method != "iso-16281" or self.type_traits.family != "roller":
+            return inputs
+        profile = self.roller_profile
+        crowned = isinstance(profile, CrownProfile)
+        return {**inputs, "roller_profile": "crown" if crowned else (profile or "iso"),
+                "crown_radius": profile.crown_radius if crowned else None,
+                "laminae": DEFAULT_LAMINAE if self.laminae is None else self.laminae,
+                "roller_included_angle": self.roller_included_angle}
 
 
 class MethodRules(ReadsBearing):
@@ -64,10 +116,55 @@ class MethodRules(ReadsBearing):
     def _mounting_fields_need_the_method(self) -> SpecFieldError | None:
         if self.method == "iso-16281":
             return None
-        for name in ("operating_clearance", "tilting_moment", "misalignment"):
+        for name in ("operating_clearance", "tilting_moment", "misalignment",
+                     *ROLLER_MOUNTING_FIELDS):
             if getattr(self, name) is not None:
                 return SpecFieldError(name, "is for the bearing as mounted: give method: "
                                       f"iso-16281, or leave {name} out")
+        return None
+
+    @rule
+    def _roller_mounting_fields(self) -> SpecFieldError | None:
+        if self.method != "iso-16281":
+            return None
+        for name in ROLLER_MOUNTING_FIELDS:
+            if getattr(self, name) is not None and not self.rollers:
+                return SpecFieldError(name, f"is for roller bearings: a {self.type} bearing "
+                                      f"has balls; leave {name} out")
+        if self.roller_included_angle is not None and not self.type_traits.one_way:
+            return SpecFieldError("roller_included_angle", "is a tapered roller's: the rib "
+                                  f"of a {self.type} bearing carries no load from it; leave "
+                                  "roller_included_angle out")
+        profile = self.roller_profile
+        if (isinstance(profile, CrownProfile) and self.roller_length is not None
+                and not profile.crown_radius > self.roller_length / 2.0):
+            return SpecFieldError("roller_profile.crown_radius", f"must be larger than half "
+                                  f"the roller's length, Lwe/2 = {self.roller_length * 5e2:g} "
+                                  "mm: a smaller arc does not span the roller (a crown's "
+                                  "radius is of the order of a metre)")
+        if self.roller_included_angle is not None and not (
+                0.0 < self.roller_included_angle < math.pi / 2):
+            return SpecFieldError("roller_included_angle", "must be above 0 deg and below 90 "
+                                  "deg (a tapered roller's included angle is a few degrees)")
+        return None
+
+    @rule
+    def _mounted_single_row(self) -> SpecFieldError | None:
+        if self.method == "iso-16281" and self.rollers and self.rows != 1:
+            return SpecFieldError("rows", "method: iso-16281 solves single-row roller "
+                                  "bearings here: give rows: 1, or method: iso-281 for the "
+                                  "double row", at="method")
+        return None
+
+    @rule
+    def _mounted_axial_load(self) -> SpecFieldError | None:
+        # a ribless ring's own rule says why an NU or N bearing takes no axial load
+        if (self.method == "iso-16281" and self.type_traits.mounted and self.rollers
+                and not self.type_traits.one_way and self.axial_load != 0.0
+                and self.ribless_ring() is None):
+            return SpecFieldError("axial_load", f"a {self.type} bearing's rollers carry no "
+                                  "axial load as mounted (its ribs do, which ISO/TS 16281 "
+                                  "leaves out): give axial_load: 0 N, or method: iso-281")
         return None
 
     @rule
@@ -96,12 +193,21 @@ class MethodRules(ReadsBearing):
     def _mounted_geometry(self) -> SpecFieldError | None:
         if self.method != "iso-16281" or not self.type_traits.mounted:
             return None
-        missing = [name for name in MOUNTED_GEOMETRY if getattr(self, name) is None]
+        family = self.type_traits.family
+        if any(getattr(self, name) is not None for other, names in MOUNTED_GEOMETRY.items()
+               if other != family for name in names if name != "pitch_diameter"):
+            return None  # the other family's elements given: their own rules say so
+        needed = MOUNTED_GEOMETRY[family]
+        missing = [name for name in needed if getattr(self, name) is None
+                   and not (name == "pitch_diameter" and self.mean_diameter is not None)]
+        if any(getattr(self, name) is not None for name in ELEMENT_FIELDS[family]):
+            # a set of elements begun: the geometry's own rules name what it lacks
+            missing = [name for name in missing if name.endswith("groove_conformity")]
         if len(missing) == 1 and missing[0].endswith("groove_conformity"):
             return None  # one conformity of two: the contacts' own rule names it
         if missing:
             return SpecFieldError(missing[0], "missing: method: iso-16281 needs the internal "
-                                  f"geometry ({', '.join(MOUNTED_GEOMETRY)})", at="method")
+                                  f"geometry ({', '.join(needed)})", at="method")
         return None
 
     @rule
@@ -111,12 +217,12 @@ class MethodRules(ReadsBearing):
         # one whose single row carries thrust one way sits at its free contact angle
         takes_clearance = not self.type_traits.one_way
         if takes_clearance and self.operating_clearance is None:
-            return SpecFieldError("operating_clearance", "missing: a deep-groove bearing "
+            return SpecFieldError("operating_clearance", f"missing: a {self.type} bearing "
                                   "under method: iso-16281 needs its operating clearance, like "
                                   "operating_clearance: 10 µm (negative: preload)",
                                   at="method")
         if not takes_clearance and self.operating_clearance is not None:
-            return SpecFieldError("operating_clearance", "a single angular-contact bearing "
+            return SpecFieldError("operating_clearance", f"a single {self.type} bearing "
                                   "takes its free contact_angle, not a clearance: leave "
                                   "operating_clearance out")
         distance = self._groove_distance()

@@ -23,9 +23,10 @@ class _Count:
     ``12.0`` counts as 12, as JSON Schema's ``integer`` type has it.
     """
 
-    def __init__(self, minimum: int, what: str) -> None:
+    def __init__(self, minimum: int, what: str, maximum: int = MAX_COUNT) -> None:
         self.minimum = minimum
         self.what = what
+        self.maximum = maximum
 
     def __call__(self, value: Any) -> int:
         if isinstance(value, float) and value.is_integer():
@@ -34,16 +35,17 @@ class _Count:
             raise ValueError(f"must be a whole number of {self.what}, got {value!r}")
         if value < self.minimum:
             raise ValueError(f"must be at least {self.minimum}, got {value}")
-        if value > MAX_COUNT:
+        if value > self.maximum:
             shown = value if value < 10**12 else f"a number of {len(str(value))} digits"
-            raise ValueError(f"must be at most {MAX_COUNT}, got {shown}")
+            raise ValueError(f"must be at most {self.maximum}, got {shown}")
         return value
 
 
-def _count(minimum: int, what: str) -> Any:
-    schema = {"type": "integer", "minimum": minimum, "maximum": MAX_COUNT,
+def _count(minimum: int, what: str, maximum: int = MAX_COUNT) -> Any:
+    schema = {"type": "integer", "minimum": minimum, "maximum": maximum,
               "description": f"number of {what}"}
-    return Annotated[int, BeforeValidator(_Count(minimum, what)), WithJsonSchema(schema)]
+    return Annotated[int, BeforeValidator(_Count(minimum, what, maximum)),
+                     WithJsonSchema(schema)]
 
 
 def _plain_number(value: Any) -> float:
@@ -58,6 +60,9 @@ def _plain_number(value: Any) -> float:
 
 BallCount = _count(1, "balls")
 RollerCount = _count(1, "rollers")
+#: ISO/TS 16281's slices of a roller: fewer than 10 cannot follow a profile, more than
+#: 200 refine nothing a designer reads.
+LaminaCount = _count(10, "laminae", 200)
 ToothCount = _count(5, "teeth")
 Ratio = Annotated[float, BeforeValidator(_plain_number),
                   WithJsonSchema({"type": "number", "minimum": 0})]

@@ -1,0 +1,253 @@
+"""What a rolling bearing as mounted (``method: iso-16281``) reports whatever its rolling
+elements: the results, warnings and status reasons both families share, the load zone
+and the life from the reference rating life (ISO/TS 16281:2008). The ball bearing's own
+part is :mod:`bearingcalc.core.mounted_ball_bearing`, the roller bearing's
+:mod:`bearingcalc.core.mounted_roller_bearing`; ``docs/physics.md`` §12.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from bearingcalc.core.bearing_life import life_margin
+from bearingcalc.core.common import Family, Found
+from bearingcalc.core.iso281 import life_modification_factor
+from bearingcalc.core.solver import Along, AxisResults
+
+#: A family's results as mounted from (inputs, C, ISO 281's results, speed).
+MountedResults = Callable[[Mapping[str, Any], NDArray, Mapping[str, Any], NDArray],
+                          tuple[Found, Along]]
+
+#: The method's name in a spec's ``method``.
+METHOD = "iso-16281"
+
+#: The results of one value per design of every bearing as mounted, in report order.
+RESULTS: dict[str, tuple[str, str]] = {
+    "ring_displacement_radial": ("m", "the inner ring's displacement along the radial load"),
+    "ring_displacement_axial": ("m", "along the axis, from the centred ring (deep-groove, "
+                                "cylindrical) or first contact (angular-contact, tapered)"),
+    "ring_tilt": ("rad", "the inner ring's tilt in the plane of the radial load"),
+    "tilting_moment_reaction": ("N·m", "the moment the bearing carries at an imposed "
+                                "misalignment"),
+    "max_element_load": ("N", "the largest rolling-element load Q"),
+    "loaded_elements": ("1", "the rolling elements that carry load"),
+    "load_zone_angle": ("rad", "2ψ_l, ψ_l the azimuth where an element's deflection falls "
+                        "to 0 (between elements, interpolated); 2π where every element is "
+                        "loaded"),
+    "max_contact_pressure_inner": ("Pa", "the largest Hertz pressure at the inner ring"),
+    "max_contact_pressure_outer": ("Pa", "the largest Hertz pressure at the outer ring"),
+    "reference_rating_life": ("s", "L10r, ISO/TS 16281's reference rating life"),
+    "reference_rating_life_revolutions": ("1", "L10r in revolutions"),
+    "dynamic_equivalent_reference_load": ("N", "P_ref with L10r = (C/P_ref)^p 10⁶ "
+                                          "revolutions (p = 3 balls, 10/3 rollers)"),
+    "modified_reference_rating_life": ("s", "a1·aISO·L10r, aISO with P_ref"),
+    "life_ratio_to_iso281": ("1", "L10r over ISO 281's L10 of the same bearing and loads"),
+    "stiffness_radial": ("N/m", "∂Fy/∂δy of the tangent stiffness at the equilibrium"),
+    "stiffness_axial": ("N/m", "∂Fx/∂δx"),
+    "stiffness_tilt": ("N·m/rad", "∂Mz/∂θz"),
+    "equilibrium_residual": ("1", "the largest unbalanced force over the largest load"),
+}
+#: Each rolling element's results, a row per element.
+ELEMENT_RESULTS = AxisResults({
+    "azimuth": ("rad", "its azimuth ψ (0 under the radial load)"),
+    "load": ("N", "its load Q"),
+    "contact_angle": ("rad", "its operating contact angle"),
+}, after="equilibrium_residual", meaning="element {position}: {meaning}")
+#: The table's heading of the method's results.
+GROUP = "as mounted (ISO/TS 16281)"
+#: Warnings of every bearing as mounted: flag -> message.
+WARNINGS = {
+    "single_element_loaded": "one rolling element carries the whole load (ISO/TS 16281): "
+                             "check the clearance and the loads",
+    "narrow_load_zone": "the load zone is below 90°: a few rolling elements carry the load; "
+                        "a smaller operating clearance spreads it",
+}
+#: The status code of a bearing whose rings find no equilibrium.
+NO_EQUILIBRIUM = 25
+STATUS_REASONS = {
+    NO_EQUILIBRIUM: ("axial_load", "the rings find no equilibrium under these loads: the "
+                     "rolling elements cannot carry them (a bearing at its free contact angle "
+                     "needs an axial load that holds its elements on their contact, about "
+                     "Fr·tanα or more, and any bearing a tilting moment its elements can "
+                     "carry)"),
+}
+
+
+def results_with(own: Mapping[str, tuple[str, str]], after: str
+                 ) -> dict[str, tuple[str, str]]:
+    """The shared :data:`RESULTS` with a family's ``own`` results inserted after the key
+    ``after``."""
+    merged: dict[str, tuple[str, str]] = {}
+    for key, value in RESULTS.items():
+        merged[key] = value
+        if key == after:
+            merged.update(own)
+    return merged
+
+
+def crushing_code(inputs: Mapping[str, Any], codes: Mapping[str, tuple[int, str]]) -> int:
+    """The status code of a contact beyond Hertz's theory, of ``codes`` by the input that
+    causes it: what tilts the ring if anything does (an imposed misalignment, a moment),
+    else the loads."""
+    for field in ("misalignment", "tilting_moment"):
+        if inputs.get(field) is not None:
+            return codes[field][0]
+    return codes["radial_load"][0]
+
+
+def or_zero(value: Any) -> Any:
+    """An optional number, 0 where the spec leaves it out."""
+    return 0.0 if value is None else value
+
+
+def designs(inputs: Mapping[str, Any], numbers: tuple[str, ...], *others: ArrayLike
+            ) -> tuple[tuple[int, ...], Callable[[Any], NDArray]]:
+    """The designs' shape (the broadcast of the given ``numbers`` of ``inputs`` and of
+    ``others``) and a function that lays a value out flat over them."""
+    used = [inputs[key] for key in numbers if inputs.get(key) is not None]
+    shape = np.broadcast_shapes(*(np.shape(np.asarray(v, dtype=float)) for v in used),
+                                *(np.shape(v) for v in others))
+
+    def flat(value: Any) -> NDArray:
+        return np.broadcast_to(np.asarray(value, dtype=float), shape).reshape(-1)
+
+    return shape, flat
+
+
+def as_mounted(inputs: Mapping[str, Any], mounted_results: MountedResults, c: NDArray,
+               iso281: Mapping[str, Any], speed: NDArray) -> tuple[Found, dict[str, Along]]:
+    """A family's ``mounted_results`` and its elements' (along ``element``) where the
+    spec asks for the method (``method: iso-16281``); nothing otherwise."""
+    if inputs.get("method") != METHOD:
+        return Found(), {}
+    found, elements = mounted_results(inputs, c, iso281, speed)
+    return found, {"element": elements}
+
+
+def element_rows(values: Mapping[str, NDArray], shape: tuple[int, ...]) -> Along:
+    """Each element's ``values`` (N, Zmax) as rows ``element_1`` … along ``element``, each
+    row in the designs' ``shape``."""
+    width = next(iter(values.values())).shape[1]
+    rows = tuple(f"element_{k}" for k in range(1, width + 1))
+    return Along(rows, {key: value.T.reshape((len(rows), *shape))
+                        for key, value in values.items()})
+
+
+def applied_loads(inputs: Mapping[str, Any], flat: Any, size: int) -> NDArray:
+    """(Fx, Fy, Fz, My, Mz) on the inner ring, (N, 5) [N, N·m]: the axial and radial
+    loads and the tilting moment in the radial load's plane."""
+    loads = np.zeros((size, 5))
+    loads[:, 0], loads[:, 1] = flat(inputs["axial_load"]), flat(inputs["radial_load"])
+    loads[:, 4] = flat(or_zero(inputs.get("tilting_moment")))
+    return loads
+
+
+def load_zone_angle(deflection: NDArray, azimuth: NDArray) -> NDArray:
+    """2ψ_l [rad]: ψ_l where the deflection, walking from the element at ψ = 0 (under the
+    radial load) toward ψ = π, falls to zero, linearly between the two elements around it;
+    2π where every element is loaded or the zone reaches past ψ = π, 0 where the element
+    at ψ = 0 is not loaded."""
+    valid = ~np.isnan(azimuth)
+    half = valid & (azimuth <= np.pi)
+    unloaded = half & ~(deflection > 0)
+    first = np.argmax(unloaded, axis=1)[:, None]
+    before = np.maximum(first - 1, 0)
+
+    def at(values: NDArray, index: NDArray) -> NDArray:
+        return np.take_along_axis(values, index, axis=1)[:, 0]
+
+    d_after, d_before = at(deflection, first), at(deflection, before)
+    psi_after, psi_before = at(azimuth, first), at(azimuth, before)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        crossing = psi_before + (psi_after - psi_before) * d_before / (d_before - d_after)
+    loaded_at_zero = deflection[:, 0] > 0
+    whole = np.all(~valid | (deflection > 0), axis=1) | (loaded_at_zero & ~unloaded.any(axis=1))
+    return np.where(whole, 2 * np.pi, np.where(loaded_at_zero, 2 * crossing, 0.0))
+
+
+def equilibrium_results(solved: Any, deflection: NDArray) -> dict[str, NDArray]:
+    """The results of one value per design that every family's equilibrium gives: the
+    ring's displacements, the loads, the load zone (from each element's ``deflection``)
+    and the diagonal of the tangent stiffness."""
+    loaded = np.nan_to_num(solved.element_load) > 0
+    return {
+        "ring_displacement_radial": solved.displacement[:, 1],
+        "ring_displacement_axial": solved.displacement[:, 0],
+        "ring_tilt": solved.displacement[:, 4],
+        "max_element_load": np.max(np.nan_to_num(solved.element_load), axis=1),
+        "loaded_elements": loaded.sum(axis=1).astype(float),
+        "load_zone_angle": load_zone_angle(deflection, solved.azimuth),
+        "stiffness_radial": solved.stiffness[:, 1, 1],
+        "stiffness_axial": solved.stiffness[:, 0, 0],
+        "stiffness_tilt": solved.stiffness[:, 4, 4],
+        "equilibrium_residual": solved.residual,
+    }
+
+
+def life_results(inputs: Mapping[str, Any], reference_life: Any, iso281: Mapping[str, Any],
+                 speed: NDArray, shape: tuple[int, ...], family: Family) -> dict[str, NDArray]:
+    r"""The lives from the reference rating life L10r [revolutions] and its load P_ref:
+
+    .. math:: L_{10r,m} = a_1\,a_{ISO}(κ, e_C C_u/P_{ref})\,L_{10r}
+
+    in time at the rings' relative ``speed`` [rad/s], the ratio to ISO 281's L10 and the
+    life margin. Source: ISO/TS 16281:2008, 9 (the modified reference rating life).
+    """
+    revolutions_per_second = np.abs(speed) / (2.0 * np.pi)
+    l10r = reference_life.revolutions.reshape(shape)
+    a1 = np.asarray(iso281["reliability_factor"], dtype=float)
+    a_iso = 1.0
+    if "viscosity_ratio" in iso281:
+        a_iso = life_modification_factor(iso281["viscosity_ratio"],
+                                         inputs["contamination_factor"],
+                                         iso281["fatigue_load_limit"],
+                                         reference_life.equivalent_load.reshape(shape),
+                                         family=family)
+    modified = a1 * a_iso * l10r / revolutions_per_second
+    results = {
+        "dynamic_equivalent_reference_load": reference_life.equivalent_load.reshape(shape),
+        "reference_rating_life": l10r / revolutions_per_second,
+        "reference_rating_life_revolutions": l10r,
+        "modified_reference_rating_life": modified,
+        "life_ratio_to_iso281": l10r / np.asarray(iso281["basic_rating_life_revolutions"]),
+    }
+    if inputs.get("min_rating_life") is not None:
+        results["life_margin"] = life_margin(modified, inputs["min_rating_life"])
+    return results
+
+
+def pressure_results(inputs: Mapping[str, Any], inner: NDArray, outer: NDArray,
+                     shape: tuple[int, ...]) -> dict[str, NDArray]:
+    """The largest operating pressures at each ring and the limit's margin on the larger:
+    the limit judges the operating contacts, not ISO 76's at P0."""
+    largest = np.maximum(inner, outer).reshape(shape)
+    results = {"max_contact_pressure_inner": inner.reshape(shape),
+               "max_contact_pressure_outer": outer.reshape(shape),
+               "max_contact_pressure": largest}
+    if inputs.get("max_contact_pressure") is not None:
+        results["contact_pressure_margin"] = 1.0 - largest / np.asarray(
+            inputs["max_contact_pressure"], dtype=float)
+    return results
+
+
+def warning_flags(results: Mapping[str, NDArray]) -> dict[str, NDArray]:
+    """The warnings every bearing as mounted raises from its results."""
+    return {"single_element_loaded": results["loaded_elements"] == 1,
+            "narrow_load_zone": results["load_zone_angle"] < np.pi / 2}
+
+
+def below_minimum_load(iso281: Mapping[str, Any], c: ArrayLike, share: float) -> NDArray:
+    """Where ISO 281's equivalent load P is below the makers' minimum, ``share``·C."""
+    return (np.asarray(iso281["equivalent_dynamic_load"], dtype=float)
+            < share * np.asarray(c, dtype=float))
+
+
+def reshaped(found: Found, shape: tuple[int, ...]) -> Found:
+    """``found`` with every result and check reshaped to the designs' ``shape``."""
+    return Found({key: np.reshape(value, shape) for key, value in found.results.items()},
+                 {key: np.reshape(value, shape) for key, value in found.flags.items()},
+                 [(code, np.reshape(bad, shape)) for code, bad in found.checks])
