@@ -29,7 +29,7 @@ import time  # noqa: E402
 import numpy as np  # noqa: E402
 
 from bearingcalc.core import iso16281_balls  # noqa: E402
-from bearingcalc.core.iso16281_balls import BallGeometry, ball_geometry  # noqa: E402
+from bearingcalc.core.iso16281_ball_contacts import BallGeometry, ball_geometry  # noqa: E402
 from bearingcalc.core.iso16281_life import ball_spring_constant  # noqa: E402
 
 TARGET = 30_000

@@ -15,7 +15,8 @@ import numpy as np
 import pytest
 from scipy import integrate, optimize, special
 
-from bearingcalc.core.iso16281_balls import ball_geometry, solve_ball_equilibrium
+from bearingcalc.core.iso16281_ball_contacts import ball_geometry
+from bearingcalc.core.iso16281_balls import solve_ball_equilibrium
 from bearingcalc.core.iso16281_life import (
     ball_contact_pressures,
     ball_reference_life,
@@ -268,7 +269,7 @@ def test_the_load_zone_of_a_radial_load_with_clearance_is_harris_closed_form():
     ends at cosψ_l = Pd/(2δr) (Harris & Kotzalas, Part 1, ch. 7); between 360 balls the
     interpolation is within 1e-4 of it, and at zero clearance between 10 balls exact by
     symmetry (180°)."""
-    from bearingcalc.core.iso16281_balls import ball_deflections
+    from bearingcalc.core.iso16281_ball_contacts import ball_deflections
     from bearingcalc.core.mounted_bearing import load_zone_angle
 
     for z, clearance, expected in ((360, 12e-6, None), (10, 0.0, math.pi)):
@@ -284,7 +285,7 @@ def test_the_load_zone_of_a_radial_load_with_clearance_is_harris_closed_form():
 
 
 def test_the_load_zone_is_whole_under_an_axial_load():
-    from bearingcalc.core.iso16281_balls import ball_deflections
+    from bearingcalc.core.iso16281_ball_contacts import ball_deflections
     from bearingcalc.core.mounted_bearing import load_zone_angle
 
     bearing = reference.BallBearing(12, 9.525e-3, 46e-3, 0.52, 0.53, diametral_clearance=1e-5)

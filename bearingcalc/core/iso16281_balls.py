@@ -23,6 +23,13 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from bearingcalc.core.iso16281_ball_contacts import (
+    BallGeometry,
+    BallSet,
+    ball_set,
+    contact_state,
+)
+
 #: The displacements' order, and the stiffness matrix's.
 DEGREES_OF_FREEDOM = ("x", "y", "z", "tilt_y", "tilt_z")
 #: The degrees of freedom a load in the plane of the radial load moves: δx, δy, θz.
@@ -35,20 +42,6 @@ MAX_ITERATIONS = 80
 #: angular-contact bearing with no axial load slides to a stationary point with its ring
 #: pulled through the balls (contact angles past 90°) instead of failing.
 INITIAL_DAMPING = 1e-4
-
-
-class BallGeometry(NamedTuple):
-    """A radial ball bearing's contacts, arrays over designs. [m, N/m^1.5]"""
-
-    ball_count: NDArray        # Z [1]
-    groove_distance: NDArray   # A = (fi + fe − 1)·Dw, the groove centres' distance at contact
-    axial_offset: NDArray      # the inner groove centre's axial offset from the outer's at q = 0
-    radial_offset: NDArray     # and its radial offset
-    lever: NDArray             # the tilt's lever, Dpw/2
-    spring_constant: NDArray   # K of a ball between both rings, Q = K·δ^1.5
-    #: an angular-contact bearing: its outer ring has one shoulder, so a ball touches it
-    #: only at a positive contact angle (a deep-groove bearing's grooves take both)
-    one_sided: NDArray
 
 
 class BallEquilibrium(NamedTuple):
@@ -64,157 +57,8 @@ class BallEquilibrium(NamedTuple):
     converged: NDArray         # (N,) bool
 
 
-def ball_geometry(ball_count: ArrayLike, ball_diameter: ArrayLike, pitch_diameter: ArrayLike,
-                  inner_conformity: ArrayLike, outer_conformity: ArrayLike,
-                  spring_constant: ArrayLike, *, diametral_clearance: ArrayLike | None = None,
-                  free_contact_angle: ArrayLike | None = None) -> BallGeometry:
-    r"""The groove centres of a deep-groove bearing with diametral clearance Pd (axial
-    datum: the centred ring) or of an angular-contact bearing at first contact with its
-    free contact angle α0 (ISO/TS 16281, 6.1):
-
-    .. math:: A = (f_i + f_e - 1) D_w, \quad (s_{x0}, s_{r0}) = (0, A - P_d/2)
-              \ \text{or}\ (A \sin\alpha_0, A \cos\alpha_0)
-    """
-    dw = np.asarray(ball_diameter, dtype=float)
-    distance = (np.asarray(inner_conformity, dtype=float)
-                + np.asarray(outer_conformity, dtype=float) - 1.0) * dw
-    if free_contact_angle is None:
-        clearance = np.asarray(0.0 if diametral_clearance is None else diametral_clearance,
-                               dtype=float)
-        axial, radial = np.zeros_like(distance), distance - clearance / 2.0
-    else:
-        alpha = np.asarray(free_contact_angle, dtype=float)
-        axial, radial = distance * np.sin(alpha), distance * np.cos(alpha)
-    arrays = np.broadcast_arrays(np.asarray(ball_count, dtype=float), distance, axial, radial,
-                                 np.asarray(pitch_diameter, dtype=float) / 2.0,
-                                 np.asarray(spring_constant, dtype=float),
-                                 np.full(np.shape(distance), free_contact_angle is not None))
-    *numbers, one_sided = (np.atleast_1d(a) for a in arrays)
-    return BallGeometry(*(a.astype(float) for a in numbers), one_sided.astype(bool))
-
-
-#: Each coordinate's part of ∂s/∂u: whether it moves s_x (else s_r), and its factor as
-#: powers of (cos ψ, sin ψ).
-_PARTS = {0: (True, (0, 0)), 1: (False, (1, 0)), 2: (False, (0, 1)), 3: (True, (0, 1)),
-          4: (True, (1, 0))}
 #: Designs solved together: a chunk's (designs × balls) temporaries stay in cache.
 CHUNK = 1 << 11
-
-
-class _Balls(NamedTuple):
-    """Every ball of a set of designs, (N, Zmax): the products of cos ψ and sin ψ that
-    the force and the stiffness weigh, keyed by their powers, and each ball's groove
-    distance A (+inf for padding, which so never touches)."""
-
-    trig: dict[tuple[int, int], NDArray]
-    reach: NDArray
-
-    def take(self, rows: NDArray) -> _Balls:
-        return _Balls({key: value[rows] for key, value in self.trig.items()},
-                      self.reach[rows])
-
-
-def _balls(geometry: BallGeometry, width: int) -> tuple[_Balls, NDArray]:
-    """Every ball (ψ_j = 2πj/Z) and the mask of real balls, (N, width)."""
-    count = geometry.ball_count.astype(int)
-    j = np.arange(width)
-    mask = j[None, :] < count[:, None]
-    psi = 2.0 * np.pi * j[None, :] / count[:, None]
-    cos, sin = np.cos(psi), np.sin(psi)
-    trig = {(1, 0): cos, (0, 1): sin, (2, 0): cos * cos, (0, 2): sin * sin,
-            (1, 1): cos * sin}
-    return _Balls(trig, np.where(mask, geometry.groove_distance[:, None], np.inf)), mask
-
-
-class _State(NamedTuple):
-    energy: NDArray     # (N,) the contacts' elastic energy [J]
-    force: NDArray      # (N, k) internal force along the coordinates solved for [N]
-    hessian: NDArray    # (N, k, k) [N/m]
-    load: NDArray       # (N, Zmax) [N]
-    angle: NDArray | None  # (N, Zmax) signed atan2(s_x, s_r) [rad], where asked for
-
-
-def _weighed(weight: NDArray, balls: _Balls, power: tuple[int, int]) -> NDArray:
-    """Σ over the balls of weight·cos^a ψ·sin^b ψ, (N,)."""
-    if power == (0, 0):
-        return weight.sum(axis=1)
-    return np.einsum("nz,nz->n", weight, balls.trig[power])
-
-
-def _contacts(geometry: BallGeometry, u: NDArray, balls: _Balls
-              ) -> tuple[NDArray, NDArray, NDArray, NDArray]:
-    """s_x, s_r, 1/|s| and δ₊ of every ball at u, (N, Zmax) [m, m, 1/m, m]."""
-    cos, sin = balls.trig[(1, 0)], balls.trig[(0, 1)]
-    # each temporary is made once and then updated in place: the chunk's arrays stay in
-    # cache and no allocation is repeated
-    sx = cos * u[:, 4:5]
-    sx += geometry.axial_offset[:, None] + u[:, 0:1]
-    sr = cos * u[:, 1:2]
-    sr += geometry.radial_offset[:, None]
-    if np.any(u[:, 3]):
-        sx += sin * u[:, 3:4]
-    if np.any(u[:, 2]):
-        sr += sin * u[:, 2:3]
-    inverse = sx * sx
-    inverse += sr * sr
-    np.sqrt(inverse, out=inverse)
-    deflection = inverse - balls.reach
-    np.maximum(deflection, 0.0, out=deflection)
-    # a ball touches its rings only between them (α < 90°), and an angular-contact
-    # bearing's only on its shoulder (α > 0)
-    off = sr <= 0.0
-    if geometry.one_sided.any():
-        off |= geometry.one_sided[:, None] & (sx <= 0.0)
-    np.copyto(deflection, 0.0, where=off)
-    np.divide(1.0, inverse, out=inverse)
-    return sx, sr, inverse, deflection
-
-
-def _state(geometry: BallGeometry, u: NDArray, balls: _Balls, columns: list[int], *,
-           angles: bool = False) -> _State:
-    r"""The contacts at the scaled displacement u = (δx, δy, δz, L·θy, L·θz):
-
-    .. math:: s_x = s_{x0} + δx + L(θ_z\cos ψ + θ_y\sin ψ), \quad
-              s_r = s_{r0} + δy\cos ψ + δz\sin ψ, \quad δ = |s| - A, \quad Q = Kδ_+^{3/2}
-
-    The energy Σ 2/5·K·δ₊^(5/2), its gradient Σ Q·∂δ/∂u and its Hessian
-    Σ 3/2·K·δ₊^(1/2)·g gᵀ + Q/|s|·t tᵀ (g = n·∂s/∂u, t = n⊥·∂s/∂u, n = s/|s|), along
-    the coordinates ``columns``. With ∂s/∂u = (f, 0) for an axial coordinate and (0, f)
-    for a radial one, the Hessian's entries are Σ w·f_i·f_j with w = a, b or c for two
-    axial, two radial or mixed coordinates (a = k_t + (k_n − k_t)·n_x², b = k_t +
-    (k_n − k_t)·n_r², c = (k_n − k_t)·n_x·n_r), the force's Σ Q·n·f.
-    """
-    sx, sr, inverse, deflection = _contacts(geometry, u, balls)
-    k = geometry.spring_constant[:, None]
-    root = np.sqrt(deflection)
-    load = deflection * root
-    load *= k
-    nx, nr = sx * inverse, sr * inverse
-    across = load * inverse
-    difference = root * (1.5 * k)
-    difference -= across
-    weights = {"x": load * nx, "r": load * nr}
-    along_x = difference * nx
-    weights["xr"] = weights["rx"] = along_x * nr
-    along_x *= nx
-    along_x += across
-    difference *= nr
-    difference *= nr
-    difference += across
-    weights["xx"], weights["rr"] = along_x, difference
-    size = len(columns)
-    hessian = np.empty((u.shape[0], size, size))
-    force = np.empty((u.shape[0], size))
-    for i, ci in enumerate(columns):
-        axial_i, (a_i, b_i) = _PARTS[ci]
-        force[:, i] = _weighed(weights["x" if axial_i else "r"], balls, (a_i, b_i))
-        for j in range(i, size):
-            axial_j, (a_j, b_j) = _PARTS[columns[j]]
-            key = ("x" if axial_i else "r") + ("x" if axial_j else "r")
-            hessian[:, i, j] = hessian[:, j, i] = _weighed(weights[key], balls,
-                                                           (a_i + a_j, b_i + b_j))
-    return _State(0.4 * np.einsum("nz,nz->n", load, deflection), force, hessian, load,
-                  np.arctan2(sx, sr) if angles else None)
 
 
 def solve_ball_equilibrium(geometry: BallGeometry, load: ArrayLike, *,
@@ -261,9 +105,9 @@ def _solve_chunk(geometry: BallGeometry, u: NDArray, target: NDArray, free: list
                  width: int) -> tuple[NDArray, ...]:
     """One chunk's equilibrium: u, the residual, the force and Hessian in all five
     coordinates, and each ball's azimuth, load and |contact angle| (NaN for padding)."""
-    balls, mask = _balls(geometry, width)
+    balls, mask = ball_set(geometry, width)
     u, residual = _newton(geometry, u, target, free, balls)
-    state = _state(geometry, u, balls, list(range(5)), angles=True)
+    state = contact_state(geometry, u, balls, list(range(5)), angles=True)
     blank = np.where(mask, 1.0, np.nan)
     azimuth = np.arctan2(balls.trig[(0, 1)], balls.trig[(1, 0)]) % (2.0 * np.pi)
     return (u, residual, state.force, state.hessian, azimuth * blank, state.load * blank,
@@ -324,7 +168,7 @@ def _take(geometry: BallGeometry, rows: NDArray | slice) -> BallGeometry:
 
 
 def _newton(geometry: BallGeometry, u: NDArray, target: NDArray, free: list[int],
-            balls: _Balls) -> tuple[NDArray, NDArray]:
+            balls: BallSet) -> tuple[NDArray, NDArray]:
     """Damped Newton on U(u) = Σ 2/5·K·δ₊^(5/2) − F·u over the ``free`` coordinates, on
     the designs not yet solved: a step is taken where it lowers U (Armijo) or halves the
     residual, else the damping grows tenfold; the contacts at a step taken are those
@@ -338,7 +182,7 @@ def _newton(geometry: BallGeometry, u: NDArray, target: NDArray, free: list[int]
     goal = target[:, free]
     size = np.maximum(np.max(np.abs(goal), axis=1), 1e-300)
     eye = np.eye(len(free))
-    state = _state(geometry, u, balls, free)
+    state = contact_state(geometry, u, balls, free)
     energy, force, hessian = state.energy - np.einsum("nd,nd->n", goal, u[:, free]), \
         state.force, state.hessian
     active, rows = np.arange(n), slice(None)
@@ -356,7 +200,7 @@ def _newton(geometry: BallGeometry, u: NDArray, target: NDArray, free: list[int]
         step = -_solve(damped, gradient)
         trial = u[active]
         trial[:, free] += step
-        new = _state(_take(geometry, rows), trial, balls.take(rows), free)
+        new = contact_state(_take(geometry, rows), trial, balls.take(rows), free)
         energy_new = new.energy - np.einsum("nd,nd->n", goal[rows], trial[:, free])
         # near the solution U's change is lost in its rounding: a step that shrinks the
         # residual counts as well
@@ -370,19 +214,3 @@ def _newton(geometry: BallGeometry, u: NDArray, target: NDArray, free: list[int]
         damping[rows] = np.where(better, np.maximum(damping[rows] / 10.0, 1e-14),
                                  damping[rows] * 10.0)
     return u, residual
-
-
-def ball_deflections(geometry: BallGeometry, displacement: NDArray, azimuth: NDArray
-                     ) -> NDArray:
-    """Every ball's signed deflection δ = |s| − A [m] at the displacement (N, 5): its
-    compression where positive, its play where negative (an angular-contact ball off
-    its shoulder has no contact: its δ is made negative). ``azimuth`` (N, Zmax) as the
-    equilibrium gives it, NaN past Z."""
-    q = displacement
-    cos, sin = np.cos(azimuth), np.sin(azimuth)
-    sx = (geometry.axial_offset[:, None] + q[:, 0:1]
-          + geometry.lever[:, None] * (q[:, 4:5] * cos + q[:, 3:4] * sin))
-    sr = geometry.radial_offset[:, None] + q[:, 1:2] * cos + q[:, 2:3] * sin
-    deflection = np.sqrt(sx * sx + sr * sr) - geometry.groove_distance[:, None]
-    off = (sr <= 0.0) | (geometry.one_sided[:, None] & (sx <= 0.0))
-    return np.where(off, -np.abs(deflection), deflection)

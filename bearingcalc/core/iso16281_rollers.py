@@ -16,13 +16,13 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from bearingcalc.core.iso16281_newton import RESIDUAL_TOLERANCE, damped_newton
+
 #: ISO/TS 16281's line-contact constant c_L = 35 948·Lwe^(8/9) N/mm^(10/9) of a roller
 #: (both contacts), in SI: N/m^(10/9) per m^(8/9).
 LINE_CONSTANT = 35948.0 * 1e3 ** (10 / 9) * 1e3 ** (8 / 9)
 #: The lamina law's exponent, q ∝ δ^(10/9).
 LAMINA_EXPONENT = 10.0 / 9.0
-RESIDUAL_TOLERANCE = 1e-12
-MAX_ITERATIONS = 100
 #: Designs solved together: a chunk's (designs, rollers, laminae) arrays stay small.
 CHUNK = 512
 
@@ -207,10 +207,9 @@ def _solve_chunk(geometry: RollerGeometry, applied: NDArray, tilt: NDArray, fixe
 def _newton(geometry: RollerGeometry, grad: NDArray, mask: NDArray, q: NDArray,
             applied: NDArray, free: list[int], cylindrical: NDArray
             ) -> tuple[NDArray, NDArray]:
-    """Damped Newton on the convex potential U(q) = Σ (c/n_s)·9/19·δ₊^(19/9) − F·q over
-    the free coordinates, scaled to lengths (u = S·q, S = diag(1, 1, 1, L, L), L the
-    roller's half length): a step is taken where it lowers U (Armijo) or halves the
-    residual, else the damping grows tenfold. Returns q and the relative residual."""
+    """The laminae's equilibrium by :func:`~bearingcalc.core.iso16281_newton.damped_newton`
+    on U(q) = Σ (c/n_s)·9/19·δ₊^(19/9) − F·q, tilts scaled by the roller's half length;
+    a cylindrical bearing's δx held. Returns q and the relative residual."""
     n = q.shape[0]
     lever = np.abs(geometry.positions).max(axis=1)
     scale = np.ones((n, 5))
@@ -218,35 +217,35 @@ def _newton(geometry: RollerGeometry, grad: NDArray, mask: NDArray, q: NDArray,
     moving = np.zeros((n, 5), dtype=bool)
     moving[:, free] = True
     moving[:, 0] &= ~cylindrical
-    target = np.where(moving, applied / scale, 0.0)
     typical = geometry.roller_count * geometry.lamina_constant * grad.shape[2] * (
         np.maximum(geometry.gap.max(axis=1), 1e-6 * lever)) ** (1.0 / 9.0)
-    damping = np.full(n, 1e-3)
-    residual = np.full(n, np.inf)
-    size = np.maximum(np.max(np.abs(target), axis=1), 1e-300)
-    state = _state(geometry, grad, mask, q)
-    held = ~moving[:, :, None] | ~moving[:, None, :]
-    for _ in range(MAX_ITERATIONS):
-        force = np.where(moving, state.force / scale, 0.0)
-        gradient = force - target
-        residual = np.max(np.abs(gradient), axis=1) / np.maximum(
-            size, np.max(np.abs(force), axis=1))
-        done = residual <= RESIDUAL_TOLERANCE
-        if done.all():
-            break
-        hessian = np.where(held, 0.0, state.hessian / scale[:, :, None] / scale[:, None, :])
-        hessian += np.eye(5) * np.where(moving, (damping * typical)[:, None], 1.0)[:, None, :]
-        step = -np.linalg.solve(hessian, gradient[..., None])[..., 0]
-        step[done] = 0.0
-        trial = q + step / scale
-        new = _state(geometry, grad, mask, trial)
-        energy = state.energy - np.sum(target * q * scale, axis=1)
-        energy_new = new.energy - np.sum(target * trial * scale, axis=1)
-        shrinks = (np.max(np.abs(np.where(moving, new.force / scale, 0.0) - target), axis=1)
-                   < 0.5 * np.max(np.abs(gradient), axis=1))
-        better = ((energy_new <= energy + 1e-4 * np.sum(gradient * step, axis=1)) | shrinks) & ~done
-        q = np.where(better[:, None], trial, q)
-        state = _State(*(np.where(better.reshape((n,) + (1,) * (a.ndim - 1)), b, a)
-                         for a, b in zip(state, new, strict=True)))
-        damping = np.where(better, np.maximum(damping / 10.0, 1e-14), damping * 10.0)
-    return q, residual
+    return damped_newton(lambda trial: _state(geometry, grad, mask, trial), q, applied,
+                         moving, scale, typical)
+
+
+class RollerContacts(NamedTuple):
+    """Every lamina's contacts at a displacement (see :func:`roller_contacts_at`)."""
+
+    energy: NDArray            # (N,) Σ (c_L/n_s)·9/19·δ₊^(19/9) [J]
+    force: NDArray             # (N, 5) the rings' internal force ∂U/∂q [N, N·m]
+    stiffness: NDArray         # (N, 5, 5) ∂²U/∂q² [SI]
+    element_load: NDArray      # (N, Zmax) each roller's load, NaN past Z [N]
+    lamina_load: NDArray       # (N, Zmax, n_s) [N]
+    azimuth: NDArray           # (N, Zmax) [rad], NaN past Z
+
+
+def roller_contacts_at(geometry: RollerGeometry, displacement: NDArray) -> RollerContacts:
+    """The laminae's energy, force, tangent stiffness and loads at the inner ring's
+    displacement q (N, 5) [m, rad], for a caller that solves its own equilibrium (a
+    shaft on several bearings): the same contacts as :func:`solve_roller_equilibrium`'s."""
+    count = geometry.roller_count.astype(int)
+    j = np.arange(int(count.max()))
+    mask = j[None, :] < count[:, None]
+    psi = 2.0 * np.pi * j[None, :] / count[:, None]
+    grad = _gradients(geometry, np.cos(psi), np.sin(psi))
+    state = _state(geometry, grad, mask, np.asarray(displacement, dtype=float))
+    blank = np.where(mask, 1.0, np.nan)
+    return RollerContacts(state.energy, state.force, state.hessian,
+                          state.lamina.sum(axis=2) * blank,
+                          np.where(mask[..., None], state.lamina, np.nan),
+                          (psi % (2 * np.pi)) * blank)

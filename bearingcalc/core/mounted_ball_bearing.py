@@ -16,11 +16,8 @@ from numpy.typing import NDArray
 from bearingcalc.core import mounted_bearing as shared
 from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.common import DerivedTest, Found
-from bearingcalc.core.iso16281_balls import (
-    ball_deflections,
-    ball_geometry,
-    solve_ball_equilibrium,
-)
+from bearingcalc.core.iso16281_ball_contacts import ball_deflections, ball_geometry
+from bearingcalc.core.iso16281_balls import solve_ball_equilibrium
 from bearingcalc.core.iso16281_life import (
     ball_reference_life,
     ball_spring_constant,
