@@ -114,8 +114,8 @@ def _add(flat: FlatResults, block: _Block) -> None:
     for key, row, column in block.keys:
         unit, meaning = block.declared.columns[column]
         flat[key] = block.along.values[column][row]
-        flat.names[key] = (unit, block.declared.meaning.format(meaning=meaning,
-                                                                position=row + 1))
+        flat.names[key] = (unit, block.declared.meaning.format(
+            meaning=meaning, position=row + 1, row=block.along.rows[row].replace("_", " ")))
 
 
 def _tables(block: _Block, default: str) -> Iterator[ResultTable]:

@@ -172,7 +172,7 @@ REFUSED = [
     ("method-thrust-ball", {"type": "thrust-ball"}, "method"),
     ("method-self-aligning-ball", {"type": "self-aligning-ball"}, "method"),
     (
-        "method-arrangement-pair",
+        "pair-without-setting",
         {
             "arrangement": "back-to-back",
             "type": "angular-contact",
@@ -180,8 +180,9 @@ REFUSED = [
             "operating_clearance": DROP,
             "tilting_moment": DROP,
             "axial_load": "1 kN",
+            "width": "16 mm",
         },
-        "method",
+        "setting",
     ),
     ("radial-load-in-mm", {"radial_load": "2 mm"}, "radial_load"),
     ("axial-load-negative", {"axial_load": "-300 N"}, "axial_load"),

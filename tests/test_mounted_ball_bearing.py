@@ -133,7 +133,8 @@ def test_an_imposed_misalignment_reports_the_moment_it_takes(cli, spec_file):
     (DEEP_GROOVE.format(clearance="10 µm", axial="0 N", extra="").replace(
         "inner_groove_conformity: 0.52\n", ""), "inner_groove_conformity"),
     (DEEP_GROOVE.format(clearance="2 mm", axial="0 N", extra=""), "operating_clearance"),
-    (ANGULAR.format(axial="4 kN", extra="arrangement: back-to-back"), "arrangement"),
+    (ANGULAR.format(axial="4 kN", extra="arrangement: back-to-back\nwidth: 16 mm"),
+     "setting"),
     (DEEP_GROOVE.format(clearance="10 µm", axial="0 N", extra="").replace(
         "radial_load: 2 kN\naxial_load: 0 N\nspeed: 3000 rpm\n",
         "duty_cycle:\n  - {time: 0.5, radial_load: 2 kN, speed: 3000 rpm}\n"

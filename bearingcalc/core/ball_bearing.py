@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core import mounted_ball_bearing, mounted_bearing
+from bearingcalc.core import mounted_ball_bearing, mounted_bearing, mounted_pair
 from bearingcalc.core.arrangements import (
     DOUBLE_ROW_PAIRS,
     PAIRS,
@@ -352,5 +352,5 @@ def _given_or(given: ArrayLike | None, computed: NDArray | None) -> NDArray | No
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS, display=DISPLAY,
-                along={"element": mounted_bearing.ELEMENT_RESULTS},
+                along=mounted_pair.ALONG,
                 inputs="RollingBearingInputs")

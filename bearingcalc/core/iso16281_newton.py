@@ -17,8 +17,8 @@ MAX_ITERATIONS = 100
 
 
 def damped_newton(potential: Callable[[NDArray], Any], q: NDArray, applied: NDArray,
-                  moving: NDArray, scale: NDArray, typical: NDArray
-                  ) -> tuple[NDArray, NDArray]:
+                  moving: NDArray, scale: NDArray, typical: NDArray,
+                  internal: NDArray | None = None) -> tuple[NDArray, NDArray]:
     r"""Minimise U(q) = U_c(q) − F·q over the coordinates ``moving`` (N, 5) holds, from
     ``q`` (N, 5), with F = ``applied`` (N, 5):
 
@@ -30,14 +30,18 @@ def damped_newton(potential: Callable[[NDArray], Any], q: NDArray, applied: NDAr
     designs, all in SI. A step is taken where it lowers U (Armijo's rule) or halves the
     residual, and the Levenberg damping λ (times the stiffness scale ``typical`` (N,)
     [N/m]) then falls tenfold; else it grows tenfold. Returns q and the relative residual
-    max|∇U|/max(|F|, |∇U_c|). Source: J. Nocedal and S. J. Wright, *Numerical
-    Optimization*, 2nd ed., 3.1 (Armijo) and 10.3 (Levenberg–Marquardt).
+    max|∇U|/max(|F|, |∇U_c|, ``internal``), ``internal`` (N,) [N] the size of forces
+    that cancel inside (a preloaded pair's), whose rounding no step can beat.
+    Source: J. Nocedal and S. J. Wright, *Numerical Optimization*, 2nd ed., 3.1 (Armijo)
+    and 10.3 (Levenberg–Marquardt).
     """
     n = q.shape[0]
     target = np.where(moving, applied / scale, 0.0)
     damping = np.full(n, 1e-3)
     residual = np.full(n, np.inf)
     size = np.maximum(np.max(np.abs(target), axis=1), 1e-300)
+    if internal is not None:
+        size = np.maximum(size, internal)
     held = ~moving[:, :, None] | ~moving[:, None, :]
     state = potential(q)
     for _ in range(MAX_ITERATIONS):

@@ -84,29 +84,32 @@ def crowned_profile(positions: NDArray, crown_radius: ArrayLike) -> NDArray:
 
 def roller_geometry(roller_count: ArrayLike, roller_diameter: ArrayLike,
                     effective_length: ArrayLike, contact_angle: ArrayLike, *,
-                    diametral_clearance: ArrayLike = 0.0, laminae: int = 30,
+                    diametral_clearance: ArrayLike = 0.0, laminae: ArrayLike = 30,
                     profile: str = "iso", line_constant: ArrayLike | None = None,
                     crown_radius: ArrayLike | None = None) -> RollerGeometry:
     """The laminae of each design: n_s slices of Lwe/n_s, their positions, gaps (the
     clearance along the contact normal and the profile at both contacts) and constant.
     ``profile``: "iso" (ISO/TS 16281's logarithmic profile), "none" or "crown" (one arc
-    of ``crown_radius``)."""
+    of ``crown_radius``). ``laminae`` may differ between designs: a design's laminae past
+    its own count are padding, at an infinite gap, so they never touch."""
     arrays = np.broadcast_arrays(*(np.atleast_1d(np.asarray(v, dtype=float)) for v in (
         roller_count, roller_diameter, effective_length, contact_angle, diametral_clearance,
-        np.inf if crown_radius is None else crown_radius)))
-    count, dwe, lwe, alpha, clearance, crown = arrays
-    k = np.arange(laminae)
-    positions = (k[None, :] - laminae / 2.0 + 0.5) * lwe[:, None] / laminae
+        np.inf if crown_radius is None else crown_radius, laminae)))
+    count, dwe, lwe, alpha, clearance, crown, slices = arrays
+    k = np.arange(int(slices.max()))[None, :]
+    real = k < slices[:, None]
+    positions = np.where(real, (k - slices[:, None] / 2.0 + 0.5) * (lwe / slices)[:, None],
+                         0.0)
     if profile == "none":
         drop = np.zeros_like(positions)
     elif profile == "crown":
         drop = crowned_profile(positions, crown)
     else:
         drop = logarithmic_profile(positions, dwe, lwe)
-    gap = (clearance * np.cos(alpha) / 2.0)[:, None] + 2.0 * drop
+    gap = np.where(real, (clearance * np.cos(alpha) / 2.0)[:, None] + 2.0 * drop, np.inf)
     constant = (LINE_CONSTANT * lwe ** (8 / 9) if line_constant is None
                 else np.broadcast_to(np.asarray(line_constant, dtype=float), lwe.shape))
-    return RollerGeometry(count, alpha, gap, positions, constant / laminae)
+    return RollerGeometry(count, alpha, gap, positions, constant / slices)
 
 
 def lamina_deflections(geometry: RollerGeometry, displacement: NDArray, azimuth: NDArray
@@ -217,8 +220,9 @@ def _newton(geometry: RollerGeometry, grad: NDArray, mask: NDArray, q: NDArray,
     moving = np.zeros((n, 5), dtype=bool)
     moving[:, free] = True
     moving[:, 0] &= ~cylindrical
+    widest = np.max(np.where(np.isfinite(geometry.gap), geometry.gap, 0.0), axis=1)
     typical = geometry.roller_count * geometry.lamina_constant * grad.shape[2] * (
-        np.maximum(geometry.gap.max(axis=1), 1e-6 * lever)) ** (1.0 / 9.0)
+        np.maximum(widest, 1e-6 * lever)) ** (1.0 / 9.0)
     return damped_newton(lambda trial: _state(geometry, grad, mask, trial), q, applied,
                          moving, scale, typical)
 

@@ -162,8 +162,13 @@ def _newton(bearings: Sequence[ShaftBearing], matrices: Sequence[NDArray], q: ND
         state = shaft_state(bearings, matrices, trial)
         return _Potential(state.energy, state.force, state.stiffness)
 
+    # the bearings' own forces at the start (a pair's preload) cancel on the shaft, but
+    # they set the rounding of the sum
+    start = shaft_state(bearings, matrices, q)
+    internal = sum(np.max(np.abs(contacts.force[:, :3]), axis=1)
+                   for contacts in start.contacts)
     return damped_newton(potential, q, applied, moving, scale,
-                         _typical_stiffness(bearings, matrices, scale))
+                         _typical_stiffness(bearings, matrices, scale), internal)
 
 
 

@@ -14,22 +14,30 @@ import numpy as np
 from numpy.typing import NDArray
 
 from bearingcalc.core import mounted_bearing as shared
+from bearingcalc.core import mounted_pair
+from bearingcalc.core.arrangements import PAIRS
 from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.common import DerivedTest, Found
-from bearingcalc.core.iso16281_ball_contacts import ball_deflections, ball_geometry
+from bearingcalc.core.iso16281_ball_contacts import (
+    BallGeometry,
+    ball_contacts_at,
+    ball_deflections,
+    ball_geometry,
+)
 from bearingcalc.core.iso16281_balls import solve_ball_equilibrium
 from bearingcalc.core.iso16281_life import (
     ball_reference_life,
     ball_spring_constant,
     largest_ball_contacts,
 )
+from bearingcalc.core.mounted_pair import PairFamily, pair_results
 from bearingcalc.core.solver import Along
 
 #: The ball bearing's results as mounted: the shared ones with its contact angles.
 RESULTS = shared.results_with({
     "operating_contact_angle_min": ("rad", "the smallest contact angle of a loaded ball"),
     "operating_contact_angle_max": ("rad", "the largest contact angle of a loaded ball"),
-}, after="load_zone_angle")
+}, after="load_zone_angle", pair=mounted_pair.RESULTS)
 #: Warnings of the balls as mounted: flag -> message.
 WARNINGS = {
     **shared.WARNINGS,
@@ -43,6 +51,7 @@ CONTACT_TOO_LARGE = {"radial_load": (26, "load"), "tilting_moment": (27, "tiltin
                      "misalignment": (28, "misalignment")}
 STATUS_REASONS = {
     **shared.STATUS_REASONS,
+    **mounted_pair.STATUS_REASONS,
     **{code: (field, DerivedTest(
         "the most heavily loaded ball's contact ellipse outgrows the ball (a semi-axis "
         "above Dw/2): Hertz's theory does not hold, and the bearing would be crushed; "
@@ -59,10 +68,25 @@ _NUMBERS = ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_confo
 
 
 def mounted_results(inputs: Mapping[str, Any], c: NDArray, iso281: Mapping[str, Any],
-                    speed: NDArray) -> tuple[Found, Along]:
+                    speed: NDArray) -> tuple[Found, dict[str, Along]]:
     """The method's results from the bearing's inputs, C and ISO 281's results of the
-    same bearing (its L10 and life factors), at the rings' relative speed [rad/s]."""
+    same bearing (its L10 and life factors), at the rings' relative speed [rad/s]: of a
+    single bearing, or of a matched pair (:mod:`bearingcalc.core.mounted_pair`)."""
     shape, flat = shared.designs(inputs, _NUMBERS, c, speed)
+    geometry, family = _family(inputs, flat, c)
+    if inputs.get("arrangement") in PAIRS:
+        found, along = pair_results(inputs, family, flat, shape, c, iso281, speed)
+    else:
+        found, along = _single(inputs, geometry, family, flat, shape, iso281, speed)
+    found.flags.update(below_minimum_load=shared.below_minimum_load(
+        iso281, c, MINIMUM_LOAD_SHARE))
+    return found, along
+
+
+def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray
+            ) -> tuple[BallGeometry, PairFamily]:
+    """The balls' groove centres, and what they give a bearing as mounted: their
+    contacts, life and pressures."""
     one_way = traits(str(inputs["bearing_type"])).one_way
     z, dw, dpw, fi, fe, alpha = (flat(inputs[k]) for k in (
         "ball_count", "ball_diameter", "pitch_diameter", "inner_groove_conformity",
@@ -74,48 +98,48 @@ def mounted_results(inputs: Mapping[str, Any], c: NDArray, iso281: Mapping[str, 
                              diametral_clearance=None if one_way else flat(
                                  shared.or_zero(inputs.get("operating_clearance"))),
                              free_contact_angle=alpha if one_way else None)
+    rotates = flat(np.abs(inputs["inner_speed"]) >= np.abs(inputs["outer_speed"])) > 0
+
+    def life(contacts: Any) -> Any:
+        return ball_reference_life(contacts.element_load, z, dw, dpw, fi, fe, nominal,
+                                   flat(c), inner_rotates=rotates)
+
+    def pressures(contacts: Any) -> tuple[NDArray, NDArray, NDArray]:
+        hertz = largest_ball_contacts(contacts.element_load, contacts.contact_angle, dw, dpw,
+                                      fi, fe, modulus, poisson,
+                                      quantities=("max_pressure", "semi_major"))
+        return (*hertz["max_pressure"], ~(np.maximum(*hertz["semi_major"]) <= dw / 2.0))
+
+    def deflection(q: NDArray, contacts: Any) -> NDArray:
+        return ball_deflections(geometry, q, contacts.azimuth)
+
+    offset = dpw / 2.0 * np.tan(nominal)
+    return geometry, PairFamily(
+        "ball", lambda q: ball_contacts_at(geometry, q), offset, offset, np.zeros_like(z),
+        dpw / 2.0, life, pressures, deflection, 3.0, CONTACT_TOO_LARGE)
+
+
+def _single(inputs: Mapping[str, Any], geometry: BallGeometry, family: PairFamily,
+            flat: Any, shape: tuple[int, ...], iso281: Mapping[str, Any], speed: NDArray
+            ) -> tuple[Found, dict[str, Along]]:
+    """A single bearing's results, its balls along ``element``."""
     misalignment = inputs.get("misalignment")
-    solved = solve_ball_equilibrium(geometry, shared.applied_loads(inputs, flat, z.size),
-                                    fixed_tilt=None if misalignment is None
-                                    else flat(misalignment))
-    life = ball_reference_life(solved.element_load, z, dw, dpw, fi, fe, nominal, flat(c),
-                               inner_rotates=flat(np.abs(inputs["inner_speed"])
-                                                  >= np.abs(inputs["outer_speed"])) > 0)
-    found, (inner, outer) = _found(inputs, solved, (dw, dpw, fi, fe, modulus, poisson),
-                                   ball_deflections(geometry, solved.displacement,
-                                                    solved.azimuth))
-    found = shared.reshaped(found, shape)
-    found.results.update(shared.pressure_results(inputs, inner, outer, shape))
-    found.results.update(shared.life_results(inputs, life, iso281, speed, shape, "ball"))
-    found.flags.update(shared.warning_flags(found.results),
-                       below_minimum_load=shared.below_minimum_load(
-                           iso281, c, MINIMUM_LOAD_SHARE))
-    return found, shared.element_rows({"azimuth": solved.azimuth,
-                                       "load": solved.element_load,
-                                       "contact_angle": solved.contact_angle}, shape)
-
-
-def _found(inputs: Mapping[str, Any], solved: Any, contact: tuple, deflection: NDArray
-           ) -> tuple[Found, tuple[NDArray, NDArray]]:
-    """The scalars of the solved balls over the flat designs: the equilibrium's and the
-    contact angles, with the checks of equilibrium and of Hertz's theory; and the largest
-    pressures at the inner and the outer ring."""
-    loaded = np.nan_to_num(solved.element_load) > 0
-    none_loaded = ~loaded.any(axis=1)
-    hertz = largest_ball_contacts(solved.element_load, solved.contact_angle, *contact,
-                                  quantities=("max_pressure", "semi_major"))
-    inner, outer = hertz["max_pressure"]
-    ellipse = np.maximum(*hertz["semi_major"])
+    solved = solve_ball_equilibrium(geometry, shared.applied_loads(
+        inputs, flat, geometry.ball_count.size), fixed_tilt=None if misalignment is None
+        else flat(misalignment))
+    inner, outer, crushed = family.pressures(solved)
     with np.errstate(invalid="ignore", all="ignore"):
-        results = shared.equilibrium_results(solved, deflection)
-        results.update(
-            operating_contact_angle_min=np.where(none_loaded, np.nan, np.min(
-                np.where(loaded, solved.contact_angle, np.inf), axis=1)),
-            operating_contact_angle_max=np.where(none_loaded, np.nan, np.max(
-                np.where(loaded, solved.contact_angle, -np.inf), axis=1)))
-    if inputs.get("misalignment") is not None:
+        results = shared.equilibrium_results(solved, family.deflection(solved.displacement,
+                                                                       solved))
+        results.update(shared.contact_angle_range(solved.element_load,
+                                                  solved.contact_angle))
+    if misalignment is not None:
         results["tilting_moment_reaction"] = solved.reaction[:, 4]
-    crushed = ~(ellipse <= contact[0] / 2.0)
-    return Found(results, checks=[(shared.NO_EQUILIBRIUM, ~solved.converged),
-                                  (shared.crushing_code(inputs, CONTACT_TOO_LARGE), crushed)]
-                 ), (inner, outer)
+    found = shared.completed(inputs, Found(results, checks=[
+        (shared.NO_EQUILIBRIUM, ~solved.converged),
+        (shared.crushing_code(inputs, CONTACT_TOO_LARGE), crushed)]), (inner, outer),
+        family.life(solved), iso281, speed, shape, "ball")
+    return found, {"element": shared.element_rows({"azimuth": solved.azimuth,
+                                                   "load": solved.element_load,
+                                                   "contact_angle": solved.contact_angle},
+                                                  shape)}

@@ -8,7 +8,7 @@ part is :mod:`bearingcalc.core.mounted_ball_bearing`, the roller bearing's
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -20,16 +20,18 @@ from bearingcalc.core.solver import Along, AxisResults
 
 #: A family's results as mounted from (inputs, C, ISO 281's results, speed).
 MountedResults = Callable[[Mapping[str, Any], NDArray, Mapping[str, Any], NDArray],
-                          tuple[Found, Along]]
+                          tuple[Found, dict[str, Along]]]
 
 #: The method's name in a spec's ``method``.
 METHOD = "iso-16281"
 
 #: The results of one value per design of every bearing as mounted, in report order.
 RESULTS: dict[str, tuple[str, str]] = {
-    "ring_displacement_radial": ("m", "the inner ring's displacement along the radial load"),
+    "ring_displacement_radial": ("m", "the inner ring's (a pair's shaft's, midway between "
+                                 "its pressure centres) displacement along the radial load"),
     "ring_displacement_axial": ("m", "along the axis, from the centred ring (deep-groove, "
-                                "cylindrical) or first contact (angular-contact, tapered)"),
+                                "cylindrical), first contact (angular-contact, tapered) or a "
+                                "pair's place at rest"),
     "ring_tilt": ("rad", "the inner ring's tilt in the plane of the radial load"),
     "tilting_moment_reaction": ("N·m", "the moment the bearing carries at an imposed "
                                 "misalignment"),
@@ -56,7 +58,7 @@ ELEMENT_RESULTS = AxisResults({
     "azimuth": ("rad", "its azimuth ψ (0 under the radial load)"),
     "load": ("N", "its load Q"),
     "contact_angle": ("rad", "its operating contact angle"),
-}, after="equilibrium_residual", meaning="element {position}: {meaning}")
+}, after="equilibrium_residual", meaning="{row}: {meaning}")
 #: The table's heading of the method's results.
 GROUP = "as mounted (ISO/TS 16281)"
 #: Warnings of every bearing as mounted: flag -> message.
@@ -77,15 +79,24 @@ STATUS_REASONS = {
 }
 
 
-def results_with(own: Mapping[str, tuple[str, str]], after: str
-                 ) -> dict[str, tuple[str, str]]:
+class LifeOf(NamedTuple):
+    """A reference rating life and its load, of a bearing or of a pair."""
+
+    revolutions: NDArray       # L10r [revolutions]
+    equivalent_load: NDArray   # P_ref [N]
+
+
+def results_with(own: Mapping[str, tuple[str, str]], after: str,
+                 pair: Mapping[str, tuple[str, str]]) -> dict[str, tuple[str, str]]:
     """The shared :data:`RESULTS` with a family's ``own`` results inserted after the key
-    ``after``."""
+    ``after``, and a matched ``pair``'s after the stiffness."""
     merged: dict[str, tuple[str, str]] = {}
     for key, value in RESULTS.items():
         merged[key] = value
         if key == after:
             merged.update(own)
+        if key == "stiffness_tilt":
+            merged.update(pair)
     return merged
 
 
@@ -120,12 +131,12 @@ def designs(inputs: Mapping[str, Any], numbers: tuple[str, ...], *others: ArrayL
 
 def as_mounted(inputs: Mapping[str, Any], mounted_results: MountedResults, c: NDArray,
                iso281: Mapping[str, Any], speed: NDArray) -> tuple[Found, dict[str, Along]]:
-    """A family's ``mounted_results`` and its elements' (along ``element``) where the
-    spec asks for the method (``method: iso-16281``); nothing otherwise."""
+    """A family's ``mounted_results`` with its results along their axes (each element,
+    a pair's bearings) where the spec asks for the method (``method: iso-16281``);
+    nothing otherwise."""
     if inputs.get("method") != METHOD:
         return Found(), {}
-    found, elements = mounted_results(inputs, c, iso281, speed)
-    return found, {"element": elements}
+    return mounted_results(inputs, c, iso281, speed)
 
 
 def element_rows(values: Mapping[str, NDArray], shape: tuple[int, ...]) -> Along:
@@ -188,6 +199,18 @@ def equilibrium_results(solved: Any, deflection: NDArray) -> dict[str, NDArray]:
     }
 
 
+def contact_angle_range(element_load: NDArray, contact_angle: NDArray
+                        ) -> dict[str, NDArray]:
+    """The smallest and largest contact angle over the loaded balls [rad]; NaN where
+    none is loaded."""
+    loaded = np.nan_to_num(element_load) > 0
+    none_loaded = ~loaded.any(axis=1)
+    return {"operating_contact_angle_min": np.where(none_loaded, np.nan, np.min(
+                np.where(loaded, contact_angle, np.inf), axis=1)),
+            "operating_contact_angle_max": np.where(none_loaded, np.nan, np.max(
+                np.where(loaded, contact_angle, -np.inf), axis=1))}
+
+
 def life_results(inputs: Mapping[str, Any], reference_life: Any, iso281: Mapping[str, Any],
                  speed: NDArray, shape: tuple[int, ...], family: Family) -> dict[str, NDArray]:
     r"""The lives from the reference rating life L10r [revolutions] and its load P_ref:
@@ -232,6 +255,19 @@ def pressure_results(inputs: Mapping[str, Any], inner: NDArray, outer: NDArray,
         results["contact_pressure_margin"] = 1.0 - largest / np.asarray(
             inputs["max_contact_pressure"], dtype=float)
     return results
+
+
+def completed(inputs: Mapping[str, Any], found: Found, pressures: tuple[NDArray, NDArray],
+              reference_life: Any, iso281: Mapping[str, Any], speed: NDArray,
+              shape: tuple[int, ...], family: Family) -> Found:
+    """A solve's ``found`` over the flat designs reshaped to theirs, with the pressures
+    at the inner and outer ring and their limit, the lives from ``reference_life`` and
+    the warnings every bearing as mounted raises."""
+    found = reshaped(found, shape)
+    found.results.update(pressure_results(inputs, *pressures, shape))
+    found.results.update(life_results(inputs, reference_life, iso281, speed, shape, family))
+    found.flags.update(warning_flags(found.results))
+    return found
 
 
 def warning_flags(results: Mapping[str, NDArray]) -> dict[str, NDArray]:

@@ -15,22 +15,26 @@ import numpy as np
 from numpy.typing import NDArray
 
 from bearingcalc.core import mounted_bearing as shared
+from bearingcalc.core import mounted_pair
+from bearingcalc.core.arrangements import PAIRS
 from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.common import DerivedTest, Found
 from bearingcalc.core.iso16281_life import largest_roller_contacts, roller_reference_life
 from bearingcalc.core.iso16281_rollers import (
-    RollerEquilibrium,
+    RollerGeometry,
     lamina_deflections,
+    roller_contacts_at,
     roller_geometry,
     solve_roller_equilibrium,
 )
+from bearingcalc.core.mounted_pair import PairFamily, pair_results
 from bearingcalc.core.solver import Along
 
 #: The roller bearing's results as mounted: the shared ones with the rib's load.
 RESULTS = shared.results_with({
     "max_rib_load": ("N", "2·Q·sin(θ/2) of the most heavily loaded roller, θ its included "
                      "angle: the load on the cone's rib"),
-}, after="max_contact_pressure_outer")
+}, after="max_contact_pressure_outer", pair=mounted_pair.RESULTS)
 #: Warnings of the rollers as mounted: flag -> message.
 WARNINGS = {
     **shared.WARNINGS,
@@ -49,6 +53,7 @@ CONTACT_TOO_WIDE = {"radial_load": (29, "load"), "tilting_moment": (30, "tilting
 CROWN_TOO_SMALL = 32
 STATUS_REASONS = {
     **shared.STATUS_REASONS,
+    **mounted_pair.STATUS_REASONS,
     **{code: (field, DerivedTest(
         "the most heavily loaded lamina's contact is not narrow against the roller (its "
         "half-width exceeds Dwe/4): Hertz's theory does not hold, and the bearing would be "
@@ -68,110 +73,103 @@ _NUMBERS = ("roller_count", "roller_diameter", "roller_length", "pitch_diameter"
 
 
 def mounted_results(inputs: Mapping[str, Any], c: NDArray, iso281: Mapping[str, Any],
-                    speed: NDArray) -> tuple[Found, Along]:
+                    speed: NDArray) -> tuple[Found, dict[str, Along]]:
     """The method's results from the bearing's inputs, C and ISO 281's results of the
-    same bearing (its L10 and life factors), at the rings' relative speed [rad/s]."""
+    same bearing (its L10 and life factors), at the rings' relative speed [rad/s]: of a
+    single bearing, or of a matched pair (:mod:`bearingcalc.core.mounted_pair`)."""
     shape, flat = shared.designs(inputs, _NUMBERS, c, speed)
+    family = _family(inputs, flat, c)
+    if inputs.get("arrangement") in PAIRS:
+        found, along = pair_results(inputs, family, flat, shape, c, iso281, speed)
+    else:
+        found, along = _single(inputs, family, flat, shape, iso281, speed)
+    crown = inputs.get("crown_radius")
+    lwe = flat(inputs["roller_length"])
+    found.checks.insert(0, (CROWN_TOO_SMALL, np.zeros(shape, bool) if crown is None
+                            else ~(flat(crown) > lwe / 2.0).reshape(shape)))
+    found.flags.update(below_minimum_load_roller=shared.below_minimum_load(
+        iso281, c, MINIMUM_LOAD_SHARE))
+    return found, along
+
+
+def _geometry(inputs: Mapping[str, Any], flat: Any) -> tuple[RollerGeometry, NDArray]:
+    """Every design's laminae (their count may differ between designs) and the count."""
+    laminae = flat(inputs["laminae"]).astype(int)
+    one_way = traits(str(inputs["bearing_type"])).one_way
+    crown = inputs.get("crown_radius")
+    geometry = roller_geometry(
+        *(flat(inputs[key]) for key in ("roller_count", "roller_diameter", "roller_length",
+                                        "contact_angle")),
+        diametral_clearance=0.0 if one_way else flat(
+            shared.or_zero(inputs.get("operating_clearance"))),
+        laminae=laminae, profile=str(inputs["roller_profile"]),
+        crown_radius=None if crown is None else flat(crown))
+    return geometry, laminae
+
+
+def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> PairFamily:
+    """What the rollers give a bearing as mounted: their contacts, life, pressures."""
+    geometry, laminae = _geometry(inputs, flat)
     z, dwe, lwe, dpw, alpha = (flat(inputs[key]) for key in (
         "roller_count", "roller_diameter", "roller_length", "pitch_diameter",
         "contact_angle"))
-    laminae = flat(inputs["laminae"]).astype(int)
-    solved, lamina_load, deflection = _equilibrium(inputs, flat, laminae)
-    life = roller_reference_life(lamina_load, z, dwe, dpw, alpha, flat(c),
-                                 inner_rotates=flat(np.abs(inputs["inner_speed"])
-                                                    >= np.abs(inputs["outer_speed"])) > 0,
-                                 laminae=laminae)
-    contacts = largest_roller_contacts(lamina_load, dwe, lwe, dpw, alpha,
-                                       flat(inputs["elastic_modulus"]),
-                                       flat(inputs["poisson_ratio"]), laminae=laminae)
+    rotates = flat(np.abs(inputs["inner_speed"]) >= np.abs(inputs["outer_speed"])) > 0
+    material = (flat(inputs["elastic_modulus"]), flat(inputs["poisson_ratio"]))
+
+    def life(contacts: Any) -> Any:
+        return roller_reference_life(contacts.lamina_load, z, dwe, dpw, alpha, flat(c),
+                                     inner_rotates=rotates, laminae=laminae)
+
+    def pressures(contacts: Any) -> tuple[NDArray, NDArray, NDArray]:
+        found = largest_roller_contacts(contacts.lamina_load, dwe, lwe, dpw, alpha,
+                                        *material, laminae=laminae)
+        return (*found["max_pressure"], ~(np.maximum(*found["half_width"]) <= dwe / 4.0))
+
+    def deflection(q: NDArray, contacts: Any) -> NDArray:
+        return np.max(lamina_deflections(geometry, q, contacts.azimuth), axis=2)
+
     with np.errstate(invalid="ignore"):
-        results = shared.equilibrium_results(solved, np.max(deflection, axis=2))
-    if inputs.get("misalignment") is not None:
+        first_contact = np.where(alpha > 0.0, np.min(geometry.gap, axis=1) / np.sin(alpha),
+                                 0.0)
+    return PairFamily("roller", lambda q: roller_contacts_at(geometry, q),
+                      np.zeros_like(z), dpw / 2.0 * np.tan(alpha), first_contact, dpw / 2.0,
+                      life, pressures, deflection, 10.0 / 3.0, CONTACT_TOO_WIDE,
+                      lambda contacts: _edge_loaded(contacts.lamina_load, laminae))
+
+
+def _single(inputs: Mapping[str, Any], family: PairFamily, flat: Any,
+            shape: tuple[int, ...], iso281: Mapping[str, Any], speed: NDArray
+            ) -> tuple[Found, dict[str, Along]]:
+    """A single bearing's results, its elements along ``element``."""
+    geometry, _ = _geometry(inputs, flat)
+    misalignment = inputs.get("misalignment")
+    solved = solve_roller_equilibrium(geometry, shared.applied_loads(
+        inputs, flat, geometry.roller_count.size), fixed_tilt=None if misalignment is None
+        else flat(misalignment))
+    inner, outer, crushed = family.pressures(solved)
+    with np.errstate(invalid="ignore"):
+        results = shared.equilibrium_results(solved, family.deflection(solved.displacement,
+                                                                       solved))
+    if misalignment is not None:
         results["tilting_moment_reaction"] = solved.reaction[:, 4]
     if inputs.get("roller_included_angle") is not None:
         results["max_rib_load"] = 2.0 * results["max_element_load"] * np.sin(
             flat(inputs["roller_included_angle"]) / 2.0)
-    crushed = ~(np.maximum(*contacts["half_width"]) <= dwe / 4.0)
-    crown = inputs.get("crown_radius")
-    found = shared.reshaped(Found(results, {"edge_loaded": _edge_loaded(lamina_load)}, [
-        (CROWN_TOO_SMALL, np.zeros(z.size, bool) if crown is None
-         else ~(flat(crown) > lwe / 2.0)),
-        (shared.NO_EQUILIBRIUM, ~solved.converged),
-        (shared.crushing_code(inputs, CONTACT_TOO_WIDE), crushed)]), shape)
-    found.results.update(shared.pressure_results(inputs, *contacts["max_pressure"], shape))
-    found.results.update(shared.life_results(inputs, life, iso281, speed, shape, "roller"))
-    found.flags.update(shared.warning_flags(found.results),
-                       below_minimum_load_roller=shared.below_minimum_load(
-                           iso281, c, MINIMUM_LOAD_SHARE))
-    return found, shared.element_rows({"azimuth": solved.azimuth,
-                                       "load": solved.element_load}, shape)
+    found = shared.completed(inputs, Found(
+        results, {"edge_loaded": family.edge_loaded(solved)},
+        [(shared.NO_EQUILIBRIUM, ~solved.converged),
+         (shared.crushing_code(inputs, CONTACT_TOO_WIDE), crushed)]), (inner, outer),
+        family.life(solved), iso281, speed, shape, "roller")
+    return found, {"element": shared.element_rows({"azimuth": solved.azimuth,
+                                                   "load": solved.element_load}, shape)}
 
 
-def _equilibrium(inputs: Mapping[str, Any], flat: Any, laminae: NDArray
-                 ) -> tuple[RollerEquilibrium, NDArray, NDArray]:
-    """The equilibrium of every design, the laminae's loads and deflections (N, Zmax,
-    n_s) padded with NaN to the largest count of ``laminae``: designs of one count of
-    laminae are solved together."""
-    size = laminae.size
-    one_way = traits(str(inputs["bearing_type"])).one_way
-    clearance = 0.0 if one_way else flat(shared.or_zero(inputs.get("operating_clearance")))
-    crown = inputs.get("crown_radius")
-    loads = shared.applied_loads(inputs, flat, size)
-    misalignment = inputs.get("misalignment")
-    tilt = None if misalignment is None else flat(misalignment)
-    geometry_inputs = [flat(inputs[key]) for key in (
-        "roller_count", "roller_diameter", "roller_length", "contact_angle")]
-    parts = []
-    for count in np.unique(laminae):
-        rows = laminae == count
-        geometry = roller_geometry(
-            *(value[rows] for value in geometry_inputs),
-            diametral_clearance=np.broadcast_to(clearance, (size,))[rows],
-            laminae=int(count), profile=str(inputs["roller_profile"]),
-            crown_radius=None if crown is None else flat(crown)[rows])
-        solved = solve_roller_equilibrium(geometry, loads[rows], fixed_tilt=None
-                                          if tilt is None else tilt[rows])
-        parts.append((rows, solved, lamina_deflections(geometry, solved.displacement,
-                                                       solved.azimuth)))
-    return _joined(parts, size, int(laminae.max()))
-
-
-def _joined(parts: list[tuple[NDArray, RollerEquilibrium, NDArray]], size: int,
-            laminae: int) -> tuple[RollerEquilibrium, NDArray, NDArray]:
-    """The groups' equilibria put back in the designs' order, the laminae padded."""
-    if len(parts) == 1:
-        _, solved, deflection = parts[0]
-        return solved, solved.lamina_load, deflection
-    zmax = max(solved.element_load.shape[1] for _, solved, _ in parts)
-
-    def placed(values: list[tuple[NDArray, NDArray]], tail: tuple[int, ...]) -> NDArray:
-        out = np.full((size, *tail), np.nan)
-        for rows, value in values:
-            index = tuple(slice(0, n) for n in value.shape[1:])
-            out[(rows, *index)] = value
-        return out
-
-    fields = {}
-    for index, name in enumerate(RollerEquilibrium._fields):
-        values = [(rows, solved[index]) for rows, solved, _ in parts]
-        tail = values[0][1].shape[1:]
-        if name in ("azimuth", "element_load"):
-            tail = (zmax,)
-        elif name == "lamina_load":
-            tail = (zmax, laminae)
-        fields[name] = placed(values, tail)
-    fields["converged"] = fields["converged"] > 0.5
-    deflection = placed([(rows, value) for rows, _, value in parts], (zmax, laminae))
-    solved = RollerEquilibrium(**fields)
-    return solved, solved.lamina_load, deflection
-
-
-def _edge_loaded(lamina_load: NDArray) -> NDArray:
-    """Where a roller's end lamina carries more than the mean of its laminae."""
+def _edge_loaded(lamina_load: NDArray, laminae: NDArray) -> NDArray:
+    """Where a roller's end lamina (the first, or the design's last of its ``laminae``)
+    carries more than the mean of its laminae."""
     loads = np.nan_to_num(lamina_load, nan=0.0)
-    counted = ~np.isnan(lamina_load)
-    laminae = np.maximum(counted.sum(axis=2), 1)
-    last = np.maximum(laminae - 1, 0)[..., None]
-    ends = np.maximum(loads[..., 0], np.take_along_axis(loads, last, axis=2)[..., 0])
-    mean = loads.sum(axis=2) / laminae
+    last = (laminae - 1)[:, None, None]
+    ends = np.maximum(loads[..., 0], np.take_along_axis(
+        loads, np.broadcast_to(last, (*loads.shape[:2], 1)), axis=2)[..., 0])
+    mean = loads.sum(axis=2) / laminae[:, None]
     return np.any((ends > mean) & (mean > 0), axis=1)

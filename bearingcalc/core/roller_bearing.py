@@ -17,7 +17,12 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core import ball_bearing, mounted_bearing, mounted_roller_bearing
+from bearingcalc.core import (
+    ball_bearing,
+    mounted_bearing,
+    mounted_pair,
+    mounted_roller_bearing,
+)
 from bearingcalc.core.arrangements import DOUBLE_ROW_PAIRS, PAIRS, pair_ratings_used
 from bearingcalc.core.bearing_life import operating_point, rating_life
 from bearingcalc.core.bearing_types import LoadRule, traits
@@ -241,5 +246,5 @@ def _given(value: ArrayLike | None) -> NDArray | None:
 
 
 SOLVER = Solver(evaluate, RESULTS, STATUS_REASONS, WARNINGS, GROUPS,
-                display=ball_bearing.DISPLAY, along={"element": mounted_bearing.ELEMENT_RESULTS},
+                display=ball_bearing.DISPLAY, along=mounted_pair.ALONG,
                 inputs="RollingBearingInputs")

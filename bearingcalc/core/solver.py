@@ -40,8 +40,8 @@ class AxisResults(NamedTuple):
     after: str = ""
     #: the flat keys row by row (each bearing's together), else column by column
     by_row: bool = True
-    #: a flat key's meaning from the column's: ``{meaning}`` and the row's ``{position}``
-    #: (1 up)
+    #: a flat key's meaning from the column's: ``{meaning}``, the row's ``{position}``
+    #: (1 up) and its name in words, ``{row}``
     meaning: str = "{meaning}"
     #: columns that may be +inf (a bin that does not turn lives for ever)
     unbounded: tuple[str, ...] = ()

@@ -15,14 +15,21 @@ from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import BRANCH_MARK, SpecModel, branch
 from bearingcalc.models.bearing_reads import ReadsBearing
 from bearingcalc.models.plain_numbers import LaminaCount
-from bearingcalc.models.quantities import Angle, Length, Moment, PositiveLength
+from bearingcalc.models.quantities import (
+    Angle,
+    Length,
+    Moment,
+    PositiveForce,
+    PositiveLength,
+)
 from bearingcalc.models.rules import rule, whole_spec_rule
 
 #: The types ISO/TS 16281's method solves here (their trait ``mounted``).
 MOUNTED_TYPES = names_where(mounted=True)
 #: The method's own solver inputs (a drive's bearings take none of them).
 MOUNTING_INPUTS = ("method", "operating_clearance", "tilting_moment", "misalignment",
-                   "roller_profile", "crown_radius", "laminae", "roller_included_angle")
+                   "roller_profile", "crown_radius", "laminae", "roller_included_angle",
+                   "setting_end_play", "setting_preload", "pair_spacing", "width")
 #: The internal geometry the method needs, by the family of the rolling elements.
 MOUNTED_GEOMETRY = {
     "ball": ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_conformity",
@@ -58,6 +65,16 @@ RollerProfile = Annotated[
     Discriminator(_profile_form)]
 
 
+class PairSetting(SpecModel):
+    """How a matched pair is set against itself: an end play or a preload."""
+
+    end_play: Length | None = Field(
+        None, description="the pair's axial clearance between first contacts (negative: "
+        "preload by interference), like 20 µm")
+    preload: PositiveForce | None = Field(
+        None, description="the axial load each bearing carries at rest, like 1.5 kN")
+
+
 class MountingFields(SpecModel):
     """How the bearing is solved, and what ISO/TS 16281's method takes besides the
     catalogue method's fields."""
@@ -82,6 +99,13 @@ class MountingFields(SpecModel):
     roller_included_angle: Angle | None = Field(
         None, description="iso-16281, tapered rollers: the roller's included angle θ, for "
         "the rib's load 2·Q·sin(θ/2)")
+    setting: PairSetting | None = Field(
+        None, description="iso-16281, a back-to-back or face-to-face pair: {end_play: …} "
+        "or {preload: …}")
+    pair_spacing: PositiveLength | None = Field(
+        None, description="iso-16281, a matched pair: the distance of the two bearings' "
+        "pressure centres (default: two bearings side by side, from width and the "
+        "geometry)")
 
     def mounting_inputs(self) -> dict[str, object]:
         """The method's solver inputs (SI); a roller bearing's own only where it has
@@ -89,6 +113,11 @@ class MountingFields(SpecModel):
         inputs: dict[str, object] = {
             "method": self.method, "operating_clearance": self.operating_clearance,
             "tilting_moment": self.tilting_moment, "misalignment": self.misalignment}
+        if self.method == "iso-16281" and self.arrangement != "single":
+            setting = self.setting
+            inputs.update(setting_end_play=setting.end_play if setting else None,
+                          setting_preload=setting.preload if setting else None,
+                          pair_spacing=self.pair_spacing, width=self.width)
         if self.method != "iso-16281" or self.type_traits.family != "roller":
             return inputs
         profile = self.roller_profile
@@ -117,7 +146,7 @@ class MethodRules(ReadsBearing):
         if self.method == "iso-16281":
             return None
         for name in ("operating_clearance", "tilting_moment", "misalignment",
-                     *ROLLER_MOUNTING_FIELDS):
+                     *ROLLER_MOUNTING_FIELDS, "setting", "pair_spacing"):
             if getattr(self, name) is not None:
                 return SpecFieldError(name, "is for the bearing as mounted: give method: "
                                       f"iso-16281, or leave {name} out")
@@ -175,10 +204,6 @@ class MethodRules(ReadsBearing):
             return SpecFieldError("type", f"method: iso-16281 solves "
                                   f"{' and '.join(MOUNTED_TYPES)} bearings here; a "
                                   f"{self.type} bearing takes method: iso-281", at="method")
-        if self.arrangement != "single":
-            return SpecFieldError("arrangement", "method: iso-16281 solves a single bearing "
-                                  "here: give arrangement: single, or method: iso-281 for the "
-                                  "pair", at="method")
         return None
 
     @whole_spec_rule

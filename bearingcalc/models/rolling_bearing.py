@@ -21,6 +21,7 @@ from bearingcalc.models.bearing_operating_rules import (
     LubricationRules,
     OperatingRules,
 )
+from bearingcalc.models.bearing_pair_rules import PairRules
 from bearingcalc.models.bearing_rating_rules import AngleRules, RatingRules
 from bearingcalc.models.duty import (
     OIL_BIN_FIELDS,
@@ -70,7 +71,6 @@ Arrangement = Literal["single", "back-to-back", "face-to-face", "tandem"]
 
 Reliability = reliability(*RELIABILITY_RANGE, "ISO 281's range for a1")
 RollerRows = whole_choice(1, 2)
-
 
 UnitFraction = ranged_number(0.0, 1.0, "a fraction", "0.5")
 
@@ -193,7 +193,7 @@ BearingBin = bin_model("BearingBin", {
     "outer_speed": (AngularSpeed, "outer ring, fixed frame"), **OIL_BIN_FIELDS})
 
 
-class RollingBearingSpec(MethodRules, BinOilRules, DutyCycleRules, ElementFitRules,
+class RollingBearingSpec(MethodRules, PairRules, BinOilRules, DutyCycleRules, ElementFitRules,
                          LubricationRules, ArrangementRules, LoadFactorRules, LoadRules,
                          OperatingRules, AngleRules, RatingRules, GeometryRules, MountingFields,
                          BearingFields, Spec):
