@@ -7,6 +7,7 @@ bearings' (written here from its definition), and each bad setting one line."""
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -218,3 +219,40 @@ def test_a_pair_missing_its_spacing_or_method_is_one_line(cli, spec_file, change
     assert run.code == 2
     lines = run.err.strip().splitlines()
     assert len(lines) == 1 and f": {field}: " in lines[0], run.err
+
+
+def test_a_sweep_over_the_end_play_equals_each_points_own_solve(cli, spec_file, tmp_path):
+    """Every number of the pair is swept in one vectorised call; the life has its optimum
+    at a slight preload, as the classic curve of life against end play has it."""
+    text = TAPERED_PAIR.format(arrangement="back-to-back", setting="setting: {end_play: 0 µm}",
+                               axial="2 kN", extra="")
+    run = cli("sweep", spec_file(text), "--vary", "setting.end_play=-40um:40um:5",
+              "--format", "json")
+    assert run.code == 0, run.err
+    rows = [json.loads(line) for line in run.out.splitlines() if line.strip()]
+    lives = []
+    for row in rows:
+        end_play = row["inputs"]["setting.end_play"]
+        own = solve_json(cli, spec_file(text.replace(
+            "end_play: 0 µm", f"end_play: {end_play * 1e6} µm"), name="own.yaml"))[0]
+        for key in ("reference_rating_life", "bearing_2_axial_load", "stiffness_axial"):
+            assert row["results"][key] == pytest.approx(own["results"][key], rel=1e-9)
+        lives.append(row["results"]["reference_rating_life"])
+    best = int(np.argmax(lives))
+    assert rows[best]["inputs"]["setting.end_play"] < 0.0
+
+
+def test_a_toleranced_pair_runs_every_study_and_its_report(cli, spec_file, tmp_path):
+    text = BALL_PAIR.format(arrangement="back-to-back",
+                            setting="setting: {end_play: -10 µm ± 5 µm}", axial="1.5 kN",
+                            extra="pair_spacing: 60 mm ± 0.5 mm")
+    path = spec_file(text)
+    run = cli("tolerance", path, "--samples", "500", "--format", "json")
+    assert run.code in (0, 1), run.err
+    record = json.loads(run.out)
+    assert "Traceback" not in run.err and record
+    report = tmp_path / "pair.html"
+    run = cli("report", path, "--output", report)
+    assert run.code == 0, run.err
+    html = report.read_text(encoding="utf-8")
+    assert "bearing_2_axial_load" in html and "bearing 1: rolling elements" in html

@@ -59,20 +59,13 @@ STATUS_REASONS = {
        for field, (code, what) in CONTACT_TOO_LARGE.items()},
 }
 
-#: The numeric inputs the method reads, any of which a study or sweep may vary.
-_NUMBERS = ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_conformity",
-            "outer_groove_conformity", "radial_load", "axial_load", "contact_angle",
-            "elastic_modulus", "poisson_ratio", "inner_speed", "outer_speed",
-            "operating_clearance", "tilting_moment", "misalignment", "reliability",
-            "contamination_factor", "min_rating_life", "max_contact_pressure")
-
 
 def mounted_results(inputs: Mapping[str, Any], c: NDArray, iso281: Mapping[str, Any],
                     speed: NDArray) -> tuple[Found, dict[str, Along]]:
     """The method's results from the bearing's inputs, C and ISO 281's results of the
     same bearing (its L10 and life factors), at the rings' relative speed [rad/s]: of a
     single bearing, or of a matched pair (:mod:`bearingcalc.core.mounted_pair`)."""
-    shape, flat = shared.designs(inputs, _NUMBERS, c, speed)
+    shape, flat = shared.designs(inputs, c, speed)
     geometry, family = _family(inputs, flat, c)
     if inputs.get("arrangement") in PAIRS:
         found, along = pair_results(inputs, family, flat, shape, c, iso281, speed)

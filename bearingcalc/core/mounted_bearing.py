@@ -115,12 +115,14 @@ def or_zero(value: Any) -> Any:
     return 0.0 if value is None else value
 
 
-def designs(inputs: Mapping[str, Any], numbers: tuple[str, ...], *others: ArrayLike
+def designs(inputs: Mapping[str, Any], *others: ArrayLike
             ) -> tuple[tuple[int, ...], Callable[[Any], NDArray]]:
-    """The designs' shape (the broadcast of the given ``numbers`` of ``inputs`` and of
-    ``others``) and a function that lays a value out flat over them."""
-    used = [inputs[key] for key in numbers if inputs.get(key) is not None]
-    shape = np.broadcast_shapes(*(np.shape(np.asarray(v, dtype=float)) for v in used),
+    """The designs' shape (the broadcast of every number of ``inputs`` and of
+    ``others``: any of them a study or sweep may vary) and a function that lays a value
+    out flat over them."""
+    used = [value for value in inputs.values()
+            if value is not None and not isinstance(value, str)]
+    shape = np.broadcast_shapes(*(np.shape(value) for value in used),
                                 *(np.shape(v) for v in others))
 
     def flat(value: Any) -> NDArray:

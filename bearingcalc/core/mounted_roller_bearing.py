@@ -64,20 +64,13 @@ STATUS_REASONS = {
         "roller's length, Lwe/2")),
 }
 
-#: The numeric inputs the method reads, any of which a study or sweep may vary.
-_NUMBERS = ("roller_count", "roller_diameter", "roller_length", "pitch_diameter",
-            "radial_load", "axial_load", "contact_angle", "elastic_modulus", "poisson_ratio",
-            "inner_speed", "outer_speed", "operating_clearance", "tilting_moment",
-            "misalignment", "reliability", "contamination_factor", "min_rating_life",
-            "max_contact_pressure", "laminae", "crown_radius", "roller_included_angle")
-
 
 def mounted_results(inputs: Mapping[str, Any], c: NDArray, iso281: Mapping[str, Any],
                     speed: NDArray) -> tuple[Found, dict[str, Along]]:
     """The method's results from the bearing's inputs, C and ISO 281's results of the
     same bearing (its L10 and life factors), at the rings' relative speed [rad/s]: of a
     single bearing, or of a matched pair (:mod:`bearingcalc.core.mounted_pair`)."""
-    shape, flat = shared.designs(inputs, _NUMBERS, c, speed)
+    shape, flat = shared.designs(inputs, c, speed)
     family = _family(inputs, flat, c)
     if inputs.get("arrangement") in PAIRS:
         found, along = pair_results(inputs, family, flat, shape, c, iso281, speed)
