@@ -116,25 +116,14 @@ def lamina_deflections(geometry: RollerGeometry, displacement: NDArray, azimuth:
                        ) -> NDArray:
     """Every lamina's signed deflection δ_jk [m], (N, Zmax, n_s), at the displacement
     (N, 5): its compression where positive, its play where negative. ``azimuth``
-    (N, Zmax) as the equilibrium gives it, NaN past Z."""
-    grad = _gradients(geometry, np.cos(azimuth), np.sin(azimuth))
-    return np.einsum("nzkd,nd->nzk", grad, displacement) - geometry.gap[:, None, :]
-
-
-def _gradients(geometry: RollerGeometry, cos: NDArray, sin: NDArray) -> NDArray:
-    r"""∂δ_jk/∂q, (N, Z, n_s, 5): δ_jk = δx·sinα + (δy cosψ + δz sinψ)·cosα
-    − ℓ_k(θz cosψ + θy sinψ) − gap_k (ISO/TS 16281 eqs. 38 to 41 in five degrees)."""
-    n, z = cos.shape
-    ns = geometry.positions.shape[1]
-    alpha = geometry.contact_angle[:, None, None]
-    ell = geometry.positions[:, None, :]
-    grad = np.empty((n, z, ns, 5))
-    grad[..., 0] = np.sin(alpha)
-    grad[..., 1] = np.cos(alpha) * cos[..., None]
-    grad[..., 2] = np.cos(alpha) * sin[..., None]
-    grad[..., 3] = -ell * sin[..., None]
-    grad[..., 4] = -ell * cos[..., None]
-    return grad
+    (N, Zmax) as the equilibrium gives it, NaN past Z (and so its deflections)."""
+    q = displacement
+    alpha = geometry.contact_angle[:, None]
+    cos, sin = np.cos(azimuth), np.sin(azimuth)
+    approach = np.sin(alpha) * q[:, 0:1] + np.cos(alpha) * (cos * q[:, 1:2] + sin * q[:, 2:3])
+    tilt = cos * q[:, 4:5] + sin * q[:, 3:4]
+    return (approach[..., None] - geometry.positions[:, None, :] * tilt[..., None]
+            - geometry.gap[:, None, :])
 
 
 class _State(NamedTuple):
@@ -144,17 +133,78 @@ class _State(NamedTuple):
     lamina: NDArray
 
 
-def _state(geometry: RollerGeometry, grad: NDArray, mask: NDArray, q: NDArray) -> _State:
-    """The laminae at q: Σ (c/n_s)·9/19·δ₊^(19/9), its gradient and Hessian."""
-    deflection = np.einsum("nzkd,nd->nzk", grad, q) - geometry.gap[:, None, :]
-    deflection = np.where(mask[..., None], np.maximum(deflection, 0.0), 0.0)
+class _Rollers(NamedTuple):
+    """Every roller of a set of designs, (N, Zmax): cos ψ and sin ψ (0 for padding), an
+    offset that keeps a padded roller off its raceways (0, or +inf), and the laminae's
+    positions ℓ_k and ℓ_k² (N, n_s)."""
+
+    cos: NDArray
+    sin: NDArray
+    padding: NDArray
+    positions: NDArray
+    squares: NDArray
+
+
+def _rollers(geometry: RollerGeometry, azimuth: NDArray, mask: NDArray) -> _Rollers:
+    cos = np.where(mask, np.cos(azimuth), 0.0)
+    sin = np.where(mask, np.sin(azimuth), 0.0)
+    return _Rollers(cos, sin, np.where(mask, 0.0, np.inf), geometry.positions,
+                    geometry.positions ** 2)
+
+
+def _state(geometry: RollerGeometry, rollers: _Rollers, q: NDArray) -> _State:
+    r"""The laminae at q: the energy Σ (c/n_s)·9/19·δ₊^(19/9), its gradient Σ q_jk·g_jk
+    and Hessian Σ (10/9)(c/n_s)·δ₊^(1/9)·g_jk g_jkᵀ, with
+
+    .. math:: δ_{jk} = a_j - ℓ_k b_j - \text{gap}_k, \quad a_j = δ_x\sinα
+              + (δ_y\cosψ_j + δ_z\sinψ_j)\cosα, \quad b_j = θ_z\cosψ_j + θ_y\sinψ_j
+
+    and g_jk = (sinα, cosα·cosψ_j, cosα·sinψ_j, −ℓ_k sinψ_j, −ℓ_k cosψ_j): every sum over
+    a roller's laminae is formed once (its load, moment and the slopes' moments of order
+    0, 1 and 2), so each entry is a sum over the rollers alone.
+    """
+    sa = np.sin(geometry.contact_angle)[:, None]
+    ca = np.cos(geometry.contact_angle)[:, None]
+    cos, sin = rollers.cos, rollers.sin
+    approach = sa * q[:, 0:1] + ca * (cos * q[:, 1:2] + sin * q[:, 2:3]) - rollers.padding
+    tilt = cos * q[:, 4:5] + sin * q[:, 3:4]
+    # each temporary of (designs, rollers, laminae) made once and updated in place
+    deflection = rollers.positions[:, None, :] * tilt[..., None]
+    np.subtract(approach[..., None], deflection, out=deflection)
+    deflection -= geometry.gap[:, None, :]
+    np.maximum(deflection, 0.0, out=deflection)
     c = geometry.lamina_constant[:, None, None]
-    ninth = deflection ** (1.0 / 9.0)
-    lamina = c * deflection * ninth
-    slope = LAMINA_EXPONENT * c * ninth
-    force = np.einsum("nzk,nzkd->nd", lamina, grad)
-    hessian = np.einsum("nzk,nzki,nzkj->nij", slope, grad, grad)
-    return _State(np.sum(lamina * deflection, axis=(1, 2)) * 9.0 / 19.0, force, hessian,
+    slope = np.cbrt(deflection)
+    np.cbrt(slope, out=slope)
+    lamina = deflection * slope
+    lamina *= c
+    slope *= LAMINA_EXPONENT * c
+    load = lamina.sum(axis=2)
+    moment = np.einsum("nzk,nk->nz", lamina, rollers.positions)
+    slopes = (slope.sum(axis=2), np.einsum("nzk,nk->nz", slope, rollers.positions),
+              np.einsum("nzk,nk->nz", slope, rollers.squares))
+    trig = {"1": np.ones_like(cos), "c": cos, "s": sin, "cc": cos * cos, "cs": cos * sin,
+            "ss": sin * sin}
+
+    def total(weight: NDArray, key: str) -> NDArray:
+        return np.einsum("nz,nz->n", weight, trig[key])
+
+    force = np.stack([sa[:, 0] * load.sum(axis=1), ca[:, 0] * total(load, "c"),
+                      ca[:, 0] * total(load, "s"), -total(moment, "s"),
+                      -total(moment, "c")], axis=1)
+    s0, s1, s2 = slopes
+    sa, ca = sa[:, 0], ca[:, 0]
+    entries = {(0, 0): sa * sa * total(s0, "1"), (0, 1): sa * ca * total(s0, "c"),
+               (0, 2): sa * ca * total(s0, "s"), (0, 3): -sa * total(s1, "s"),
+               (0, 4): -sa * total(s1, "c"), (1, 1): ca * ca * total(s0, "cc"),
+               (1, 2): ca * ca * total(s0, "cs"), (1, 3): -ca * total(s1, "cs"),
+               (1, 4): -ca * total(s1, "cc"), (2, 2): ca * ca * total(s0, "ss"),
+               (2, 3): -ca * total(s1, "ss"), (2, 4): -ca * total(s1, "cs"),
+               (3, 3): total(s2, "ss"), (3, 4): total(s2, "cs"), (4, 4): total(s2, "cc")}
+    hessian = np.empty((q.shape[0], 5, 5))
+    for (i, j), value in entries.items():
+        hessian[:, i, j] = hessian[:, j, i] = value
+    return _State(np.einsum("nzk,nzk->n", lamina, deflection) * 9.0 / 19.0, force, hessian,
                   lamina)
 
 
@@ -188,8 +238,7 @@ def _solve_chunk(geometry: RollerGeometry, applied: NDArray, tilt: NDArray, fixe
     j = np.arange(int(count.max()))
     mask = j[None, :] < count[:, None]
     psi = 2.0 * np.pi * j[None, :] / count[:, None]
-    cos, sin = np.cos(psi), np.sin(psi)
-    grad = _gradients(geometry, cos, sin)
+    rollers = _rollers(geometry, psi, mask)
     out_of_plane = bool(np.any(applied[:, [2, 3]] != 0.0))
     free = [0, 1, 2, 3, 4] if out_of_plane else [0, 1, 4]
     if fixed:
@@ -199,15 +248,15 @@ def _solve_chunk(geometry: RollerGeometry, applied: NDArray, tilt: NDArray, fixe
     q[:, 4] = tilt
     q[:, 1] = np.sign(applied[:, 1]) * geometry.gap.min(axis=1) / np.maximum(
         np.cos(geometry.contact_angle), 1e-3)
-    q, residual = _newton(geometry, grad, mask, q, applied, free, cylindrical)
-    state = _state(geometry, grad, mask, q)
+    q, residual = _newton(geometry, rollers, q, applied, free, cylindrical)
+    state = _state(geometry, rollers, q)
     blank = np.where(mask, 1.0, np.nan)
     return (q, state.force, (psi % (2 * np.pi)) * blank, state.lamina.sum(axis=2) * blank,
             np.where(mask[..., None], state.lamina, np.nan), state.hessian, residual,
             residual <= RESIDUAL_TOLERANCE)
 
 
-def _newton(geometry: RollerGeometry, grad: NDArray, mask: NDArray, q: NDArray,
+def _newton(geometry: RollerGeometry, rollers: _Rollers, q: NDArray,
             applied: NDArray, free: list[int], cylindrical: NDArray
             ) -> tuple[NDArray, NDArray]:
     """The laminae's equilibrium by :func:`~bearingcalc.core.iso16281_newton.damped_newton`
@@ -221,9 +270,9 @@ def _newton(geometry: RollerGeometry, grad: NDArray, mask: NDArray, q: NDArray,
     moving[:, free] = True
     moving[:, 0] &= ~cylindrical
     widest = np.max(np.where(np.isfinite(geometry.gap), geometry.gap, 0.0), axis=1)
-    typical = geometry.roller_count * geometry.lamina_constant * grad.shape[2] * (
+    typical = geometry.roller_count * geometry.lamina_constant * geometry.gap.shape[1] * (
         np.maximum(widest, 1e-6 * lever)) ** (1.0 / 9.0)
-    return damped_newton(lambda trial: _state(geometry, grad, mask, trial), q, applied,
+    return damped_newton(lambda trial: _state(geometry, rollers, trial), q, applied,
                          moving, scale, typical)
 
 
@@ -246,8 +295,8 @@ def roller_contacts_at(geometry: RollerGeometry, displacement: NDArray) -> Rolle
     j = np.arange(int(count.max()))
     mask = j[None, :] < count[:, None]
     psi = 2.0 * np.pi * j[None, :] / count[:, None]
-    grad = _gradients(geometry, np.cos(psi), np.sin(psi))
-    state = _state(geometry, grad, mask, np.asarray(displacement, dtype=float))
+    state = _state(geometry, _rollers(geometry, psi, mask),
+                   np.asarray(displacement, dtype=float))
     blank = np.where(mask, 1.0, np.nan)
     return RollerContacts(state.energy, state.force, state.hessian,
                           state.lamina.sum(axis=2) * blank,
