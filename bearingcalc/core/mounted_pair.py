@@ -37,7 +37,9 @@ MEMBER_RESULTS = AxisResults({
     "radial_load": ("N", "the radial load its contacts carry"),
     "max_element_load": ("N", "its largest rolling-element load"),
     "reference_rating_life": ("s", "its L10r"),
-}, after="pair_spacing_used", meaning="{row}: {meaning}")
+}, after="pair_spacing_used", meaning="{row}: {meaning}",
+    # a bearing that the loads lift off its elements lives for ever
+    unbounded=("reference_rating_life",))
 #: What a bearing as mounted reports along each axis: its elements, a pair's bearings.
 ALONG = {"element": shared.ELEMENT_RESULTS, "member": MEMBER_RESULTS}
 #: The status code of a pair whose spacing cannot be found.

@@ -1,0 +1,147 @@
+"""Bearings as mounted in their classic limits, each against a computation that shares
+nothing with the solver: Sjövall's load integrals by ``scipy.integrate.quad``, Harris's
+closed form of a ball bearing's axial law (``tests/iso16281_shaft_reference.py``), and
+ISO 281's load-case table of an adjusted pair.
+
+- A straight-roller bearing with many rollers at zero clearance: the reference life
+  L10r·(Fr/C)⁴ tends to the value the continuous load distribution gives (ISO/TS
+  16281's roller life scales with (C/Fr)⁴ at a fixed load zone, where ISO 281 rounds
+  the exponent to 10/3).
+- An adjusted tapered pair at zero end play under a radial load: each bearing's load
+  zone is 180° and its axial load Fa/(Fr·tanα) tends to J_a/J_r(ε = ½) = 1.2580 of line
+  contact; ISO 281's table takes 0.5/Y = 1.25 (Y = 0.4·cot α). With ISO's logarithmic
+  profile the rollers' laminae come into contact one by one, which stiffens the
+  roller's load law toward point contact's (1.2158), so the ratio falls to about 1.213.
+- A preloaded ball pair: the external thrust at which the second bearing lifts off is
+  Harris's axial load at twice the preload deflection.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy import integrate
+
+from bearingcalc.core.iso16281_life import roller_reference_life
+from bearingcalc.core.iso16281_rollers import roller_geometry, solve_roller_equilibrium
+from tests import iso16281_reference as reference
+from tests import iso16281_shaft_reference as shaft
+from tests.conftest import solve_json
+
+
+def _mean(power: float) -> float:
+    """(1/2π)∫ cos^p ψ dψ over the half-filled load zone |ψ| < π/2."""
+    value, _ = integrate.quad(lambda psi: math.cos(psi) ** power, -math.pi / 2, math.pi / 2,
+                              epsabs=1e-14, epsrel=1e-13)
+    return value / (2.0 * math.pi)
+
+
+def _continuous_roller_life_constant(gamma: float) -> float:
+    """L10r·(Fr/C)⁴ [10⁶ rev] of a radial roller bearing with a continuous ring of
+    straight rollers at zero clearance, inner ring turning: Q(ψ) = Q_max·cos^(10/9)ψ,
+    Fr = Z·Q_max·J_r, the equivalent loads the 4th (rotating) and 4.5th (stationary)
+    power means, the raceway ratings of ISO/TS 16281 8.3 with λν = 0.83."""
+    j_r = _mean(19 / 9)
+    x = 1.038 * ((1 - gamma) / (1 + gamma)) ** (143 / 108)
+    inner = 0.83 * 0.378 * _mean(40 / 9) ** 0.25 / j_r * (1 + x ** 4.5) ** (-2 / 9)
+    outer = 0.83 * 0.364 * _mean(5.0) ** (1 / 4.5) / j_r * (1 + x ** -4.5) ** (-2 / 9)
+    return (inner ** 4.5 + outer ** 4.5) ** (-8 / 9)
+
+
+@pytest.mark.parametrize(("count", "tolerance"), [(100, 2e-3), (400, 2e-4)])
+def test_many_straight_rollers_tend_to_the_continuous_life(count, tolerance):
+    dwe, dpw, fr, c = 2e-3, 0.4, 5e4, 3e5
+    geometry = roller_geometry(count, dwe, 3e-3, 0.0, laminae=20, profile="none")
+    solved = solve_roller_equilibrium(geometry, np.array([[0.0, fr, 0.0, 0.0, 0.0]]))
+    life = roller_reference_life(solved.lamina_load, np.array([count]), dwe, dpw, 0.0,
+                                 np.array([c]))
+    measured = life.revolutions[0] / 1e6 * (fr / c) ** 4
+    expected = _continuous_roller_life_constant(dwe / dpw)
+    assert measured == pytest.approx(expected, rel=tolerance)
+
+
+TAPERED_PAIR = """kind: rolling-bearing
+type: tapered-roller
+arrangement: back-to-back
+method: iso-16281
+dynamic_load_rating: 54 kN
+roller_count: {count}
+roller_diameter: 7.5 mm
+roller_length: 14 mm
+pitch_diameter: {pitch}
+contact_angle: 14 deg
+roller_profile: {profile}
+pair_spacing: 100 mm
+setting: {{end_play: 0 µm}}
+radial_load: 12 kN
+speed: 1000 rpm
+"""
+
+
+def _ratio(cli, spec_file, count, pitch, profile):
+    [record] = solve_json(cli, spec_file(TAPERED_PAIR.format(count=count, pitch=pitch,
+                                                              profile=profile)))
+    results = record["results"]
+    assert results["load_zone_angle"] == pytest.approx(math.pi, rel=1e-9)
+    return results["bearing_1_axial_load"] / (results["bearing_1_radial_load"]
+                                             * math.tan(math.radians(14)))
+
+
+def test_zero_end_play_gives_half_load_zones_and_the_tables_axial_load(cli, spec_file):
+    """J_a/J_r at ε = ½ of line contact by quad; 40 rollers within 0.15 % of it, 160
+    within 0.01 %; ISO 281's 0.5/Y = 1.25 within 0.7 %."""
+    continuous = _mean(10 / 9) / _mean(19 / 9)
+    assert continuous == pytest.approx(1.2580, abs=1e-4)
+    assert _ratio(cli, spec_file, 40, "100 mm", "none") == pytest.approx(continuous,
+                                                                         rel=1.5e-3)
+    assert _ratio(cli, spec_file, 160, "400 mm", "none") == pytest.approx(continuous,
+                                                                          rel=1e-4)
+    assert continuous == pytest.approx(1.25, rel=7e-3)
+
+
+def test_the_iso_profile_stiffens_the_rollers_load_law(cli, spec_file):
+    """Profiled, a roller's contact lengthens as it is loaded, so its load grows faster
+    than δ^(10/9): the ratio falls below line contact's J_a/J_r, to about point
+    contact's (exponent 3/2), 3 % below ISO 281's table."""
+    point, line = _mean(1.5) / _mean(2.5), _mean(10 / 9) / _mean(19 / 9)
+    profiled = _ratio(cli, spec_file, 160, "400 mm", "iso")
+    assert profiled < 0.98 * line
+    assert profiled == pytest.approx(point, rel=1e-2)
+
+
+BALL_PAIR = """kind: rolling-bearing
+type: angular-contact
+arrangement: back-to-back
+method: iso-16281
+contact_angle: 40 deg
+dynamic_load_rating: 24 kN
+ball_count: 12
+ball_diameter: 11.112 mm
+pitch_diameter: 52.5 mm
+inner_groove_conformity: 0.52
+outer_groove_conformity: 0.53
+pair_spacing: 80 mm
+setting: {{end_play: -20 µm}}
+radial_load: 0 N
+axial_load: {axial} N
+speed: 1000 rpm
+"""
+
+
+def test_the_second_bearing_lifts_off_at_harris_axial_load(cli, spec_file):
+    """End play −20 µm: each bearing 10 µm past first contact at rest. The shaft moves
+    10 µm under the thrust that unloads bearing 2, so bearing 1 is then 20 µm past
+    first contact: the lift-off thrust is Harris's F_a(δa = 20 µm)."""
+    bearing = reference.BallBearing(12, 11.112e-3, 52.5e-3, 0.52, 0.53,
+                                    free_contact_angle=math.radians(40),
+                                    elastic_modulus=207.5e9)
+    lift_off = shaft.lift_off_thrust(bearing, -20e-6)
+    assert lift_off == pytest.approx(shaft.ball_axial_load(bearing, 20e-6), rel=1e-12)
+    below, above = (solve_json(cli, spec_file(BALL_PAIR.format(axial=lift_off * factor)))[0]
+                    ["results"] for factor in (0.999, 1.001))
+    assert below["bearing_2_axial_load"] > 0.0
+    assert below["bearing_2_axial_load"] < 2e-3 * lift_off
+    assert above["bearing_2_axial_load"] == 0.0
+    assert above["bearing_1_axial_load"] == pytest.approx(lift_off * 1.001, rel=1e-9)
