@@ -118,6 +118,7 @@ class MountingFields(SpecModel):
             inputs.update(setting_end_play=setting.end_play if setting else None,
                           setting_preload=setting.preload if setting else None,
                           pair_spacing=self.pair_spacing, width=self.width)
+        inputs.update(self.estimated_inputs())
         if self.method != "iso-16281" or self.type_traits.family != "roller":
             return inputs
         profile = self.roller_profile
@@ -216,7 +217,8 @@ class MethodRules(ReadsBearing):
 
     @rule
     def _mounted_geometry(self) -> SpecFieldError | None:
-        if self.method != "iso-16281" or not self.type_traits.mounted:
+        if (self.method != "iso-16281" or not self.type_traits.mounted
+                or self.estimates_geometry):  # the estimate's own rule says if none fits
             return None
         family = self.type_traits.family
         if any(getattr(self, name) is not None for other, names in MOUNTED_GEOMETRY.items()
@@ -232,7 +234,9 @@ class MethodRules(ReadsBearing):
             return None  # one conformity of two: the contacts' own rule names it
         if missing:
             return SpecFieldError(missing[0], "missing: method: iso-16281 needs the internal "
-                                  f"geometry ({', '.join(needed)})", at="method")
+                                  f"geometry ({', '.join(needed)}), or bore_diameter, "
+                                  "outside_diameter and the ratings to estimate it",
+                                  at="method")
         return None
 
     @rule

@@ -13,6 +13,7 @@ from pydantic import BeforeValidator, Field, StringConstraints, WithJsonSchema
 from bearingcalc.core.bearing_types import SPEC_NAMES, BearingTraits, traits, type_name
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
+from bearingcalc.models.bearing_estimate import GeometryEstimate
 from bearingcalc.models.bearing_geometry_rules import GeometryRules
 from bearingcalc.models.bearing_load_rules import LoadFactorRules, LoadRules
 from bearingcalc.models.bearing_method_rules import MethodRules, MountingFields
@@ -193,10 +194,10 @@ BearingBin = bin_model("BearingBin", {
     "outer_speed": (AngularSpeed, "outer ring, fixed frame"), **OIL_BIN_FIELDS})
 
 
-class RollingBearingSpec(MethodRules, PairRules, BinOilRules, DutyCycleRules, ElementFitRules,
-                         LubricationRules, ArrangementRules, LoadFactorRules, LoadRules,
-                         OperatingRules, AngleRules, RatingRules, GeometryRules, MountingFields,
-                         BearingFields, Spec):
+class RollingBearingSpec(MethodRules, PairRules, GeometryEstimate, BinOilRules,
+                         DutyCycleRules, ElementFitRules, LubricationRules, ArrangementRules,
+                         LoadFactorRules, LoadRules, OperatingRules, AngleRules, RatingRules,
+                         GeometryRules, MountingFields, BearingFields, Spec):
     """A rolling bearing sized by ISO 281 (life) and ISO 76 (static safety), at one
     operating point or over a duty cycle."""
 
@@ -308,8 +309,7 @@ class RollingBearingSpec(MethodRules, PairRules, BinOilRules, DutyCycleRules, El
         static = self.static_left_out()
         if static is not None:
             notes.append(static)
-        notes += self.roller_notes()
-        notes += self.element_notes()
+        notes += self.roller_notes() + self.element_notes() + self.estimate_notes()
         envelope = self._envelope_mm()
         if envelope is not None:
             middle = (envelope[0] + envelope[1]) / 2
