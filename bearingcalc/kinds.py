@@ -67,7 +67,9 @@ class Kind:
     model_path: str
     solver_path: str
     margins: tuple[str, ...]   # result keys that must be >= 0 for the design to pass
-    governing: tuple[str, ...]  # results a study shows first
+    #: results a study shows first; a tuple among them: the first of it a solve has
+    #: (a bearing as mounted shows its reference life before ISO 281's)
+    governing: tuple[str | tuple[str, ...], ...]
     #: result key -> the solver input that limits it symmetrically: |result| <= limit
     limits: dict[str, str] = field(default_factory=dict)
     #: results that may legitimately be +inf (an edge that no design reaches)
@@ -79,6 +81,15 @@ class Kind:
     #: the standards and methods the kind applies, with their sections, as its report
     #: cites them
     standards: tuple[str, ...] = ()
+
+    def governing_of(self, present: Collection[str]) -> list[str]:
+        """The governing results among those ``present``, each alternative resolved to
+        the first of it present."""
+        found = []
+        for entry in self.governing:
+            choices = (entry,) if isinstance(entry, str) else entry
+            found += [key for key in choices if key in present][:1]
+        return found
 
     @property
     def model(self) -> type[Spec]:
@@ -306,7 +317,8 @@ KINDS: dict[str, Kind] = {
                "bearingcalc.core.rolling_bearing",
                margins=("life_margin", "static_safety_margin", "contact_pressure_margin",
                         "spin_to_roll_margin"),
-               governing=("life_margin", "modified_rating_life", "static_safety_factor"),
+               governing=("life_margin", ("modified_reference_rating_life",
+                                          "modified_rating_life"), "static_safety_factor"),
                judged={"life_margin": LIFE, "static_safety_margin": STATIC,
                        "contact_pressure_margin": CONTACT,
                        "spin_to_roll_margin": SPIN_TO_ROLL},

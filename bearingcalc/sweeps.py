@@ -230,7 +230,7 @@ def shown_results(solved: Sweep, asked: list[str] | None) -> list[str]:
     ones and every other limit the sweep crosses (a drive's gear safety where its lives
     hold), so that each edge of the range within limits is a curve that is shown; one the
     sweep has not is an :class:`OptionError` of ``--result``."""
-    keys = asked or [key for key in solved.kind.governing if key in solved.results]
+    keys = asked or solved.kind.governing_of(solved.results)
     if not asked:
         for margin in solved.kind.margins:
             values = solved.results.get(margin)

@@ -189,7 +189,7 @@ def test_a_preload_gives_each_bearing_that_axial_load_at_rest(cli, spec_file):
     ("tandem", "setting: {end_play: 10 µm}", "", "setting"),
     ("back-to-back", "", "", "setting"),
     ("back-to-back", "setting: {end_play: 10 µm, preload: 1 kN}", "", "setting.preload"),
-    ("back-to-back", "setting: {}", "", "setting"),
+    ("back-to-back", "setting: {}", "", "setting.end_play"),
     ("back-to-back", "setting: {preload: -1 kN}", "", "setting.preload"),
     ("back-to-back", "setting: {preload: 0 N}", "", "setting.preload"),
     ("back-to-back", "setting: {end_play: 10 mN}", "", "setting.end_play"),

@@ -110,6 +110,13 @@ class BearingTraits(NamedTuple):
     #: ISO/TS 16281's load distribution solves a single bearing of the type
     #: (``method: iso-16281``).
     mounted: bool = False
+    #: The share of the pitch circle its elements fill, Z·Dw/(π·Dpw), least and most,
+    #: for estimating its internal geometry (a deep-groove bearing assembled by the
+    #: eccentric method fills about 0.55 to 0.6, an angular-contact one 0.65 to 0.8, a
+    #: cylindrical roller bearing about 0.8).
+    fill: tuple[float, float] | None = None
+    #: A roller's effective length in diameters: least, most and usual.
+    roller_proportion: tuple[float, float, float] | None = None
 
     @property
     def fields(self) -> frozenset[str]:
@@ -139,12 +146,12 @@ TABLE: tuple[BearingTraits, ...] = (
                   one_way=False, angle_rule=AngleRule.DEFAULT, contact_angle=0.0,
                   example_angle=None, rating_formula=RatingFormula.RADIAL_BALL,
                   static_formula=StaticFormula.RADIAL_BALL,
-                  load_rule=LoadRule.GROOVE_TABLE, mounted=True, **_BALL),
+                  load_rule=LoadRule.GROOVE_TABLE, mounted=True, fill=(0.45, 0.7), **_BALL),
     BearingTraits("angular-contact", ("angular-contact",), thrust=False, pairable=True,
                   one_way=True, angle_rule=AngleRule.GIVEN, contact_angle=None,
                   example_angle="40 deg", rating_formula=RatingFormula.RADIAL_BALL,
                   static_formula=StaticFormula.RADIAL_BALL,
-                  load_rule=LoadRule.ANGLE_TABLE, mounted=True, **_BALL),
+                  load_rule=LoadRule.ANGLE_TABLE, mounted=True, fill=(0.55, 0.9), **_BALL),
     BearingTraits("self-aligning-ball", ("self-aligning-ball",), thrust=False,
                   pairable=False, one_way=False, angle_rule=AngleRule.DEFAULT,
                   contact_angle=0.0, example_angle=None,
@@ -163,20 +170,21 @@ TABLE: tuple[BearingTraits, ...] = (
                   rating_formula=RatingFormula.RADIAL_ROLLER,
                   static_formula=StaticFormula.RADIAL_ROLLER,
                   load_rule=LoadRule.RADIAL_ONLY, ribless_forms=(("NU", "inner"), ("N", "outer")),
-                  mounted=True, **_ROLLER),
+                  mounted=True, fill=(0.6, 0.95), roller_proportion=(0.6, 2.5, 1.0), **_ROLLER),
     BearingTraits("needle-roller", ("needle-roller",), thrust=False, rows=(1, 2),
                   pairable=False, one_way=False, angle_rule=AngleRule.FIXED,
                   contact_angle=0.0, example_angle=None, material_factor=1.1,
                   rating_formula=RatingFormula.RADIAL_ROLLER,
                   static_formula=StaticFormula.RADIAL_ROLLER,
-                  load_rule=LoadRule.RADIAL_ONLY, drawn_cup=True, mounted=True, **_ROLLER),
+                  load_rule=LoadRule.RADIAL_ONLY, drawn_cup=True, mounted=True,
+                  fill=(0.6, 0.97), roller_proportion=(2.5, 10.0, 4.0), **_ROLLER),
     BearingTraits("tapered-roller", ("tapered-roller",), thrust=False, rows=(1, 2),
                   pairable=True, one_way=True, angle_rule=AngleRule.GIVEN,
                   contact_angle=None, example_angle="15 deg", material_factor=1.1,
                   rating_formula=RatingFormula.RADIAL_ROLLER,
                   static_formula=StaticFormula.RADIAL_ROLLER,
                   load_rule=LoadRule.RADIAL_ROLLER, inclined=True, cupped=True, mounted=True,
-                  **_ROLLER),
+                  fill=(0.6, 0.95), roller_proportion=(0.8, 3.0, 1.6), **_ROLLER),
     BearingTraits("spherical-roller", ("spherical-roller",), thrust=False, rows=(1, 2),
                   pairable=False, one_way=False, angle_rule=AngleRule.GIVEN,
                   contact_angle=None, example_angle="15 deg", material_factor=1.15,

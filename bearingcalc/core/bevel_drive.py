@@ -19,11 +19,13 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core import bevel_gears, rolling_bearing
+from bearingcalc.core import bevel_gears, mounted_drive, rolling_bearing
 from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.common import broadcast_all, first_failure
 from bearingcalc.core.drive_bearings import (
     BEARING_RESULTS,
+    LIVES,
+    MOUNTED_LIVES,
     OWN_RESULTS,
     MountedBearing,
     assemble,
@@ -41,6 +43,8 @@ from bearingcalc.core.duty_cycle_gears import (
     gear_pair_cycle,
     normalised,
 )
+from bearingcalc.core.mounted_bearing import METHOD
+from bearingcalc.core.mounted_drive import evaluate_mounted
 from bearingcalc.core.shaft_statics import (  # noqa: F401  (the drive's statics, re-exported)
     ARRANGEMENTS,
     mean_pitch_point,
@@ -85,6 +89,7 @@ RESULTS: dict[str, tuple[str, str]] = {
                                          "roller bearing)"),
     "life_margin": ("1", "system_modified_rating_life / min_rating_life − 1"),
     "static_safety_margin": ("1", "the smallest s0 − min_static_safety"),
+    **mounted_drive.RESULTS,
 }
 
 #: The table: the pair under its headings, then a block per shaft with a row per bearing.
@@ -92,9 +97,13 @@ GROUPS: dict[str, tuple[str, ...]] = {
     **bevel_gears.GROUPS,
     "system": ("gear_speed", "system_basic_rating_life", "system_modified_rating_life",
                "life_margin", "static_safety_margin"),
+    "as mounted (ISO/TS 16281)": tuple(mounted_drive.RESULTS),
 }
 #: The bearings' results, a row per bearing under its shaft's heading.
-MEMBER_RESULTS = AxisResults(BEARING_RESULTS, after="gear_speed")
+MEMBER_RESULTS = AxisResults(BEARING_RESULTS, after="gear_speed",
+                             # an unloaded bearing of a drive as mounted lives for ever
+                             unbounded=("reference_rating_life",
+                                        "modified_reference_rating_life"))
 #: A bin's results of a drive's duty cycle.
 DRIVE_BINS = AxisResults(DRIVE_COLUMNS, by_row=False, meaning=BIN_MEANING,
                          unbounded=("system_modified_rating_life",))
@@ -126,6 +135,7 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
               f"{BEARINGS_PER_SHAFT} bearings: on more the shaft is statically "
               "indeterminate, and how its bearings share the load depends on their "
               "stiffness") for shaft, code in BEARING_COUNT.items()},
+    **mounted_drive.STATUS_REASONS,
 }
 #: The bearings, by their names in the spec, each solved as a ``kind: rolling-bearing``.
 #: Their loads and speeds come from the drive: a bearing refused for its load or speed
@@ -166,9 +176,16 @@ def evaluate(inputs: BevelDriveInputs, wanted: Collection[str] | None = None) ->
             mounted += found
             warnings.update(one_way)
             checks.append((COINCIDING_BEARINGS[shaft], coinciding))
+    lives, as_mounted = LIVES, {}
+    if inputs.get("method") == METHOD:
+        mounted, as_mounted, own_checks = evaluate_mounted(
+            inputs, pair, {"pinion": input_speed, "gear": gear_speed})
+        checks += own_checks
+        lives = MOUNTED_LIVES
     results, along, weakest = assemble(pair.results, gear_speed, mounted,
                                        inputs.get("min_rating_life"),
-                                       inputs["min_static_safety"])
+                                       inputs["min_static_safety"], lives)
+    results.update(as_mounted)
     results = {key: results[key] for key in RESULTS if key in results}
     warnings.update(weakest)
     shape = np.broadcast_shapes(np.shape(pair.status), *(np.shape(v) for v in results.values()),

@@ -32,6 +32,10 @@ BEARING_RESULTS: dict[str, tuple[str, str]] = {
     "basic_rating_life": ("s", "L10 in time"),
     "modified_rating_life": ("s", "Lnm in time"),
     "static_safety_factor": ("1", "s0 = C0/P0"),
+    # as mounted (method: iso-16281), from each bearing's contacts
+    "max_element_load": ("N", "its largest rolling-element load (ISO/TS 16281)"),
+    "reference_rating_life": ("s", "L10r (ISO/TS 16281)"),
+    "modified_reference_rating_life": ("s", "a1·aISO·L10r (ISO/TS 16281)"),
 }
 
 
@@ -52,6 +56,10 @@ class MountedBearing(NamedTuple):
         return traits(self.inputs["bearing_type"]).family == "roller"
 
 
+#: Which of each bearing's lives the system's basic and modified life combine: ISO 281's,
+#: or, as mounted, ISO/TS 16281's reference lives.
+LIVES = ("basic_rating_life", "modified_rating_life")
+MOUNTED_LIVES = ("reference_rating_life", "modified_reference_rating_life")
 #: The bearings' results taken from each one's own solution as a rolling bearing.
 OWN_RESULTS = ("equivalent_dynamic_load", "basic_rating_life", "modified_rating_life",
                "static_safety_factor")
@@ -59,7 +67,7 @@ OWN_RESULTS = ("equivalent_dynamic_load", "basic_rating_life", "modified_rating_
 
 def assemble(pair: Mapping[str, NDArray], gear_speed: NDArray,
              mounted: list[MountedBearing], min_rating_life: ArrayLike | None,
-             min_static_safety: ArrayLike
+             min_static_safety: ArrayLike, lives: tuple[str, str] = LIVES
              ) -> tuple[dict[str, NDArray], Along, dict[str, NDArray]]:
     """The drive's results from the pair's and the bearings' (of one operating point,
     or of a whole duty cycle): the results of one value per design (the pair's first),
@@ -71,9 +79,10 @@ def assemble(pair: Mapping[str, NDArray], gear_speed: NDArray,
     out: dict[str, NDArray] = {**pair, "gear_speed": gear_speed}
     slope = ROLLER_WEIBULL_SLOPE if any(bearing.roller for bearing in mounted) \
         else WEIBULL_SLOPE
-    modified = [bearing.solved.results["modified_rating_life"] for bearing in mounted]
+    basic, modified_key = lives
+    modified = [bearing.solved.results[modified_key] for bearing in mounted]
     out["system_basic_rating_life"] = system_life(
-        [bearing.solved.results["basic_rating_life"] for bearing in mounted], slope)
+        [bearing.solved.results[basic] for bearing in mounted], slope)
     out["system_modified_rating_life"] = system_life(modified, slope)
     if min_rating_life is not None:
         out["life_margin"] = life_margin(out["system_modified_rating_life"], min_rating_life)

@@ -16,6 +16,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
+from bearingcalc.core.bearing_types import traits
 from bearingcalc.core.iso76 import static_load_rating
 from bearingcalc.core.iso281 import dynamic_load_rating
 from bearingcalc.core.roller_ratings import roller_dynamic_load_rating
@@ -28,16 +29,6 @@ ROLLER_SIZES = np.arange(2, 121) * 0.5e-3
 #: The share of the rings' section (D − d) an element's diameter takes, at least and
 #: at most: the published bearings of tests/data span 0.26 to 0.32.
 SECTION_SHARE = (0.2, 0.4)
-#: The share of the pitch circle the elements fill, Z·Dw/(π·Dpw), by type: a
-#: deep-groove bearing assembled by the eccentric method fills about 0.55 to 0.6, an
-#: angular-contact one 0.65 to 0.8, a cylindrical roller bearing about 0.8.
-FILL = {"deep-groove": (0.45, 0.7), "angular-contact": (0.55, 0.9),
-        "cylindrical-roller": (0.6, 0.95), "needle-roller": (0.6, 0.97),
-        "tapered-roller": (0.6, 0.95)}
-#: A roller's effective length in diameters, at least and at most, and the proportion
-#: bearings are usually built to (a cylindrical roller about square, a needle long).
-LENGTH_SHARE = {"cylindrical-roller": (0.6, 2.5, 1.0), "tapered-roller": (0.8, 3.0, 1.6),
-                "needle-roller": (2.5, 10.0, 4.0)}
 #: How far ISO 76's C0 of an estimate may lie from the catalogue's (C0 is set by the
 #: contact pressure, which makers rate as ISO 76 does).
 TOLERANCE = 0.03
@@ -77,13 +68,14 @@ def estimate_ball_geometry(bore: float, outside: float, rating: float,
 
     (ISO 281:2007 6.1; ISO 76:2006 6.1) closest to the catalogue's C0 and C (C0 first:
     a maker's C may lie above ISO 281's), among nominal ball sizes of 0.2 to 0.4 of the
-    section (D − d) and counts that fill the type's share of the pitch circle.
+    section (D − d) and counts that fill the type's share of the pitch circle (its
+    trait ``fill``).
     [m, N, rad] Returns None where no candidate fits. Source: the estimate of KISSsoft
     and MESYS (balls of standard sizes, the ratings reproduced).
     """
     pitch = (bore + outside) / 2.0
     sizes = _in_section(BALL_SIZES, outside - bore)
-    low, high = FILL[bearing_type]
+    low, high = traits(bearing_type).fill
     counts = np.arange(3, 200, dtype=float)
     dw, z = (grid.ravel() for grid in np.meshgrid(sizes, counts))
     fill = z * dw / (np.pi * pitch)
@@ -115,11 +107,11 @@ def estimate_roller_geometry(bore: float, outside: float, width: float | None,
     pitch = (bore + outside) / 2.0
     cos = np.cos(contact_angle)
     sizes = _in_section(ROLLER_SIZES, outside - bore)
-    low, high = FILL[bearing_type]
+    low, high = traits(bearing_type).fill
     dwe, z = (grid.ravel() for grid in np.meshgrid(sizes, np.arange(3, 300, dtype=float)))
     gamma = dwe * cos / pitch
     lwe = static_rating / (ROLLER_C0_FACTOR * (1.0 - gamma) * z * dwe * cos)
-    shortest, longest, usual = LENGTH_SHARE[bearing_type]
+    shortest, longest, usual = traits(bearing_type).roller_proportion
     fill = z * dwe / (np.pi * pitch)
     keep = ((fill >= low) & (fill <= high) & (lwe >= shortest * dwe)
             & (lwe <= longest * dwe) & (gamma < 1.0))

@@ -43,8 +43,8 @@ class ShaftBearing(NamedTuple):
     contacts: Callable[[NDArray], Any]
     #: x_i, its reference point on the shaft's axis [m]
     position: NDArray
-    #: +1: carries thrust when the shaft moves +x; −1: mirrored
-    orientation: float
+    #: +1: carries thrust when the shaft moves +x; −1: mirrored (or (N,) of them)
+    orientation: ArrayLike
     #: o_i, added to its own δx [m]
     offset: NDArray
 
@@ -59,16 +59,17 @@ class ShaftEquilibrium(NamedTuple):
     converged: NDArray         # (N,) bool
 
 
-def transfer(position: ArrayLike, orientation: float) -> NDArray:
-    """S·T of a bearing at x_i (N,) with its orientation: (N, 5, 5), q_i − o_i·e_x =
-    (S·T)·Q."""
+def transfer(position: ArrayLike, orientation: ArrayLike) -> NDArray:
+    """S·T of a bearing at x_i (N,) with its orientation (±1, or (N,) of them): (N, 5, 5),
+    q_i − o_i·e_x = (S·T)·Q."""
     x = np.atleast_1d(np.asarray(position, dtype=float))
     matrix = np.zeros((x.size, 5, 5))
     matrix[:, range(5), range(5)] = 1.0
     matrix[:, 1, 4] = -x
     matrix[:, 2, 3] = -x
-    mirror = np.array([orientation, 1.0, 1.0, orientation, orientation])
-    return matrix * mirror[None, :, None]
+    s = np.broadcast_to(np.asarray(orientation, dtype=float), x.shape)
+    mirror = np.stack([s, np.ones_like(s), np.ones_like(s), s, s], axis=1)
+    return matrix * mirror[:, :, None]
 
 
 class _Shaft(NamedTuple):
@@ -175,22 +176,45 @@ def _newton(bearings: Sequence[ShaftBearing], matrices: Sequence[NDArray], q: ND
 def axial_deflection_for_load(contacts: Callable[[NDArray], Any], load: ArrayLike,
                               upper: ArrayLike = 1e-3) -> NDArray:
     r"""The axial displacement δa [m] of one bearing's inner ring (from its own datum)
-    at which its contacts carry the axial ``load`` [N] alone, q = (δa, 0, 0, 0, 0), by
-    bisection on the monotonic F_x(δa) between 0 and ``upper``:
+    at which its contacts carry the axial ``load`` [N] alone, q = (δa, 0, 0, 0, 0):
 
     .. math:: F_x(δ_a) = \text{load}
 
-    A pair set to a preload P at rest has each bearing at δa(P), so its end play is
-    −2·δa(P). Source: ISO/TS 16281:2008, 6 (the single bearing's equilibrium).
+    F_x grows with δa, so Newton's steps on it (its slope the contacts' K_xx) are kept
+    inside a bracket that bisection narrows where a step would leave it; the bracket
+    starts at 0 and ``upper`` and widens until it holds the load. A pair set to a
+    preload P at rest has each bearing at δa(P). Source: ISO/TS 16281:2008, 6 (the
+    single bearing's equilibrium).
     """
     target = np.atleast_1d(np.asarray(load, dtype=float))
     low = np.zeros_like(target)
     high = np.broadcast_to(np.asarray(upper, dtype=float), target.shape).copy()
-    for _ in range(80):  # 1 mm / 2^80 is far below a femtometre
-        middle = 0.5 * (low + high)
+
+    def axial(deflection: NDArray) -> tuple[NDArray, NDArray]:
         q = np.zeros((target.size, 5))
-        q[:, 0] = middle
-        below = contacts(q).force[:, 0] < target
-        low = np.where(below, middle, low)
-        high = np.where(below, high, middle)
-    return 0.5 * (low + high)
+        q[:, 0] = deflection
+        state = contacts(q)
+        return state.force[:, 0], state.stiffness[:, 0, 0]
+
+    # widen the bracket until it holds the load (a preload that crushes the contacts
+    # is then refused by their check, not cut short here)
+    for _ in range(20):
+        short = axial(high)[0] < target
+        if not short.any():
+            break
+        low = np.where(short, high, low)
+        high = np.where(short, 2.0 * high, high)
+    deflection = 0.5 * (low + high)
+    for _ in range(100):
+        force, slope = axial(deflection)
+        error = force - target
+        if np.all(np.abs(error) <= 1e-13 * target) or np.all(high - low <= 1e-17):
+            break
+        low = np.where(error < 0.0, deflection, low)
+        high = np.where(error > 0.0, deflection, high)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = deflection - error / slope
+        inside = (slope > 0.0) & (step > low) & (step < high)
+        deflection = np.where(error == 0.0, deflection,
+                              np.where(inside, step, 0.5 * (low + high)))
+    return deflection

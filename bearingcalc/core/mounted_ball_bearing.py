@@ -48,7 +48,11 @@ WARNINGS = {
 MINIMUM_LOAD_SHARE = 0.01
 #: by the input that loads the bearing beyond Hertz: (code, in words)
 CONTACT_TOO_LARGE = {"radial_load": (26, "load"), "tilting_moment": (27, "tilting moment"),
-                     "misalignment": (28, "misalignment")}
+                     "misalignment": (28, "misalignment"),
+                     "operating_clearance": (34, "preload (negative clearance)"),
+                     "setting.preload": (36, "preload"),
+                     "setting.end_play": (37, "interference (negative end play)"),
+                     "axial_load": (38, "axial load")}
 STATUS_REASONS = {
     **shared.STATUS_REASONS,
     **mounted_pair.STATUS_REASONS,
@@ -110,6 +114,11 @@ def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray
     return geometry, PairFamily(
         "ball", lambda q: ball_contacts_at(geometry, q), offset, offset, np.zeros_like(z),
         dpw / 2.0, life, pressures, deflection, 3.0, CONTACT_TOO_LARGE)
+
+
+def bearing_family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> PairFamily:
+    """What a ball bearing's inputs give a shaft as mounted (a pair's, a drive's)."""
+    return _family(inputs, flat, c)[1]
 
 
 def _single(inputs: Mapping[str, Any], geometry: BallGeometry, family: PairFamily,

@@ -103,10 +103,21 @@ def results_with(own: Mapping[str, tuple[str, str]], after: str,
 def crushing_code(inputs: Mapping[str, Any], codes: Mapping[str, tuple[int, str]]) -> int:
     """The status code of a contact beyond Hertz's theory, of ``codes`` by the input that
     causes it: what tilts the ring if anything does (an imposed misalignment, a moment),
-    else the loads."""
+    else a pair's preload or interference, else a negative clearance, else the larger of
+    the loads."""
     for field in ("misalignment", "tilting_moment"):
         if inputs.get(field) is not None:
             return codes[field][0]
+    if inputs.get("setting_preload") is not None:
+        return codes["setting.preload"][0]
+    for field, key in (("setting.end_play", "setting_end_play"),
+                       ("operating_clearance", "operating_clearance")):
+        value = inputs.get(key)
+        if value is not None and np.any(np.asarray(value) < 0.0):
+            return codes[field][0]
+    if np.any(np.abs(np.asarray(inputs["axial_load"], dtype=float))
+              > np.abs(np.asarray(inputs["radial_load"], dtype=float))):
+        return codes["axial_load"][0]
     return codes["radial_load"][0]
 
 

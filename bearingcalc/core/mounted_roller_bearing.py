@@ -44,11 +44,18 @@ WARNINGS = {
     "below_minimum_load_roller": "the equivalent load is below 2 % of C, the makers' minimum "
                                  "load of a roller bearing: the rollers may skid",
 }
+#: The largest drop of a crowned roller at its ends, a share of Dwe: crowns drop some
+#: micrometres to tens.
+CROWN_DROP_SHARE = 0.02
 #: The makers' minimum load of a roller bearing, a share of C.
 MINIMUM_LOAD_SHARE = 0.02
 #: by the input that loads the bearing beyond Hertz: (code, in words)
 CONTACT_TOO_WIDE = {"radial_load": (29, "load"), "tilting_moment": (30, "tilting moment"),
-                    "misalignment": (31, "misalignment")}
+                    "misalignment": (31, "misalignment"),
+                    "operating_clearance": (35, "preload (negative clearance)"),
+                    "setting.preload": (39, "preload"),
+                    "setting.end_play": (40, "interference (negative end play)"),
+                    "axial_load": (41, "axial load")}
 #: The status code of a crown whose arc is shorter than the roller.
 CROWN_TOO_SMALL = 32
 STATUS_REASONS = {
@@ -60,8 +67,8 @@ STATUS_REASONS = {
         f"crushed; the {what} is too large for it"))
        for field, (code, what) in CONTACT_TOO_WIDE.items()},
     CROWN_TOO_SMALL: ("roller_profile.crown_radius", DerivedTest(
-        "the crown's arc does not span the roller: its radius must be larger than half the "
-        "roller's length, Lwe/2")),
+        "the crown drops the roller's ends by 2 % of its diameter or more (or its arc does "
+        "not span the roller): a crown's radius is of the order of a metre")),
 }
 
 
@@ -79,7 +86,8 @@ def mounted_results(inputs: Mapping[str, Any], c: NDArray, iso281: Mapping[str, 
     crown = inputs.get("crown_radius")
     lwe = flat(inputs["roller_length"])
     found.checks.insert(0, (CROWN_TOO_SMALL, np.zeros(shape, bool) if crown is None
-                            else ~(flat(crown) > lwe / 2.0).reshape(shape)))
+                            else ~_crown_fits(flat(crown), lwe,
+                                              flat(inputs["roller_diameter"])).reshape(shape)))
     found.flags.update(below_minimum_load_roller=shared.below_minimum_load(
         iso281, c, MINIMUM_LOAD_SHARE))
     return found, along
@@ -98,6 +106,11 @@ def _geometry(inputs: Mapping[str, Any], flat: Any) -> tuple[RollerGeometry, NDA
         laminae=laminae, profile=str(inputs["roller_profile"]),
         crown_radius=None if crown is None else flat(crown))
     return geometry, laminae
+
+
+def bearing_family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> PairFamily:
+    """What a roller bearing's inputs give a shaft as mounted (a pair's, a drive's)."""
+    return _family(inputs, flat, c)
 
 
 def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> PairFamily:
@@ -121,7 +134,7 @@ def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> PairFamily:
     def deflection(q: NDArray, contacts: Any) -> NDArray:
         return np.max(lamina_deflections(geometry, q, contacts.azimuth), axis=2)
 
-    with np.errstate(invalid="ignore"):
+    with np.errstate(invalid="ignore", divide="ignore"):
         first_contact = np.where(alpha > 0.0, np.min(geometry.gap, axis=1) / np.sin(alpha),
                                  0.0)
     return PairFamily("roller", lambda q: roller_contacts_at(geometry, q),
@@ -157,6 +170,15 @@ def _single(inputs: Mapping[str, Any], family: PairFamily, flat: Any,
                                                    "load": solved.element_load}, shape)}
 
 
+def _crown_fits(radius: NDArray, length: NDArray, diameter: NDArray) -> NDArray:
+    """Where a crown of ``radius`` spans the roller and drops its ends by less than
+    2 % of its diameter."""
+    half = length / 2.0
+    with np.errstate(invalid="ignore"):
+        drop = radius - np.sqrt(radius * radius - half * half)
+    return (radius > half) & (drop < CROWN_DROP_SHARE * diameter)
+
+
 def _edge_loaded(lamina_load: NDArray, laminae: NDArray) -> NDArray:
     """Where a roller's end lamina (the first, or the design's last of its ``laminae``)
     carries more than the mean of its laminae."""
@@ -165,4 +187,5 @@ def _edge_loaded(lamina_load: NDArray, laminae: NDArray) -> NDArray:
     ends = np.maximum(loads[..., 0], np.take_along_axis(
         loads, np.broadcast_to(last, (*loads.shape[:2], 1)), axis=2)[..., 0])
     mean = loads.sum(axis=2) / laminae[:, None]
-    return np.any((ends > mean) & (mean > 0), axis=1)
+    # a straight, untilted roller loads its laminae alike, to the rounding of their sum
+    return np.any((ends > mean * (1.0 + 1e-9)) & (mean > 0), axis=1)

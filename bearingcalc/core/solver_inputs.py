@@ -196,7 +196,18 @@ class _MountedBearingInputs(TypedDict):
     induced_axial_factor: MaybeNumbers   # the catalogue's induced-force factor [1]
 
 
-class MountedBearingInputs(_MountedBearingInputs, _BearingOwnInputs, _RollerInputs):
+class _ElementMountingInputs(TypedDict, total=False):
+    """A drive's bearing as mounted (absent under the catalogue method)."""
+
+    operating_clearance: MaybeNumbers    # the mounted diametral clearance [m]
+    roller_profile: str                  # "iso", "none" or "crown" (rollers)
+    crown_radius: MaybeNumbers           # [m]
+    laminae: MaybeNumbers                # [1]
+    roller_included_angle: MaybeNumbers  # [rad]
+
+
+class MountedBearingInputs(_MountedBearingInputs, _BearingOwnInputs, _RollerInputs,
+                           _ElementMountingInputs):
     """One of a shaft's bearings: where it sits, whether it locates, and its rolling
     bearing inputs without the loads and speeds the drive finds."""
 
@@ -209,6 +220,9 @@ class _BevelDriveInputs(_BevelPairInputs):
     shafts: dict[str, list[MountedBearingInputs]]
     #: "pinion" and "gear" -> "locating-floating", "back-to-back" or "face-to-face"
     arrangements: dict[str, str]
+    method: str                          # "iso-281" or "iso-16281"
+    #: "pinion" and "gear" -> an adjusted shaft's {"end_play", "preload"} [m, N] or None
+    settings: dict[str, dict[str, MaybeNumbers] | None]
 
 
 class BevelDriveInputs(_BevelDriveInputs, CycleInputs):

@@ -6,11 +6,12 @@ consistent), mixed into :class:`bearingcalc.models.rolling_bearing.RollingBearin
 from __future__ import annotations
 
 import math
-from typing import Annotated, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 from pydantic import Discriminator, Field
 
 from bearingcalc.core.bearing_types import names_where
+from bearingcalc.core.mounted_roller_bearing import CROWN_DROP_SHARE
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import BRANCH_MARK, SpecModel, branch
 from bearingcalc.models.bearing_reads import ReadsBearing
@@ -41,6 +42,8 @@ ELEMENT_FIELDS = {"ball": ("ball_count", "ball_diameter"),
                   "roller": ("roller_count", "roller_diameter", "roller_length")}
 #: The method's fields of roller bearings alone.
 ROLLER_MOUNTING_FIELDS = ("roller_profile", "laminae", "roller_included_angle")
+#: The largest operating clearance (or preload) of a roller bearing, a share of Dwe.
+ROLLER_CLEARANCE_SHARE = 0.1
 #: ISO/TS 16281's count of laminae where the spec gives none.
 DEFAULT_LAMINAE = 30
 
@@ -74,22 +77,23 @@ class PairSetting(SpecModel):
     preload: PositiveForce | None = Field(
         None, description="the axial load each bearing carries at rest, like 1.5 kN")
 
+    @rule
+    def _end_play_or_preload(self) -> SpecFieldError | None:
+        if self.end_play is not None and self.preload is not None:
+            return SpecFieldError("preload", "give the end_play or the preload the pair is "
+                                  "set to, not both")
+        if self.end_play is None and self.preload is None:
+            return SpecFieldError("end_play", "missing: give end_play (like 20 µm, "
+                                  "negative: preload) or preload (like 1.5 kN)")
+        return None
 
-class MountingFields(SpecModel):
-    """How the bearing is solved, and what ISO/TS 16281's method takes besides the
-    catalogue method's fields."""
 
-    method: Literal["iso-281", "iso-16281"] = Field(
-        "iso-281", description="iso-281: the catalogue method; iso-16281: the load on "
-        "every ball from the rings' displacements (clearance, tilt, stiffness)")
+class ElementMountingFields(SpecModel):
+    """What a bearing as mounted takes of its own, alone or on a drive's shaft."""
+
     operating_clearance: Length | None = Field(
         None, description="iso-16281: the mounted bearing's diametral radial clearance at "
         "its temperature (negative: preload)")
-    tilting_moment: Moment | None = Field(
-        None, description="iso-16281: the moment on the inner ring in the plane of the "
-        "radial load (the ring finds its own tilt)")
-    misalignment: Angle | None = Field(
-        None, description="iso-16281: the inner ring's tilt relative to the outer, imposed")
     roller_profile: RollerProfile | None = Field(
         None, description="iso-16281, rollers: the rollers' profile: iso (ISO/TS 16281's "
         "logarithmic profile, the default), none (straight) or {crown_radius: …}")
@@ -99,6 +103,27 @@ class MountingFields(SpecModel):
     roller_included_angle: Angle | None = Field(
         None, description="iso-16281, tapered rollers: the roller's included angle θ, for "
         "the rib's load 2·Q·sin(θ/2)")
+
+
+#: The fields of a bearing as mounted, alone or on a drive's shaft.
+ELEMENT_MOUNTING_FIELDS = tuple(ElementMountingFields.model_fields)
+#: Their solver inputs, which a drive's bearing passes on as mounted.
+ELEMENT_MOUNTING_INPUTS = ("operating_clearance", "roller_profile", "crown_radius",
+                           "laminae", "roller_included_angle")
+
+
+class MountingFields(ElementMountingFields):
+    """How the bearing is solved, and what ISO/TS 16281's method takes besides the
+    catalogue method's fields."""
+
+    method: Literal["iso-281", "iso-16281"] = Field(
+        "iso-281", description="iso-281: the catalogue method; iso-16281: the load on "
+        "every ball from the rings' displacements (clearance, tilt, stiffness)")
+    tilting_moment: Moment | None = Field(
+        None, description="iso-16281: the moment on the inner ring in the plane of the "
+        "radial load (the ring finds its own tilt)")
+    misalignment: Angle | None = Field(
+        None, description="iso-16281: the inner ring's tilt relative to the outer, imposed")
     setting: PairSetting | None = Field(
         None, description="iso-16281, a back-to-back or face-to-face pair: {end_play: …} "
         "or {preload: …}")
@@ -129,7 +154,75 @@ class MountingFields(SpecModel):
                 "roller_included_angle": self.roller_included_angle}
 
 
-class MethodRules(ReadsBearing):
+class RollerMountingRules(ReadsBearing):
+    """What a roller bearing as mounted takes of its own."""
+
+    if TYPE_CHECKING:  # the method's fields these rules read (MountingFields)
+        method: str
+        roller_profile: Any
+        laminae: int | None
+        roller_included_angle: float | None
+
+    @rule
+    def _roller_mounting_fields(self) -> SpecFieldError | None:
+        if self.method != "iso-16281":
+            return None
+        for name in ROLLER_MOUNTING_FIELDS:
+            if getattr(self, name) is not None and not self.rollers:
+                return SpecFieldError(name, f"is for roller bearings: a {self.type} bearing "
+                                      f"has balls; leave {name} out")
+        if self.roller_included_angle is not None and not self.type_traits.one_way:
+            return SpecFieldError("roller_included_angle", "is a tapered roller's: the rib "
+                                  f"of a {self.type} bearing carries no load from it; leave "
+                                  "roller_included_angle out")
+        profile = self.roller_profile
+        if isinstance(profile, CrownProfile) and None not in (self.roller_length,
+                                                              self.roller_diameter):
+            half, radius = self.roller_length / 2.0, profile.crown_radius
+            if not radius > half:
+                return SpecFieldError("roller_profile.crown_radius", f"must be larger than "
+                                      f"half the roller's length, Lwe/2 = {half * 1e3:g} mm: "
+                                      "a smaller arc does not span the roller (a crown's "
+                                      "radius is of the order of a metre)")
+            drop = radius - math.sqrt(radius * radius - half * half)
+            if not drop < CROWN_DROP_SHARE * self.roller_diameter:
+                return SpecFieldError("roller_profile.crown_radius", f"drops the roller's "
+                                      f"ends by {drop * 1e6:.4g} µm, more than "
+                                      f"{CROWN_DROP_SHARE:.0%} of its diameter: a crown's "
+                                      "radius is of the order of a metre (its ends drop some "
+                                      "micrometres to tens)")
+        # the cup's angle is its own rule's to refuse: compared only where it is valid
+        cup = self.angle if self.contact_angle is not None and self.angle > 0.0 else math.pi / 2
+        if self.roller_included_angle is not None and not (
+                0.0 < self.roller_included_angle < cup):
+            return SpecFieldError("roller_included_angle", f"must be above 0 deg and below "
+                                  f"the cup's contact_angle, {math.degrees(cup):.4g} "
+                                  "deg: the cone's raceway lies at their difference (a "
+                                  "tapered roller's included angle is a few degrees)")
+        return None
+
+    @rule
+    def _mounted_single_row(self) -> SpecFieldError | None:
+        if self.method == "iso-16281" and self.rollers and self.rows != 1:
+            return SpecFieldError("rows", "method: iso-16281 solves single-row roller "
+                                  "bearings here: give rows: 1, or method: iso-281 for the "
+                                  "double row", at="method")
+        return None
+
+    @rule
+    def _mounted_axial_load(self) -> SpecFieldError | None:
+        # a ribless ring's own rule says why an NU or N bearing takes no axial load
+        if (self.method == "iso-16281" and self.type_traits.mounted and self.rollers
+                and not self.type_traits.one_way and self.axial_load != 0.0
+                and self.ribless_ring() is None):
+            return SpecFieldError("axial_load", f"a {self.type} bearing's rollers carry no "
+                                  "axial load as mounted (its ribs do, which ISO/TS 16281 "
+                                  "leaves out): let another bearing take the thrust, or give "
+                                  "method: iso-281")
+        return None
+
+
+class MethodRules(RollerMountingRules):
     """What each method takes."""
 
     def _groove_distance(self) -> float | None:
@@ -151,50 +244,6 @@ class MethodRules(ReadsBearing):
             if getattr(self, name) is not None:
                 return SpecFieldError(name, "is for the bearing as mounted: give method: "
                                       f"iso-16281, or leave {name} out")
-        return None
-
-    @rule
-    def _roller_mounting_fields(self) -> SpecFieldError | None:
-        if self.method != "iso-16281":
-            return None
-        for name in ROLLER_MOUNTING_FIELDS:
-            if getattr(self, name) is not None and not self.rollers:
-                return SpecFieldError(name, f"is for roller bearings: a {self.type} bearing "
-                                      f"has balls; leave {name} out")
-        if self.roller_included_angle is not None and not self.type_traits.one_way:
-            return SpecFieldError("roller_included_angle", "is a tapered roller's: the rib "
-                                  f"of a {self.type} bearing carries no load from it; leave "
-                                  "roller_included_angle out")
-        profile = self.roller_profile
-        if (isinstance(profile, CrownProfile) and self.roller_length is not None
-                and not profile.crown_radius > self.roller_length / 2.0):
-            return SpecFieldError("roller_profile.crown_radius", f"must be larger than half "
-                                  f"the roller's length, Lwe/2 = {self.roller_length * 5e2:g} "
-                                  "mm: a smaller arc does not span the roller (a crown's "
-                                  "radius is of the order of a metre)")
-        if self.roller_included_angle is not None and not (
-                0.0 < self.roller_included_angle < math.pi / 2):
-            return SpecFieldError("roller_included_angle", "must be above 0 deg and below 90 "
-                                  "deg (a tapered roller's included angle is a few degrees)")
-        return None
-
-    @rule
-    def _mounted_single_row(self) -> SpecFieldError | None:
-        if self.method == "iso-16281" and self.rollers and self.rows != 1:
-            return SpecFieldError("rows", "method: iso-16281 solves single-row roller "
-                                  "bearings here: give rows: 1, or method: iso-281 for the "
-                                  "double row", at="method")
-        return None
-
-    @rule
-    def _mounted_axial_load(self) -> SpecFieldError | None:
-        # a ribless ring's own rule says why an NU or N bearing takes no axial load
-        if (self.method == "iso-16281" and self.type_traits.mounted and self.rollers
-                and not self.type_traits.one_way and self.axial_load != 0.0
-                and self.ribless_ring() is None):
-            return SpecFieldError("axial_load", f"a {self.type} bearing's rollers carry no "
-                                  "axial load as mounted (its ribs do, which ISO/TS 16281 "
-                                  "leaves out): give axial_load: 0 N, or method: iso-281")
         return None
 
     @rule
@@ -261,6 +310,14 @@ class MethodRules(ReadsBearing):
                                   f"the grooves' distance (fi + fo − 1)·Dw = "
                                   f"{distance * 1e6:.4g} µm: beyond it the balls would "
                                   "not sit in their grooves")
+        largest = None if self.roller_diameter is None else ROLLER_CLEARANCE_SHARE * (
+            self.roller_diameter)
+        if takes_clearance and largest is not None and not abs(
+                self.operating_clearance) < largest:
+            return SpecFieldError("operating_clearance", f"must be smaller in size than a "
+                                  f"tenth of the roller's diameter, {largest * 1e6:.4g} µm: "
+                                  "a mounted bearing's clearance or preload is some "
+                                  "micrometres to a few tens")
         return None
 
     @rule

@@ -40,19 +40,6 @@ class PairRules(ReadsBearing):
         return None
 
     @rule
-    def _end_play_or_preload(self) -> SpecFieldError | None:
-        setting = self.setting
-        if setting is None:
-            return None
-        if setting.end_play is not None and setting.preload is not None:
-            return SpecFieldError("setting.preload", "give the end_play or the preload the "
-                                  "pair is set to, not both")
-        if setting.end_play is None and setting.preload is None:
-            return SpecFieldError("setting", "give end_play (like 20 µm, negative: preload) "
-                                  "or preload (like 1.5 kN)")
-        return None
-
-    @rule
     def _spacing_of_a_pair(self) -> SpecFieldError | None:
         if self.method != "iso-16281":
             return None

@@ -11,8 +11,15 @@ from pydantic import Field, model_validator
 
 from bearingcalc.core.bearing_types import traits
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.models.bearing_method_rules import MOUNTING_INPUTS
+from bearingcalc.models.bearing_method_rules import (
+    ELEMENT_MOUNTING_FIELDS,
+    ELEMENT_MOUNTING_INPUTS,
+    MOUNTING_INPUTS,
+    ElementMountingFields,
+    PairSetting,
+)
 from bearingcalc.models.bevel_gears import BevelGearsLimits, BevelPair
+from bearingcalc.models.drive_mounting_rules import DriveMountingRules
 from bearingcalc.models.duty import (
     OIL_BIN_FIELDS,
     OIL_BIN_PATHS,
@@ -49,9 +56,10 @@ SHAFTS = ("pinion", "gear")
 ShaftArrangement = Literal["locating-floating", "back-to-back", "face-to-face"]
 
 
-class DriveBearing(BearingFields):
+class DriveBearing(ElementMountingFields, BearingFields):
     """One rolling bearing of a shaft: where it sits, whether it locates the shaft
-    axially, and every field of ``kind: rolling-bearing`` except loads and speeds."""
+    axially, and every field of ``kind: rolling-bearing`` except loads and speeds (and,
+    as mounted, what a bearing alone takes of its own: clearance, roller profile)."""
 
     position: Length = Field(description="along the shaft axis, from the pitch-cone apex "
                              "toward the gear's back face; in an adjusted arrangement, the "
@@ -85,7 +93,7 @@ DriveBin = bin_model("DriveBin", {
     "input_speed": (AngularSpeed, "the pinion shaft's speed; 0: at rest"), **OIL_BIN_FIELDS})
 
 
-class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
+class BevelDriveSpec(DriveMountingRules, BinOilRules, DutyCycleRules, BevelPair):
     """A right-angle (or any-angle) bevel drive: the pair, its two shafts and their
     bearings, from the input torque to every bearing's life, at one operating point or
     over a duty cycle."""
@@ -108,6 +116,16 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
         "force: one locating, or two adjusted against each other")
     gear_arrangement: ShaftArrangement = Field(
         "locating-floating", description="the same for the gear shaft")
+    method: Literal["iso-281", "iso-16281"] = Field(
+        "iso-281", description="iso-281: each shaft's statics and its bearings' catalogue "
+        "method; iso-16281: each shaft rigid on its bearings' contacts (clearance, "
+        "preload, stiffness) and the gears' displacements at the mesh")
+    pinion_setting: PairSetting | None = Field(
+        None, description="iso-16281, an adjusted pinion shaft: {end_play: …} or "
+        "{preload: …}")
+    gear_setting: PairSetting | None = Field(
+        None, description="iso-16281, an adjusted gear shaft: {end_play: …} or "
+        "{preload: …}")
     reliability: Reliability = 0.9
     lubrication: Lubrication | None = None
     contamination_factor: UnitFraction | None = None
@@ -286,8 +304,9 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
         """The bearing as a ``kind: ball-bearing`` spec with these loads and speed: one
         definition of the rules and results for a bearing alone and in a drive. Its fields
         were validated by the drive's own (the same) field types."""
-        fields = {name: getattr(bearing, name) for name in BearingFields.model_fields}
-        fields.update(_fields_set=bearing.model_fields_set & set(BearingFields.model_fields),
+        names = (*BearingFields.model_fields, *ELEMENT_MOUNTING_FIELDS)
+        fields = {name: getattr(bearing, name) for name in names}
+        fields.update(_fields_set=bearing.model_fields_set & set(names), method=self.method,
                       kind="rolling-bearing", radial_load=radial, axial_load=axial, speed=speed,
                       reliability=self.reliability, lubrication=self.lubrication,
                       contamination_factor=self.contamination_factor,
@@ -332,11 +351,18 @@ class BevelDriveSpec(BinOilRules, DutyCycleRules, BevelPair):
         inputs["shafts"] = {shaft: [self._bearing_inputs(bearing) for bearing in bearings]
                             for shaft, bearings in self.shafts()}
         inputs["arrangements"] = {shaft: self.arrangement(shaft) for shaft, _ in self.shafts()}
+        inputs["method"] = self.method
+        inputs["settings"] = {shaft: None if setting is None else {
+            "end_play": setting.end_play, "preload": setting.preload}
+            for shaft, setting in (("pinion", self.pinion_setting),
+                                   ("gear", self.gear_setting))}
         return inputs
 
     def _bearing_inputs(self, bearing: DriveBearing) -> MountedBearingInputs:
+        kept = ELEMENT_MOUNTING_INPUTS if self.method == "iso-16281" else ()
         own = {key: value for key, value in self.rolling_bearing(bearing).solver_inputs().items()
-               if key not in (*_DRIVE_SETS, *MOUNTING_INPUTS, "min_rating_life")}
+               if key in kept or key not in (*_DRIVE_SETS, *MOUNTING_INPUTS,
+                                             "min_rating_life")}
         return {"position": bearing.position,
                 "locating": "locating" if bearing.locating else "floating",
                 "induced_axial_factor": bearing.induced_axial_factor, **own}

@@ -58,8 +58,7 @@ if TYPE_CHECKING:
     from bearingcalc.core.solver_inputs import RollingBearingInputs
 
 RELIABILITY_RANGE = (0.90, 0.9995)
-#: ISO 76:2006 6.1: the contact pressure at C0 of a ball bearing and of a roller bearing.
-#: [Pa]
+#: ISO 76:2006 6.1: the contact pressure at C0 of a ball and of a roller bearing [Pa].
 ISO_76_PRESSURE = 4.2e9
 ISO_76_ROLLER_PRESSURE = 4.0e9
 #: How far a given pitch diameter may lie from (d + D)/2 before it is questioned: real
@@ -272,11 +271,12 @@ class RollingBearingSpec(MethodRules, PairRules, GeometryEstimate, BinOilRules,
     @property
     def has_geometry(self) -> bool:
         """The rolling elements' count and diameter (and a roller's length) and a pitch
-        diameter (given, or the rings' mean)."""
-        if self.rollers:
+        diameter (given, or the rings' mean), or their estimate as mounted."""
+        if self.rollers and not self.estimated_inputs():
             return None not in (self.roller_count, self.roller_diameter, self.roller_length,
                                 self.mean_diameter)
-        return None not in (self.ball_count, self.ball_diameter, self.mean_diameter)
+        return bool(self.estimated_inputs()) or None not in (
+            self.ball_count, self.ball_diameter, self.mean_diameter)
 
     @property
     def mean_diameter(self) -> float | None:
@@ -313,7 +313,7 @@ class RollingBearingSpec(MethodRules, PairRules, GeometryEstimate, BinOilRules,
         envelope = self._envelope_mm()
         if envelope is not None:
             middle = (envelope[0] + envelope[1]) / 2
-            if self.pitch_diameter is None and self.has_geometry:
+            if self.pitch_diameter is None and self.has_geometry and not self.estimates_geometry:
                 notes.append(f"no pitch_diameter: the geometry takes the rings' mean "
                              f"(d + D)/2 = {middle:g} mm")
             elif self.pitch_diameter is not None and abs(

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from bearingcalc.errors import SpecError
-from bearingcalc.plots.common import pyplot
+from bearingcalc.plots.common import pyplot, words
 
 if TYPE_CHECKING:
     from bearingcalc.evaluation import Evaluation
@@ -58,7 +58,11 @@ def life_against_load(kind: Kind, spec: Any, evaluation: Evaluation, plot: Plot
     if _damage_shares(evaluation):
         return None
     load = float(spec.radial_load)  # a toleranced load's nominal value
-    life = evaluation.results.get("modified_rating_life")
+    # the life the limit judges: as mounted, the modified reference rating life
+    judged = kind.judged.get("life_margin")
+    key = judged.key(evaluation.results) if judged is not None else None
+    key = key if key is not None else "modified_rating_life"
+    life = evaluation.results.get(key)
     if not load > 0 or life is None:
         return None
     low, high = (factor * load for factor in LOAD_SPAN)
@@ -68,11 +72,11 @@ def life_against_load(kind: Kind, spec: Any, evaluation: Evaluation, plot: Plot
     except (SpecError, ValueError):
         return None
     loads = solved.inputs["radial_load"] / 1e3
-    lives = solved.results["modified_rating_life"] / 3600.0
+    lives = solved.results[key] / 3600.0
     required = _required_life(evaluation)
 
     def draw(axes: Any) -> None:
-        axes.plot(loads, lives, color="#4c72b0", label="modified rating life")
+        axes.plot(loads, lives, color="#4c72b0", label=words(key))
         axes.plot([load / 1e3], [life / 3600.0], "o", color="#c44e52",
                   label="the operating point")
         if required is not None:

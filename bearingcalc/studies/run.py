@@ -105,7 +105,7 @@ def run_study(  # noqa: PLR0913  the tolerance command's options, keyword-only, 
     if missing:
         raise StudyError(f"{missing[0]!r} is not a result of this {kind.name} spec; "
                          f"choose from {', '.join(study.keys)}", "--result")
-    governing = list(results) or [key for key in kind.governing if key in study.keys]
+    governing = list(results) or kind.governing_of(study.keys)
     focus = list(results) or study.keys
     record = _first_record(kind, spec, source, study)
     by_method: dict[str, dict[str, Any]] = {}  # method -> result key -> its entry

@@ -1,0 +1,73 @@
+"""The rules of a bevel drive as mounted (``method: iso-16281``): how its adjusted
+shafts are set, which bearing may locate a shaft on its contacts, and what the method
+solves; mixed into :class:`bearingcalc.models.bevel_drive.BevelDriveSpec`
+(``docs/physics.md`` §12)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from bearingcalc.errors import SpecFieldError
+from bearingcalc.models.rules import rule, whole_spec_rule
+
+if TYPE_CHECKING:
+    from collections.abc import Callable
+
+
+class DriveMountingRules:
+    """What a drive as mounted takes."""
+
+    if TYPE_CHECKING:  # the drive's fields and methods these rules read
+        method: str
+        pinion_setting: Any
+        gear_setting: Any
+        duty_cycle: Any
+        shafts: Callable[[], list[tuple[str, list[Any]]]]
+        arrangement: Callable[[str], str]
+
+    @rule
+    def _shaft_settings(self) -> list[SpecFieldError]:
+        problems = []
+        for shaft in ("pinion", "gear"):
+            field = f"{shaft}_setting"
+            setting = getattr(self, field)
+            adjusted = self.arrangement(shaft) != "locating-floating"
+            if setting is not None and self.method != "iso-16281":
+                problems.append(SpecFieldError(field, "is for the drive as mounted: give "
+                                               f"method: iso-16281, or leave {field} out"))
+            elif setting is not None and not adjusted:
+                problems.append(SpecFieldError(field, f"a locating-floating {shaft} shaft is "
+                                               "not set against itself: leave it out, or "
+                                               f"give {shaft}_arrangement: back-to-back or "
+                                               "face-to-face"))
+            elif (setting is None and adjusted and self.method == "iso-16281"
+                  and shaft in dict(self.shafts())):
+                problems.append(SpecFieldError(field, f"missing: an adjusted {shaft} shaft "
+                                               "as mounted is set against itself: give "
+                                               f"{field}: {{end_play: 20 µm}} (negative: "
+                                               "preload) or {preload: 1.5 kN}",
+                                               at=f"{shaft}_arrangement"))
+        return problems
+
+    @rule
+    def _one_bearing_a_position(self) -> list[SpecFieldError]:
+        if self.method != "iso-16281":
+            return []
+        problems = []
+        for shaft, bearings in self.shafts():
+            for i, bearing in enumerate(bearings, 1):
+                where = f"{shaft}_bearings.{i}"
+                if bearing.arrangement != "single":
+                    problems.append(SpecFieldError(
+                        f"{where}.arrangement", "method: iso-16281 solves each position "
+                        "of a drive as one bearing: leave arrangement out, or give "
+                        "method: iso-281"))
+        return problems
+
+    @whole_spec_rule
+    def _mounted_drive_at_one_point(self) -> SpecFieldError | None:
+        if self.method == "iso-16281" and self.duty_cycle is not None:
+            return SpecFieldError("duty_cycle", "method: iso-16281 solves one operating "
+                                  "point: give the torque and speed, or method: iso-281 for "
+                                  "the duty cycle", at="method")
+        return None
