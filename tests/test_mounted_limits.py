@@ -145,3 +145,46 @@ def test_the_second_bearing_lifts_off_at_harris_axial_load(cli, spec_file):
     assert below["bearing_2_axial_load"] < 2e-3 * lift_off
     assert above["bearing_2_axial_load"] == 0.0
     assert above["bearing_1_axial_load"] == pytest.approx(lift_off * 1.001, rel=1e-9)
+
+
+ORDER = ("x", "y", "z", "tilt_y", "tilt_z")
+
+
+def _matrix(results):
+    """The 5 × 5 tangent stiffness from its entries on and above the diagonal."""
+    matrix = np.empty((5, 5))
+    for i, a in enumerate(ORDER):
+        for j, b in enumerate(ORDER[i:], start=i):
+            matrix[i, j] = matrix[j, i] = results[f"stiffness_matrix_{a}_{b}"]
+    return matrix
+
+
+def test_the_stiffness_matrix_is_central_differences_of_the_references_forces(cli):
+    """specs/rolling-bearing-mounted.yaml: every entry against the independent reference's
+    central differences at its own equilibrium (scipy's root), to 1e-6 of the largest
+    entry of its kind (translation, coupling, tilt)."""
+    [record] = solve_json(cli, "specs/rolling-bearing-mounted.yaml")
+    bearing = reference.BallBearing(9, 7.938e-3, 38.5e-3, 0.52, 0.53,
+                                    diametral_clearance=10e-6, elastic_modulus=207.5e9)
+    solved = reference.solve_equilibrium(bearing, (300.0, 2000.0, 0.0, 0.0, 2.0))
+    mine, theirs = _matrix(record["results"]), solved["stiffness"]
+    for rows, columns in ((slice(0, 3), slice(0, 3)), (slice(0, 3), slice(3, 5)),
+                          (slice(3, 5), slice(3, 5))):
+        block = theirs[rows, columns]
+        np.testing.assert_allclose(mine[rows, columns], block, rtol=1e-6,
+                                   atol=1e-6 * np.abs(block).max())
+
+
+def test_a_pairs_stiffness_matrix_is_its_shafts(cli):
+    """specs/rolling-bearing-mounted-pair.yaml: the matrix of the shaft midway between the
+    pressure centres, against the independent shaft reference's central differences."""
+    [record] = solve_json(cli, "specs/rolling-bearing-mounted-pair.yaml")
+    bearing = reference.BallBearing(12, 9.525e-3, 46e-3, 0.52, 0.53,
+                                    free_contact_angle=math.radians(40),
+                                    elastic_modulus=207.5e9)
+    spacing = record["results"]["pair_spacing_used"]
+    end_play = shaft.end_play_for_preload(bearing, 300.0)
+    pair = shaft.matched_pair(bearing, (-spacing / 2, spacing / 2), "back-to-back", end_play)
+    theirs = shaft.solve_shaft(pair, (1500.0, 3000.0, 0.0, 0.0, 0.0))["stiffness"]
+    mine = _matrix(record["results"])
+    np.testing.assert_allclose(mine, theirs, rtol=1e-5, atol=1e-6 * np.abs(theirs).max())

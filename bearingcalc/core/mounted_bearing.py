@@ -53,6 +53,17 @@ RESULTS: dict[str, tuple[str, str]] = {
     "stiffness_tilt": ("N·m/rad", "∂Mz/∂θz"),
     "equilibrium_residual": ("1", "the largest unbalanced force over the largest load"),
 }
+#: The tangent stiffness matrix's coordinates, in its order: the displacements x, y, z
+#: and the tilts about y and z (a pair's: its shaft's, midway between its pressure
+#: centres).
+STIFFNESS_ORDER = ("x", "y", "z", "tilt_y", "tilt_z")
+#: Its entries on and above the diagonal (it is symmetric), ∂F_a/∂q_b in SI.
+STIFFNESS_MATRIX = {
+    f"stiffness_matrix_{a}_{b}": (
+        {0: "N/m", 1: "N/rad", 2: "N·m/rad"}[(i > 2) + (j > 2)],
+        f"∂F_{a}/∂q_{b} of the tangent stiffness matrix (symmetric)")
+    for i, a in enumerate(STIFFNESS_ORDER) for j, b in enumerate(STIFFNESS_ORDER) if j >= i}
+RESULTS.update(STIFFNESS_MATRIX)
 #: Each rolling element's results, a row per element.
 ELEMENT_RESULTS = AxisResults({
     "azimuth": ("rad", "its azimuth ψ (0 under the radial load)"),
@@ -209,6 +220,7 @@ def equilibrium_results(solved: Any, deflection: NDArray) -> dict[str, NDArray]:
         "stiffness_axial": solved.stiffness[:, 0, 0],
         "stiffness_tilt": solved.stiffness[:, 4, 4],
         "equilibrium_residual": solved.residual,
+        **stiffness_entries(solved.stiffness),
     }
 
 
@@ -222,6 +234,14 @@ def contact_angle_range(element_load: NDArray, contact_angle: NDArray
                 np.where(loaded, contact_angle, np.inf), axis=1)),
             "operating_contact_angle_max": np.where(none_loaded, np.nan, np.max(
                 np.where(loaded, contact_angle, -np.inf), axis=1))}
+
+
+def stiffness_entries(stiffness: NDArray) -> dict[str, NDArray]:
+    """The tangent stiffness matrix (N, 5, 5) as its entries on and above the diagonal,
+    :data:`STIFFNESS_MATRIX`."""
+    return {f"stiffness_matrix_{a}_{b}": stiffness[:, i, j]
+            for i, a in enumerate(STIFFNESS_ORDER) for j, b in enumerate(STIFFNESS_ORDER)
+            if j >= i}
 
 
 def life_results(inputs: Mapping[str, Any], reference_life: Any, iso281: Mapping[str, Any],

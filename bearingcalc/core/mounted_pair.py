@@ -175,6 +175,7 @@ def _scalars(inputs: Mapping[str, Any], family: PairFamily, solved: Any,
         "stiffness_axial": solved.stiffness[:, 0, 0],
         "stiffness_tilt": solved.stiffness[:, 4, 4],
         "equilibrium_residual": solved.residual,
+        **shared.stiffness_entries(solved.stiffness),
         "preload_force": preload, "pair_spacing_used": spacing,
     }
     if hasattr(solved.contacts[0], "contact_angle"):
