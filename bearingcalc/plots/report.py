@@ -91,12 +91,13 @@ def life_against_load(kind: Kind, spec: Any, evaluation: Evaluation, plot: Plot
         axes.set_xticks([tick for tick in (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
                          if low / 1e3 <= tick <= high / 1e3] or axes.get_xticks())
         axes.set_xlabel("radial load [kN]")
-        axes.set_ylabel("modified rating life [h]")
+        axes.set_ylabel(f"{words(key)} [h]")
         axes.grid(alpha=0.3, which="both")
         axes.legend(fontsize="small")
 
-    return ("The modified rating life against the radial load, the other inputs as given "
-            "(ISO 281, the same solver as the results above).", svg_of(draw))
+    method = "ISO/TS 16281" if key != "modified_rating_life" else "ISO 281"
+    return (f"The {words(key)} against the radial load, the other inputs as given "
+            f"({method}, the same solver as the results above).", svg_of(draw))
 
 
 def drive_lives(kind: Kind, spec: Any, evaluation: Evaluation, plot: Plot
