@@ -179,8 +179,9 @@ def test_laminae_of_several_counts_in_one_sweep_equal_their_own_solves(cli, spec
     for row, laminae in zip(rows, (10, 20, 30, 40), strict=True):
         own = _solved(cli, spec_file, text.replace("laminae: 30", f"laminae: {laminae}"))
         assert row["inputs"]["laminae"] == laminae
+        # each solved to the equilibrium's tolerance, 1e-12 of the load
         assert row["results"]["reference_rating_life"] == pytest.approx(
-            own["results"]["reference_rating_life"], rel=1e-12)
+            own["results"]["reference_rating_life"], rel=1e-9)
 
 
 @pytest.mark.parametrize(("extra", "field"), [

@@ -272,8 +272,11 @@ def _newton(geometry: RollerGeometry, rollers: _Rollers, q: NDArray,
     widest = np.max(np.where(np.isfinite(geometry.gap), geometry.gap, 0.0), axis=1)
     typical = geometry.roller_count * geometry.lamina_constant * geometry.gap.shape[1] * (
         np.maximum(widest, 1e-6 * lever)) ** (1.0 / 9.0)
+    # a preloaded bearing's rollers push on the ring from every side: their loads cancel
+    # in its force but set the rounding of the sum
+    internal = np.sum(_state(geometry, rollers, q).lamina, axis=(1, 2))
     return damped_newton(lambda trial: _state(geometry, rollers, trial), q, applied,
-                         moving, scale, typical)
+                         moving, scale, typical, internal)
 
 
 class RollerContacts(NamedTuple):
