@@ -430,14 +430,6 @@ def test_a_type_that_does_not_pair_is_refused_at_arrangement_first(tmp_path, pai
     assert pair_type in first
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason=(
-        "rows: 2 on a tapered pair as mounted gives two lines for one cause at rows "
-        "('a matched pair is of single-row bearings' and 'iso-16281 solves single-row roller "
-        "bearings'), against specs.md's one cause, one line"
-    ),
-)
 def test_rows_two_on_a_tapered_pair_is_one_line(tmp_path):
     result, path, lines = solve(tmp_path, TAPERED, rows="2")
     one_error(result, path, lines["rows"], "rows")

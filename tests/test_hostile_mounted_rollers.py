@@ -735,10 +735,6 @@ def test_negative_tapered_contact_angle_is_one_line():
     refused(cli("solve", write("s.yaml", text)), "contact_angle", line_of(text, "contact_angle"))
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "rows: 2 on a matched tapered pair as mounted (setting and pair_spacing given) gives two "
-    "lines for the one field: 'a matched pair is of single-row bearings' and 'method: "
-    "iso-16281 solves single-row roller bearings here'"))
 def test_pair_with_two_rows_is_one_line():
     text = dump(spec(PAIR, arrangement="face-to-face", rows=2))
     refused(cli("solve", write("s.yaml", text)), "rows", line_of(text, "rows"))

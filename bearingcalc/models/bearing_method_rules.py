@@ -203,7 +203,9 @@ class RollerMountingRules(ReadsBearing):
 
     @rule
     def _mounted_single_row(self) -> SpecFieldError | None:
-        if self.method == "iso-16281" and self.rollers and self.rows != 1:
+        # a pair's own rule refuses a double row in a matched pair
+        if (self.method == "iso-16281" and self.rollers and self.rows != 1
+                and self.arrangement == "single"):
             return SpecFieldError("rows", "method: iso-16281 solves single-row roller "
                                   "bearings here: give rows: 1, or method: iso-281 for the "
                                   "double row", at="method")
