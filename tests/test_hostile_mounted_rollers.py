@@ -726,10 +726,6 @@ def test_small_radial_load_on_a_roller_bearing_is_solved(clearance, load):
     solve(spec(CYL, operating_clearance=clearance, radial_load=load))
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "contact_angle: -14 deg on a tapered roller bearing gives two lines for one cause: "
-    "'outside 0 to 45 deg' and 'at 0 deg it would carry no axial load', the second false "
-    "(the angle is -14 deg, not 0)"))
 def test_negative_tapered_contact_angle_is_one_line():
     text = dump(spec(TAP, contact_angle="-14 deg"))
     refused(cli("solve", write("s.yaml", text)), "contact_angle", line_of(text, "contact_angle"))

@@ -191,9 +191,8 @@ class ElementFitRules(_ElementsInPlace):
     @rule
     def _inclined_rollers(self) -> SpecFieldError | None:
         # Rollers inclined to the axis by α: at α = 0 they would carry no axial load, and
-        # ISO 281's Y = 0.4·cotα has no bound.
-        if not self.type_traits.inclined or self.contact_angle is None or (
-                self.contact_angle > 0):
+        # ISO 281's Y = 0.4·cotα has no bound (a negative angle is the range rule's).
+        if not self.type_traits.inclined or self.contact_angle != 0.0:
             return None
         return SpecFieldError("contact_angle", f"a {self.type} bearing's rollers are inclined: "
                               "at 0 deg it would carry no axial load (ISO 281's Y = "
