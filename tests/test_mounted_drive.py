@@ -119,20 +119,25 @@ def test_a_shafts_stiffness_at_the_mesh_is_its_displacements_slope(spec_file):
         assert float(stiffness[f"pinion_stiffness_{name}"]) == pytest.approx(slope, rel=1e-4)
 
 
-def _line_offset_and_angle(a, p, b, g):
-    """The offset along n = a×b/|a×b| from line (p, a) to line (g, b), and their angle,
-    by the common normal of two skew lines and the arccosine."""
+def _moved_lines(a, p, b, g):
+    """Two lines (point p, direction a) and (g, b): the offset along n = a×b/|a×b| from
+    the first to the second between their closest points, their angle by the arccosine,
+    and how far each line's own point lies from its closest point along its direction
+    (the shifts P, G, positive away from where they cross)."""
     normal = np.cross(a, b)
-    offset = np.dot(g - p, normal) / np.linalg.norm(normal)
+    normal /= np.linalg.norm(normal)
+    # g − p = s·a − t·b + E·n, with s, t the closest points' places along each line
+    s, t, offset = np.linalg.solve(np.stack([a, -b, normal], axis=1), g - p)
     angle = math.acos(np.dot(a, b) / (np.linalg.norm(a) * np.linalg.norm(b)))
-    return offset, angle
+    return offset, angle, -s * np.linalg.norm(a), -t * np.linalg.norm(b)
 
 
 @pytest.mark.parametrize("sigma", [math.radians(90), math.radians(70)])
 def test_the_mesh_displacements_are_two_lines_moved(sigma):
     """Each shaft moved by a small translation at the apex and a small rotation
     (θy about its y, −θz about its z, 10⁻⁷ of the sizes): E, P, G and Σ against the
-    moved lines, to the second-order terms the first-order definitions leave out."""
+    moved lines, their closest points and each shaft's apex from where they cross, to
+    the second-order terms the first-order definitions leave out."""
     delta = math.radians(25)
     rng = np.random.default_rng(3)
     change = {shaft: rng.uniform(-1, 1, 5) * np.array([1e-7, 1e-7, 1e-7, 1e-6, 1e-6])
@@ -156,12 +161,12 @@ def test_the_mesh_displacements_are_two_lines_moved(sigma):
         q = change[shaft]
         spin = Rotation.from_rotvec(frame @ np.array([0.0, q[3], -q[4]]))
         lines[shaft] = (spin.apply(frame[:, 0]), frame @ q[:3])
-    offset, angle = _line_offset_and_angle(*lines["pinion"], *lines["gear"])
+    offset, angle, pinion, gear = _moved_lines(*lines["pinion"], *lines["gear"])
     assert float(mine["mesh_offset_change"]) == pytest.approx(offset, rel=1e-4, abs=1e-13)
     assert float(mine["shaft_angle_change"]) == pytest.approx(angle - sigma, rel=1e-4,
                                                               abs=1e-12)
-    assert float(mine["pinion_axial_shift"]) == change["pinion"][0]
-    assert float(mine["gear_axial_shift"]) == change["gear"][0]
+    assert float(mine["pinion_axial_shift"]) == pytest.approx(pinion, rel=1e-4, abs=1e-13)
+    assert float(mine["gear_axial_shift"]) == pytest.approx(gear, rel=1e-4, abs=1e-13)
 
 
 ADJUSTED = """kind: bevel-drive

@@ -138,9 +138,14 @@ def _in_section(sizes: NDArray, section: float) -> NDArray:
 
 def _best(count: NDArray, diameter: NDArray, length: NDArray | None, pitch: float,
           rating_ratio: NDArray, static_ratio: NDArray) -> EstimatedGeometry | None:
-    """The candidate whose ratings come nearest the catalogue's: C0 first, C a quarter
-    as much (a maker's C may lie above ISO's); None where none has ratings."""
+    """Of the acceptable candidates (else of all, for the message that refuses them),
+    the one whose ratings come nearest the catalogue's: C0 first, C a quarter as much
+    (a maker's C may lie above ISO's); None where none has ratings."""
     deviation = np.abs(np.log(static_ratio)) + 0.25 * np.abs(np.log(rating_ratio))
+    acceptable = ((np.abs(static_ratio - 1.0) <= TOLERANCE) & (RATING_RATIO[0] <= rating_ratio)
+                  & (rating_ratio <= RATING_RATIO[1]))
+    if acceptable.any():
+        deviation = np.where(acceptable, deviation, np.inf)
     if not np.isfinite(deviation).any():
         return None
     i = int(np.nanargmin(deviation))

@@ -69,3 +69,27 @@ def damped_newton(potential: Callable[[NDArray], Any], q: NDArray, applied: NDAr
                               for a, b in zip(state, new, strict=True)))
         damping = np.where(better, np.maximum(damping / 10.0, 1e-14), damping * 10.0)
     return q, residual
+
+
+def bracketed_newton(residual: Callable[[NDArray], tuple[NDArray, NDArray, NDArray]],
+                     start: NDArray, low: NDArray, high: NDArray,
+                     max_iterations: int = 100) -> NDArray:
+    r"""The root x of an increasing function of one unknown per design, f(x) = 0:
+    ``residual(x)`` gives f, its slope f′ and the size below which |f| counts as 0.
+    Newton's step x − f/f′ is kept where it stays inside the bracket [``low``,
+    ``high``], which each evaluation narrows, else the bracket is halved; a
+    bracket narrower than 10⁻¹⁷ ends the search too. [SI] Source: W. H. Press et al.,
+    *Numerical Recipes*, 3rd ed., 9.4 (Newton's method with bisection).
+    """
+    x, low, high = start.copy(), low.copy(), high.copy()
+    for _ in range(max_iterations):
+        value, slope, size = residual(x)
+        if np.all((np.abs(value) <= size) | (high - low <= 1e-17)):
+            break
+        low = np.where(value < 0.0, x, low)
+        high = np.where(value > 0.0, x, high)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = x - value / slope
+        inside = (slope > 0.0) & (step > low) & (step < high)
+        x = np.where(value == 0.0, x, np.where(inside, step, 0.5 * (low + high)))
+    return x

@@ -26,7 +26,11 @@ from typing import Any, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core.iso16281_newton import RESIDUAL_TOLERANCE, damped_newton
+from bearingcalc.core.iso16281_newton import (
+    RESIDUAL_TOLERANCE,
+    bracketed_newton,
+    damped_newton,
+)
 
 #: The in-plane coordinates (δx, δy, θz), all that move under loads in the radial
 #: load's plane.
@@ -50,6 +54,8 @@ class ShaftBearing(NamedTuple):
 
 
 class ShaftEquilibrium(NamedTuple):
+    """The solved shaft, arrays over designs."""
+
     displacement: NDArray      # Q (N, 5) [m, rad]
     local: list[NDArray]       # each bearing's q_i (N, 5)
     contacts: list[Any]        # each bearing's contacts at its q_i
@@ -204,17 +210,8 @@ def axial_deflection_for_load(contacts: Callable[[NDArray], Any], load: ArrayLik
             break
         low = np.where(short, high, low)
         high = np.where(short, 2.0 * high, high)
-    deflection = 0.5 * (low + high)
-    for _ in range(100):
+    def axial_error(deflection: NDArray) -> tuple[NDArray, NDArray, NDArray]:
         force, slope = axial(deflection)
-        error = force - target
-        if np.all(np.abs(error) <= 1e-13 * target) or np.all(high - low <= 1e-17):
-            break
-        low = np.where(error < 0.0, deflection, low)
-        high = np.where(error > 0.0, deflection, high)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            step = deflection - error / slope
-        inside = (slope > 0.0) & (step > low) & (step < high)
-        deflection = np.where(error == 0.0, deflection,
-                              np.where(inside, step, 0.5 * (low + high)))
-    return deflection
+        return force - target, slope, 1e-13 * target
+
+    return bracketed_newton(axial_error, 0.5 * (low + high), low, high)

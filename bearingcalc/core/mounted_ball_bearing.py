@@ -30,7 +30,7 @@ from bearingcalc.core.iso16281_life import (
     ball_spring_constant,
     largest_ball_contacts,
 )
-from bearingcalc.core.mounted_pair import PairFamily, pair_results
+from bearingcalc.core.mounted_pair import BearingFamily, pair_results
 from bearingcalc.core.solver import Along
 
 #: The ball bearing's results as mounted: the shared ones with its contact angles.
@@ -58,8 +58,9 @@ STATUS_REASONS = {
     **mounted_pair.STATUS_REASONS,
     **{code: (field, DerivedTest(
         "the most heavily loaded ball's contact ellipse outgrows the ball (a semi-axis "
-        "above Dw/2): Hertz's theory does not hold, and the bearing would be crushed; "
-        f"the {what} is too large for it"))
+        "above Dw/2), or a pair's shaft moves beyond small displacements (a tilt above 10 "
+        "mrad, a shift above a tenth of the pitch radius): the bearing's model does not "
+        f"hold, and the bearing would be crushed; the {what} is too large for it"))
        for field, (code, what) in CONTACT_TOO_LARGE.items()},
 }
 
@@ -81,7 +82,7 @@ def mounted_results(inputs: Mapping[str, Any], c: NDArray, iso281: Mapping[str, 
 
 
 def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray
-            ) -> tuple[BallGeometry, PairFamily]:
+            ) -> tuple[BallGeometry, BearingFamily]:
     """The balls' groove centres, and what they give a bearing as mounted: their
     contacts, life and pressures."""
     one_way = traits(str(inputs["bearing_type"])).one_way
@@ -111,17 +112,17 @@ def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray
         return ball_deflections(geometry, q, contacts.azimuth)
 
     offset = dpw / 2.0 * np.tan(nominal)
-    return geometry, PairFamily(
+    return geometry, BearingFamily(
         "ball", lambda q: ball_contacts_at(geometry, q), offset, offset, np.zeros_like(z),
         dpw / 2.0, life, pressures, deflection, 3.0, CONTACT_TOO_LARGE)
 
 
-def bearing_family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> PairFamily:
+def bearing_family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> BearingFamily:
     """What a ball bearing's inputs give a shaft as mounted (a pair's, a drive's)."""
     return _family(inputs, flat, c)[1]
 
 
-def _single(inputs: Mapping[str, Any], geometry: BallGeometry, family: PairFamily,
+def _single(inputs: Mapping[str, Any], geometry: BallGeometry, family: BearingFamily,
             flat: Any, shape: tuple[int, ...], iso281: Mapping[str, Any], speed: NDArray
             ) -> tuple[Found, dict[str, Along]]:
     """A single bearing's results, its balls along ``element``."""

@@ -132,6 +132,29 @@ def crushing_code(inputs: Mapping[str, Any], codes: Mapping[str, tuple[int, str]
     return codes["radial_load"][0]
 
 
+#: The largest tilt [rad] and displacement (a share of the pitch radius) at which a
+#: shaft's equilibrium is taken as found: beyond them the rings' small-displacement model
+#: does not hold (bearings as mounted tilt by a few milliradians and move by micrometres).
+LARGEST_TILT = 0.01
+LARGEST_SHIFT = 0.1
+
+
+def within_model(displacement: NDArray, pitch_radius: NDArray) -> NDArray:
+    """Where a solved displacement (N, 5) lies within the small-displacement model."""
+    return ((np.max(np.abs(displacement[:, 3:]), axis=1) <= LARGEST_TILT)
+            & (np.max(np.abs(displacement[:, :3]), axis=1) <= LARGEST_SHIFT * pitch_radius))
+
+
+def rib_load(inputs: Mapping[str, Any], max_element_load: NDArray, flat: Any
+             ) -> dict[str, NDArray]:
+    """A tapered roller bearing's largest rib load, 2·Q·sin(θ/2) [N] of its most heavily
+    loaded roller, where the spec gives the roller's included angle θ."""
+    angle = inputs.get("roller_included_angle")
+    if angle is None:
+        return {}
+    return {"max_rib_load": 2.0 * max_element_load * np.sin(flat(angle) / 2.0)}
+
+
 def or_zero(value: Any) -> Any:
     """An optional number, 0 where the spec leaves it out."""
     return 0.0 if value is None else value

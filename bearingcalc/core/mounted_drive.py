@@ -18,6 +18,7 @@ from bearingcalc.core import mounted_bearing as shared
 from bearingcalc.core import rolling_bearing
 from bearingcalc.core.common import DerivedTest
 from bearingcalc.core.drive_bearings import MountedBearing
+from bearingcalc.core.mounted_bearing import within_model
 from bearingcalc.core.mounted_shaft import MountedShaft, gear_load, solve_mounted_shaft
 from bearingcalc.core.shaft_statics import mean_pitch_point
 
@@ -33,9 +34,9 @@ RESULTS: dict[str, tuple[str, str]] = {
     "mesh_offset_change": ("m", "E: the change of the offset between the axes, along "
                            "a×b from the pinion's axis to the gear's"),
     "pinion_axial_shift": ("m", "P: the pinion's shift along its axis, away from the "
-                           "pitch apex"),
+                           "pitch apex, relative to where the axes cross"),
     "gear_axial_shift": ("m", "G: the gear's shift along its axis, away from the pitch "
-                         "apex"),
+                         "apex, relative to where the axes cross"),
     "shaft_angle_change": ("rad", "Σ: the change of the shaft angle, positive opening"),
 }
 #: Each bearing's results as mounted, along the member axis (declared with the drive's).
@@ -47,10 +48,11 @@ NO_EQUILIBRIUM = {"pinion": 24, "gear": 25}
 CRUSHED = {"pinion": 26, "gear": 27}
 STATUS_REASONS = {
     **{code: (f"{shaft}_bearings", DerivedTest(
-        f"the {shaft} shaft finds no equilibrium on its bearings: they cannot carry the "
-        "gear's force (a one-way bearing loaded against its shoulder, too little "
-        "thrust on an adjusted pair, or a shaft located by no bearing that carries "
-        "thrust)")) for shaft, code in NO_EQUILIBRIUM.items()},
+        f"the {shaft} shaft finds no equilibrium on its bearings, or one only at a tilt of "
+        "more than 10 mrad or a shift of more than a tenth of a bearing's pitch radius: they "
+        "cannot carry the gear's force (a one-way bearing loaded against its shoulder, too "
+        "little thrust on an adjusted pair, a one-way bearing floating, or a shaft located "
+        "by no bearing that carries thrust)")) for shaft, code in NO_EQUILIBRIUM.items()},
     **{code: (f"{shaft}_bearings", DerivedTest(
         f"a bearing of the {shaft} shaft is loaded beyond Hertz's theory (its most "
         "heavily loaded contact outgrows its rolling element): the gear's force is too "
@@ -59,7 +61,8 @@ STATUS_REASONS = {
 
 
 def mounted_shaft_bearings(inputs: Mapping[str, Any], pair: Any, shaft: str, gear: str,
-                           speed: NDArray, shape: tuple[int, ...]
+                           speed: NDArray, shape: tuple[int, ...],
+                           mesh: tuple[NDArray, NDArray]
                            ) -> tuple[list[MountedBearing], MountedShaft, list]:
     """A shaft's bearings solved as mounted: each one's loads from its contacts, its ISO
     281 solution under them with its ISO/TS 16281 lives beside, the shaft, and the
@@ -67,8 +70,6 @@ def mounted_shaft_bearings(inputs: Mapping[str, Any], pair: Any, shaft: str, gea
     def flat(value: Any) -> NDArray:
         return np.broadcast_to(np.asarray(value, dtype=float), shape).reshape(-1)
 
-    mesh = mean_pitch_point(pair.results["mean_cone_distance"],
-                            pair.results[f"gear_{gear}_pitch_angle"])
     load = gear_load({key: np.broadcast_to(value, shape) for key, value in
                       pair.results.items()}, gear, tuple(np.broadcast_to(v, shape)
                                                          for v in mesh))
@@ -96,7 +97,10 @@ def mounted_shaft_bearings(inputs: Mapping[str, Any], pair: Any, shaft: str, gea
         mounted.append(MountedBearing(f"{shaft}_bearing_{i + 1}", f"{shaft}_bearings.{i + 1}",
                                       f"{shaft} shaft bearings", member_inputs, loads,
                                       replace(own, results={**own.results, **lives})))
-    checks = [(NO_EQUILIBRIUM[shaft], (~solved.loaded.converged).reshape(shape)),
+    found = solved.loaded.converged & within_model(
+        solved.loaded.displacement - solved.rest,
+        np.min(np.stack([family.lever for family in solved.families]), axis=0))
+    checks = [(NO_EQUILIBRIUM[shaft], (~found).reshape(shape)),
               (CRUSHED[shaft], crushed.reshape(shape))]
     return mounted, solved, checks
 
@@ -143,13 +147,16 @@ def mesh_displacements(pair: Mapping[str, NDArray], shafts: Mapping[str, Mounted
     r"""How far the gears move at the mesh from the assembly at rest: each shaft's
     displacement at the apex u and rotation ω (θy about its y, −θz about its z) in a
     common frame, the pinion's axis a = e_X, its mean pitch point in the X-Y plane at
-    its pitch angle δ₁, the gear's axis b = (cos Σ, sin Σ, 0), n = a × b/|a × b|:
+    its pitch angle δ₁, the gear's axis b = (cos Σ, sin Σ, 0), n = a × b/|a × b|. Only
+    the shafts' relative motion moves the mesh: the gear's apex relative to the
+    pinion's, split along the two axes and their common normal,
 
-    .. math:: E = n·(u_g - u_p), \quad P = Δδx_p, \quad G = Δδx_g, \quad
-              Σ = n·(ω_g - ω_p)
+    .. math:: u_g - u_p = -P\,a + G\,b + E\,n, \qquad Σ = n·(ω_g - ω_p)
 
-    to first order (the axes met at the apex). A shaft left out (no gear bearings)
-    counts as rigid. Source: the kinematics of two lines (Gleason's E, P, G, Σ).
+    P and G each shaft's shift along its axis, away from the pitch apex, relative to
+    where the axes cross; E the offset between them; Σ the shaft angle's opening; to
+    first order (the axes met at the apex). A shaft left out (no gear bearings) counts
+    as rigid. Source: the kinematics of two lines (Gleason's E, P, G, Σ).
     """
     sigma = np.broadcast_to(np.asarray(pair["shaft_angle"], dtype=float), shape).reshape(-1)
     delta = np.broadcast_to(np.asarray(pair["gear_a_pitch_angle"], dtype=float),
@@ -163,11 +170,12 @@ def mesh_displacements(pair: Mapping[str, NDArray], shafts: Mapping[str, Mounted
         moved[shaft] = np.einsum("nij,nj->ni", frame, change[:, :3])
         rotation = np.stack([np.zeros_like(sigma), change[:, 3], -change[:, 4]], axis=1)
         turned[shaft] = np.einsum("nij,nj->ni", frame, rotation)
-        moved[f"{shaft}_axial"] = change[:, 0]
+    relative = moved["gear"] - moved["pinion"]
+    gear_shift = relative[:, 1] / np.sin(sigma)
     return {key: value.reshape(shape) for key, value in {
-        "mesh_offset_change": moved["gear"][:, 2] - moved["pinion"][:, 2],
-        "pinion_axial_shift": moved["pinion_axial"],
-        "gear_axial_shift": moved["gear_axial"],
+        "mesh_offset_change": relative[:, 2],
+        "pinion_axial_shift": gear_shift * np.cos(sigma) - relative[:, 0],
+        "gear_axial_shift": gear_shift,
         "shaft_angle_change": turned["gear"][:, 2] - turned["pinion"][:, 2]}.items()}
 
 
@@ -194,26 +202,27 @@ def evaluate_mounted(inputs: Mapping[str, Any], pair: Any, speeds: Mapping[str, 
     for shaft, gear in (("pinion", "a"), ("gear", "b")):
         if shaft not in inputs["shafts"]:
             continue
+        mesh = mean_pitch_point(pair.results["mean_cone_distance"],
+                                pair.results[f"gear_{gear}_pitch_angle"])
         found, solved, own_checks = mounted_shaft_bearings(inputs, pair, shaft, gear,
-                                                           speeds[shaft], shape)
+                                                           speeds[shaft], shape, mesh)
         mounted += found
         shafts[shaft] = solved
         checks += own_checks
-        results.update(shaft_results(shaft, solved, mean_pitch_point(
-            pair.results["mean_cone_distance"], pair.results[f"gear_{gear}_pitch_angle"]),
-            shape))
+        results.update(shaft_results(shaft, solved, mesh, shape))
     results.update(mesh_displacements(pair.results, shafts, shape))
     return mounted, results, checks
 
 
 def _designs(inputs: Mapping[str, Any], pair: Any, speeds: Mapping[str, NDArray]
              ) -> tuple[int, ...]:
-    """The designs' shape: the pair's, the speeds' and every number of every bearing
-    and setting."""
+    """The designs' shape: the pair's results', the speeds' and every number of every
+    bearing and setting."""
     numbers = [value for bearings in inputs["shafts"].values() for bearing in bearings
                for value in bearing.values()
                if value is not None and not isinstance(value, str)]
     numbers += [value for setting in inputs.get("settings", {}).values() if setting
                 for value in setting.values() if value is not None]
     return np.broadcast_shapes(np.shape(pair.status), *(np.shape(v) for v in numbers),
+                               *(np.shape(v) for v in pair.results.values()),
                                *(np.shape(v) for v in speeds.values()))

@@ -54,7 +54,7 @@ STATUS_REASONS = {
 _FACING = {"back-to-back": (-1.0, -1.0), "face-to-face": (1.0, -1.0), "tandem": (-1.0, 1.0)}
 
 
-class PairFamily(NamedTuple):
+class BearingFamily(NamedTuple):
     """What the pair needs of its bearings' family, arrays over the flat designs."""
 
     family: Family
@@ -83,7 +83,7 @@ class PairFamily(NamedTuple):
     edge_loaded: Callable[[Any], NDArray] | None = None
 
 
-def pair_results(inputs: Mapping[str, Any], family: PairFamily, flat: Any,
+def pair_results(inputs: Mapping[str, Any], family: BearingFamily, flat: Any,
                  shape: tuple[int, ...], c: NDArray, iso281: Mapping[str, Any],
                  speed: NDArray) -> tuple[Found, dict[str, Along]]:
     """The pair's results, each bearing's along ``member`` and every element's along
@@ -119,7 +119,7 @@ def pair_results(inputs: Mapping[str, Any], family: PairFamily, flat: Any,
                    "element": _elements(solved, shape)}
 
 
-def _spacing(inputs: Mapping[str, Any], family: PairFamily, flat: Any
+def _spacing(inputs: Mapping[str, Any], family: BearingFamily, flat: Any
              ) -> tuple[NDArray, NDArray]:
     """The distance of the pressure centres [m] (signed: negative where a face-to-face
     pair's lie past each other) and where two bearings side by side would overlap.
@@ -137,7 +137,7 @@ def _spacing(inputs: Mapping[str, Any], family: PairFamily, flat: Any
     return spacing, ~(width > 0.0)
 
 
-def _setting(inputs: Mapping[str, Any], family: PairFamily, flat: Any, arrangement: str
+def _setting(inputs: Mapping[str, Any], family: BearingFamily, flat: Any, arrangement: str
              ) -> tuple[NDArray, NDArray]:
     """The pair's end play e [m] (negative: preload) and the preload at rest [N]: from
     ``setting_end_play``, or the end play at which each bearing carries
@@ -155,7 +155,7 @@ def _setting(inputs: Mapping[str, Any], family: PairFamily, flat: Any, arrangeme
     return end_play, np.where(end_play < 0.0, family.contacts(at_rest).force[:, 0], 0.0)
 
 
-def _scalars(inputs: Mapping[str, Any], family: PairFamily, solved: Any,
+def _scalars(inputs: Mapping[str, Any], family: BearingFamily, solved: Any,
              setting: tuple[NDArray, NDArray, NDArray], flat: Any) -> Found:
     """The pair's scalars over the flat designs, with the checks of its spacing, its
     equilibrium and Hertz's theory."""
@@ -184,12 +184,11 @@ def _scalars(inputs: Mapping[str, Any], family: PairFamily, solved: Any,
                 [c.contact_angle for c in solved.contacts], axis=1)))
     if inputs.get("misalignment") is not None:
         results["tilting_moment_reaction"] = solved.force[:, 4]
-    if inputs.get("roller_included_angle") is not None:
-        results["max_rib_load"] = 2.0 * results["max_element_load"] * np.sin(
-            flat(inputs["roller_included_angle"]) / 2.0)
+    results.update(shared.rib_load(inputs, results["max_element_load"], flat))
     crushed = np.logical_or(*(family.pressures(c)[2] for c in solved.contacts))
     flags = {} if family.edge_loaded is None else {"edge_loaded": np.logical_or(
         *(family.edge_loaded(c) for c in solved.contacts))}
+    crushed |= ~shared.within_model(solved.displacement, family.lever)
     return Found(results, flags, checks=[
         (NO_SPACING, overlap), (shared.NO_EQUILIBRIUM, ~solved.converged),
         (shared.crushing_code(inputs, family.crushing), crushed)])

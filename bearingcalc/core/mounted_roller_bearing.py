@@ -27,7 +27,7 @@ from bearingcalc.core.iso16281_rollers import (
     roller_geometry,
     solve_roller_equilibrium,
 )
-from bearingcalc.core.mounted_pair import PairFamily, pair_results
+from bearingcalc.core.mounted_pair import BearingFamily, pair_results
 from bearingcalc.core.solver import Along
 
 #: The roller bearing's results as mounted: the shared ones with the rib's load.
@@ -63,8 +63,9 @@ STATUS_REASONS = {
     **mounted_pair.STATUS_REASONS,
     **{code: (field, DerivedTest(
         "the most heavily loaded lamina's contact is not narrow against the roller (its "
-        "half-width exceeds Dwe/4): Hertz's theory does not hold, and the bearing would be "
-        f"crushed; the {what} is too large for it"))
+        "half-width exceeds Dwe/4), or a pair's shaft moves beyond small displacements (a "
+        "tilt above 10 mrad, a shift above a tenth of the pitch radius): the bearing's model "
+        f"does not hold, and the bearing would be crushed; the {what} is too large for it"))
        for field, (code, what) in CONTACT_TOO_WIDE.items()},
     CROWN_TOO_SMALL: ("roller_profile.crown_radius", DerivedTest(
         "the crown drops the roller's ends by 2 % of its diameter or more (or its arc does "
@@ -108,12 +109,12 @@ def _geometry(inputs: Mapping[str, Any], flat: Any) -> tuple[RollerGeometry, NDA
     return geometry, laminae
 
 
-def bearing_family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> PairFamily:
+def bearing_family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> BearingFamily:
     """What a roller bearing's inputs give a shaft as mounted (a pair's, a drive's)."""
     return _family(inputs, flat, c)
 
 
-def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> PairFamily:
+def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> BearingFamily:
     """What the rollers give a bearing as mounted: their contacts, life, pressures."""
     geometry, laminae = _geometry(inputs, flat)
     z, dwe, lwe, dpw, alpha = (flat(inputs[key]) for key in (
@@ -137,13 +138,13 @@ def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> PairFamily:
     with np.errstate(invalid="ignore", divide="ignore"):
         first_contact = np.where(alpha > 0.0, np.min(geometry.gap, axis=1) / np.sin(alpha),
                                  0.0)
-    return PairFamily("roller", lambda q: roller_contacts_at(geometry, q),
+    return BearingFamily("roller", lambda q: roller_contacts_at(geometry, q),
                       np.zeros_like(z), dpw / 2.0 * np.tan(alpha), first_contact, dpw / 2.0,
                       life, pressures, deflection, 10.0 / 3.0, CONTACT_TOO_WIDE,
                       lambda contacts: _edge_loaded(contacts.lamina_load, laminae))
 
 
-def _single(inputs: Mapping[str, Any], family: PairFamily, flat: Any,
+def _single(inputs: Mapping[str, Any], family: BearingFamily, flat: Any,
             shape: tuple[int, ...], iso281: Mapping[str, Any], speed: NDArray
             ) -> tuple[Found, dict[str, Along]]:
     """A single bearing's results, its elements along ``element``."""
@@ -158,9 +159,7 @@ def _single(inputs: Mapping[str, Any], family: PairFamily, flat: Any,
                                                                        solved))
     if misalignment is not None:
         results["tilting_moment_reaction"] = solved.reaction[:, 4]
-    if inputs.get("roller_included_angle") is not None:
-        results["max_rib_load"] = 2.0 * results["max_element_load"] * np.sin(
-            flat(inputs["roller_included_angle"]) / 2.0)
+    results.update(shared.rib_load(inputs, results["max_element_load"], flat))
     found = shared.completed(inputs, Found(
         results, {"edge_loaded": family.edge_loaded(solved)},
         [(shared.NO_EQUILIBRIUM, ~solved.converged),

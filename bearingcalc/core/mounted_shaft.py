@@ -16,13 +16,14 @@ from numpy.typing import NDArray
 
 from bearingcalc.core import mounted_ball_bearing, mounted_roller_bearing
 from bearingcalc.core.bearing_types import traits
+from bearingcalc.core.iso16281_newton import bracketed_newton
 from bearingcalc.core.iso16281_shaft import (
     ShaftBearing,
     ShaftEquilibrium,
     axial_deflection_for_load,
     solve_shaft,
 )
-from bearingcalc.core.mounted_pair import PairFamily
+from bearingcalc.core.mounted_pair import BearingFamily
 
 #: How far a floating bearing's own axial coordinate is searched [m]: its outer ring
 #: slides within this of its centred place.
@@ -37,7 +38,7 @@ class MountedShaft(NamedTuple):
 
     loaded: ShaftEquilibrium
     rest: NDArray              # (N, 5) the shaft's displacement at rest [m, rad]
-    families: list[PairFamily]
+    families: list[BearingFamily]
     lives: list[Any]
     preload: NDArray
 
@@ -63,7 +64,7 @@ def gear_load(pair: Mapping[str, NDArray], gear: str, mesh: tuple[NDArray, NDArr
     return np.stack([np.reshape(part, -1) for part in parts], axis=1)
 
 
-def bearing_family(inputs: Mapping[str, Any], flat: Any) -> PairFamily:
+def bearing_family(inputs: Mapping[str, Any], flat: Any) -> BearingFamily:
     """The family adapter of a drive's bearing (its C the catalogue's or ISO's)."""
     module = (mounted_roller_bearing if traits(str(inputs["bearing_type"])).family
               == "roller" else mounted_ball_bearing)
@@ -73,28 +74,27 @@ def bearing_family(inputs: Mapping[str, Any], flat: Any) -> PairFamily:
 
 def floating(contacts: Callable[[NDArray], Any]) -> Callable[[NDArray], Any]:
     r"""A floating bearing's contacts: its outer ring slides until its elements carry no
-    axial force, so at every q the bearing's own δx is the root of F_x(δx) = 0
-    (bisection safeguarding Newton's steps; F_x grows with δx), and its stiffness is
-    condensed, K_c = K − K_{·x}K_{x·}/K_{xx}: the minimum of its energy over δx, convex
-    in the rest of q as the energy is."""
+    axial force, so at every q [m, rad] the bearing's own δx is the root of
+    F_x(δx) = 0 [N] (:func:`~bearingcalc.core.iso16281_newton.bracketed_newton`; F_x
+    grows with δx), and its stiffness is condensed,
+
+    .. math:: K_c = K - K_{\cdot x} K_{x \cdot} / K_{xx}
+
+    the minimum of its energy over δx, convex in the rest of q as the energy is. Source:
+    static condensation (Guyan reduction) of the bearing's own axial coordinate.
+    """
     def condensed(q: NDArray) -> Any:
         trial = np.array(q, dtype=float)
-        low = np.full(trial.shape[0], -FLOATING_RANGE)
-        high = np.full(trial.shape[0], FLOATING_RANGE)
-        trial[:, 0] = 0.0
-        for _ in range(_FLOATING_ITERATIONS):
+
+        def axial(x: NDArray) -> tuple[NDArray, NDArray, NDArray]:
+            trial[:, 0] = x
             state = contacts(trial)
-            force, slope = state.force[:, 0], state.stiffness[:, 0, 0]
-            scale = np.max(np.abs(state.force[:, 1:3]), axis=1)
-            if np.all((np.abs(force) <= 1e-13 * scale) | (high - low <= 1e-16)):
-                break
-            low = np.where(force < 0.0, trial[:, 0], low)
-            high = np.where(force > 0.0, trial[:, 0], high)
-            with np.errstate(divide="ignore", invalid="ignore"):
-                step = trial[:, 0] - force / slope
-            inside = (slope > 0.0) & (step > low) & (step < high)
-            trial[:, 0] = np.where(force == 0.0, trial[:, 0],
-                                   np.where(inside, step, 0.5 * (low + high)))
+            return (state.force[:, 0], state.stiffness[:, 0, 0],
+                    1e-13 * np.max(np.abs(state.force[:, 1:3]), axis=1))
+
+        size = trial.shape[0]
+        trial[:, 0] = bracketed_newton(axial, np.zeros(size), np.full(size, -FLOATING_RANGE),
+                                       np.full(size, FLOATING_RANGE), _FLOATING_ITERATIONS)
         state = contacts(trial)
         stiffness = state.stiffness
         k_xx = stiffness[:, 0:1, 0:1]
@@ -161,7 +161,7 @@ def _preloaded(setting: Mapping[str, Any], arrangement: str, flat: Any, size: in
     return flat(setting["end_play"]) < 0.0
 
 
-def _setting_offset(setting: Mapping[str, Any], family: PairFamily, flat: Any) -> NDArray:
+def _setting_offset(setting: Mapping[str, Any], family: BearingFamily, flat: Any) -> NDArray:
     """An adjusted bearing's axial offset o from its datum: e/2 short of first contact
     for an end play e, its own deflection under the preload P for a preload."""
     if setting.get("preload") is not None:

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from bearingcalc.core.internal_geometry import (
     RATING_RATIO,
     TOLERANCE,
@@ -41,15 +43,20 @@ class GeometryEstimate(ReadsBearing):
         if any(getattr(self, name) is not None
                for names in ELEMENT_FIELDS.values() for name in names):
             return False
-        return None not in (self.bore_diameter, self.outside_diameter,
-                            self.dynamic_load_rating, self.static_load_rating)
+        return all(value is not None for value in (
+            self.bore_diameter, self.outside_diameter, self.dynamic_load_rating,
+            self.static_load_rating))
 
     def estimated_geometry(self) -> EstimatedGeometry | None:
-        """The estimate of the elements' count and size, None where none fits."""
-        args = (self.bore_diameter, self.outside_diameter)
-        ratings = (self.dynamic_load_rating, self.static_load_rating, self.angle, self.type)
+        """The estimate of the elements' count and size, None where none fits; made once,
+        from the nominal catalogue data (a study or sweep that varies them varies the
+        bearing's ratings, not its balls or rollers)."""
+        args = (_nominal(self.bore_diameter), _nominal(self.outside_diameter))
+        ratings = (_nominal(self.dynamic_load_rating), _nominal(self.static_load_rating),
+                   _nominal(self.angle), self.type)
         if self.rollers:
-            return estimate_roller_geometry(*args, self.width, *ratings)
+            width = None if self.width is None else _nominal(self.width)
+            return estimate_roller_geometry(*args, width, *ratings)
         return estimate_ball_geometry(*args, *ratings)
 
     def estimated_inputs(self) -> dict[str, Any]:
@@ -101,3 +108,8 @@ class GeometryEstimate(ReadsBearing):
                               f"within {TOLERANCE:.0%} of the catalogue's and ISO 281's C "
                               f"within {low:+.0%} to {high:+.0%} of it{nearest}: give the "
                               "maker's internal geometry", at="method")
+
+
+def _nominal(value: Any) -> float:
+    """A number of the spec, or the middle of the values a study or sweep gives it."""
+    return float(np.median(value))

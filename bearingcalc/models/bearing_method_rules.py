@@ -176,8 +176,8 @@ class RollerMountingRules(ReadsBearing):
                                   f"of a {self.type} bearing carries no load from it; leave "
                                   "roller_included_angle out")
         profile = self.roller_profile
-        if isinstance(profile, CrownProfile) and None not in (self.roller_length,
-                                                              self.roller_diameter):
+        if isinstance(profile, CrownProfile) and all(
+                value is not None for value in (self.roller_length, self.roller_diameter)):
             half, radius = self.roller_length / 2.0, profile.crown_radius
             if not radius > half:
                 return SpecFieldError("roller_profile.crown_radius", f"must be larger than "
