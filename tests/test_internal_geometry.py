@@ -127,3 +127,22 @@ def test_a_geometry_half_given_is_refused_not_estimated(cli, spec_file):
     assert run.code == 2
     lines = run.err.strip().splitlines()
     assert len(lines) == 1 and "ball_count" in lines[0] and "estimate" not in lines[0]
+
+
+def test_an_acceptable_estimate_is_found_where_a_nearer_one_is_not_acceptable(cli, spec_file):
+    """A 6205's catalogue data with C = 16 kN: the candidate nearest in C0 and C gives C
+    3.5 % above the catalogue's (outside the rule), but 8 balls of 8.5 mm give C0 within
+    3 % and C within 10 % below: that one is taken, not the spec refused."""
+    text = """kind: rolling-bearing
+type: deep-groove
+method: iso-16281
+bore_diameter: 25 mm
+outside_diameter: 52 mm
+dynamic_load_rating: 16 kN
+static_load_rating: 7.8 kN
+operating_clearance: 10 µm
+radial_load: 2 kN
+speed: 3000 rpm
+"""
+    [record] = solve_json(cli, spec_file(text))
+    assert any("internal geometry estimated" in note for note in record["warnings"])

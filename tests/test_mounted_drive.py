@@ -257,3 +257,74 @@ def test_the_unset_shaft_rests_at_its_datum(spec_file):
     """A shaft with play rests where its displacements count from: Q = 0."""
     shaft = MountedShaft(None, np.zeros((1, 5)), [], [], np.zeros(1))
     assert not shaft.rest.any()
+
+
+@pytest.mark.parametrize("vary", ["torque=100N*m:200N*m:3",
+                                  "gear_bearings.2.outside_diameter=70mm:74mm:3"])
+def test_a_drive_as_mounted_sweeps_its_loads_and_its_estimated_bearings(cli, vary):
+    """A sweep of the pair's load alone, or of an estimated bearing's catalogue data (the
+    estimate is made once, from the nominal data), solves every point."""
+    run = cli("sweep", "specs/bevel-drive-mounted.yaml", "--vary", vary, "--format", "json")
+    assert run.code == 0, run.err
+    rows = [json.loads(line) for line in run.out.splitlines() if line.strip()]
+    assert len(rows) == 3 and all(np.isfinite(row["results"]["pinion_axial_shift"])
+                                  for row in rows)
+
+
+LOCATED_BY_ONE_TAPERED = """kind: bevel-drive
+name: spiral bevel drive, as mounted
+method: iso-16281
+gear_a: {teeth: 14}
+gear_b: {teeth: 39}
+module: 4.5 mm
+shaft_angle: 90 deg
+face_width: 25 mm
+pressure_angle: 20 deg
+spiral_angle: 0 deg
+rotation: counterclockwise
+input_speed: 1750 rpm
+torque: 160 N*m
+rating:
+  quality_number: 11
+  material: carburized
+  grade: 1
+  mounting: one-straddle
+  crowned: true
+  cutter_radius: 4.5 in
+  geometry_factor_bending: 0.222
+  geometry_factor_bending_gear: 0.217
+  geometry_factor_pitting: 0.109
+pinion_bearings:
+  - {position: 80 mm, locating: true, type: tapered-roller, dynamic_load_rating: 54 kN,
+     static_load_rating: 63 kN, contact_angle: 14 deg, load_factors: {e: 0.37, y: 1.6, y0: 0.9},
+     bore_diameter: 30 mm, outside_diameter: 62 mm, width: 17.25 mm}
+  - {position: 150 mm, type: deep-groove, dynamic_load_rating: 20.3 kN,
+     static_load_rating: 11.2 kN, bore_diameter: 30 mm, outside_diameter: 62 mm,
+     width: 16 mm, operating_clearance: 10 µm}
+gear_bearings:
+  - {position: 20 mm, type: cylindrical-roller, dynamic_load_rating: 62 kN,
+     static_load_rating: 56 kN, bore_diameter: 35 mm, outside_diameter: 72 mm, width: 17 mm,
+     operating_clearance: 15 µm}
+  - {position: 140 mm, locating: true, type: deep-groove, dynamic_load_rating: 27 kN,
+     static_load_rating: 15.3 kN, bore_diameter: 35 mm, outside_diameter: 72 mm, width: 17 mm,
+     operating_clearance: 10 µm}
+reliability: 90 %
+lubrication: {viscosity: 68 mm^2/s}
+contamination_factor: 0.5
+limits:
+  min_rating_life: 5000 h
+  min_static_safety: 1.0
+  min_bending_safety: 1.0
+  min_contact_safety: 1.0
+"""
+
+
+def test_a_shaft_beyond_small_displacements_is_refused(cli, spec_file):
+    """A spiral drive's pinion located by one tapered bearing (its thrust one way) and
+    floating on a deep-groove one: the shaft tilts far beyond the rings' small
+    displacements, and is refused in one line, not reported as millimetres at the
+    mesh."""
+    run = cli("solve", spec_file(LOCATED_BY_ONE_TAPERED))
+    assert run.code == 2, run.out
+    lines = run.err.strip().splitlines()
+    assert len(lines) == 1 and ": pinion_bearings: " in lines[0], run.err
