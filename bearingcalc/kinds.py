@@ -316,12 +316,16 @@ KINDS: dict[str, Kind] = {
         *(Kind(name, summary, "bearingcalc.models.rolling_bearing:RollingBearingSpec",
                "bearingcalc.core.rolling_bearing",
                margins=("life_margin", "static_safety_margin", "contact_pressure_margin",
-                        "spin_to_roll_margin"),
+                        "spin_to_roll_margin", "stiffness_radial_margin",
+                        "stiffness_axial_margin"),
                governing=("life_margin", ("modified_reference_rating_life",
                                           "modified_rating_life"), "static_safety_factor"),
                judged={"life_margin": LIFE, "static_safety_margin": STATIC,
                        "contact_pressure_margin": CONTACT,
-                       "spin_to_roll_margin": SPIN_TO_ROLL},
+                       "spin_to_roll_margin": SPIN_TO_ROLL,
+                       **{f"stiffness_{direction}_margin": Judged(
+                           f"{direction} stiffness", f"stiffness_{direction}", True, "ratio")
+                          for direction in ("radial", "axial")}},
                plots=(Plot("duty-damage"), Plot("life-against-load")),
                standards=ROLLING_BEARING_STANDARDS)
           for name, summary in (

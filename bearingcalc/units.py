@@ -62,11 +62,12 @@ DENSITY = Dimension("density", "kg/m³", "gram / meter ** 3", "7850 kg/m^3", "kg
 POWER = Dimension("power", "W", "gram * meter ** 2 / second ** 3", "9.4 kW", "kW", 1e-3)
 TORQUE = Dimension("torque", "N·m", "gram * meter ** 2 / second ** 2", "150 N*m", "N·m", 1e-3)
 MASS = Dimension("mass", "kg", "gram", "0.13 kg", "kg", 1e-3)
+STIFFNESS = Dimension("stiffness", "N/m", "gram / second ** 2", "100 N/µm", "N/µm", 1e-3)
 #: A plain number (a ratio such as a groove conformity), written without a unit.
 DIMENSIONLESS = Dimension("plain number", "1", "dimensionless", "0.52", "")
 DIMENSIONS = {d.name: d for d in (LENGTH, ANGLE, ANGULAR_SPEED, ANGULAR_ACCEL, FORCE, STRESS,
                                   TIME, KINEMATIC_VISCOSITY, TEMPERATURE, DENSITY, POWER,
-                                  TORQUE, MASS)}
+                                  TORQUE, MASS, STIFFNESS)}
 
 #: unit -> (scale, offset): kelvin = scale · value + offset.
 TEMPERATURE_UNITS: dict[str, tuple[float, float]] = {

@@ -18,7 +18,9 @@ ISO 281's load-case table of an adjusted pair.
 
 from __future__ import annotations
 
+import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -229,3 +231,27 @@ def test_an_angular_contact_bearing_meets_iso_281s_x_and_y_at_a_half_load_zone(
         share = results["dynamic_equivalent_reference_load"] / results[
             "equivalent_dynamic_load"]
         assert 0.75 < share < 0.94, ratio
+
+
+def test_the_stiffness_limits_judge_the_bearing_as_mounted(cli, spec_file):
+    """limits.min_stiffness_radial and min_stiffness_axial: margins k/k_min − 1, a FAIL
+    below; refused in one line under the catalogue method, whose bearing has none."""
+    text = (Path("specs") / "rolling-bearing-mounted.yaml").read_text(encoding="utf-8")
+    text = text.replace("  min_rating_life: 1500 h", "  min_rating_life: 1500 h\n"
+                        "  min_stiffness_radial: 100 N/µm\n  min_stiffness_axial: 50 N/µm")
+    run = cli("solve", spec_file(text), "--format", "json")
+    assert run.code == 1, run.err
+    record = json.loads(run.out)
+    results = record["results"]
+    assert results["stiffness_radial_margin"] == pytest.approx(
+        results["stiffness_radial"] / 1e8 - 1.0, rel=1e-12)
+    assert results["stiffness_axial_margin"] == pytest.approx(
+        results["stiffness_axial"] / 5e7 - 1.0, rel=1e-12)
+    failed = [v["key"] for v in record["verdicts"] if not v["passed"]]
+    assert failed == ["stiffness_axial_margin"]
+    catalogue = text.replace("method: iso-16281\n", "").replace(
+        "operating_clearance: 10 µm\n", "").replace("tilting_moment: 2 N*m\n", "")
+    run = cli("solve", spec_file(catalogue))
+    assert run.code == 2
+    lines = run.err.strip().splitlines()
+    assert len(lines) == 1 and ": limits.min_stiffness_radial: " in lines[0], run.err

@@ -52,6 +52,8 @@ RESULTS: dict[str, tuple[str, str]] = {
     "stiffness_axial": ("N/m", "∂Fx/∂δx"),
     "stiffness_tilt": ("N·m/rad", "∂Mz/∂θz"),
     "equilibrium_residual": ("1", "the largest unbalanced force over the largest load"),
+    "stiffness_radial_margin": ("1", "stiffness_radial / min_stiffness_radial − 1"),
+    "stiffness_axial_margin": ("1", "stiffness_axial / min_stiffness_axial − 1"),
 }
 #: The tangent stiffness matrix's coordinates, in its order: the displacements x, y, z
 #: and the tilts about y and z (a pair's: its shaft's, midway between its pressure
@@ -321,9 +323,22 @@ def completed(inputs: Mapping[str, Any], found: Found, pressures: tuple[NDArray,
     the warnings every bearing as mounted raises."""
     found = reshaped(found, shape)
     found.results.update(pressure_results(inputs, *pressures, shape))
+    found.results.update(stiffness_margins(inputs, found.results))
     found.results.update(life_results(inputs, reference_life, iso281, speed, shape, family))
     found.flags.update(warning_flags(found.results))
     return found
+
+
+def stiffness_margins(inputs: Mapping[str, Any], results: Mapping[str, NDArray]
+                      ) -> dict[str, NDArray]:
+    """k/k_min − 1 of the radial and axial stiffness, where the limits give k_min."""
+    margins = {}
+    for direction in ("radial", "axial"):
+        least = inputs.get(f"min_stiffness_{direction}")
+        if least is not None:
+            margins[f"stiffness_{direction}_margin"] = (
+                results[f"stiffness_{direction}"] / np.asarray(least, dtype=float) - 1.0)
+    return margins
 
 
 def warning_flags(results: Mapping[str, NDArray]) -> dict[str, NDArray]:

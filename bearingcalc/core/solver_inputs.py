@@ -136,6 +136,8 @@ class _MountingInputs(TypedDict, total=False):
     crown_radius: MaybeNumbers           # a "crown" profile's radius [m]
     laminae: MaybeNumbers                # slices of each roller [1]
     roller_included_angle: MaybeNumbers  # a tapered roller's included angle [rad]
+    min_stiffness_radial: MaybeNumbers   # the least radial stiffness as mounted [N/m]
+    min_stiffness_axial: MaybeNumbers    # the least axial stiffness as mounted [N/m]
     setting_end_play: MaybeNumbers       # a pair's end play, negative: preload [m]
     setting_preload: MaybeNumbers        # a pair's preload at rest, each bearing [N]
     pair_spacing: MaybeNumbers           # a pair's pressure centres' distance [m]

@@ -40,6 +40,8 @@ MOUNTED_GEOMETRY = {
 #: The fields that size the rolling elements, by family.
 ELEMENT_FIELDS = {"ball": ("ball_count", "ball_diameter"),
                   "roller": ("roller_count", "roller_diameter", "roller_length")}
+#: The limits judged only as mounted: the least stiffnesses.
+STIFFNESS_LIMITS = ("min_stiffness_radial", "min_stiffness_axial")
 #: The method's fields of roller bearings alone.
 ROLLER_MOUNTING_FIELDS = ("roller_profile", "laminae", "roller_included_angle")
 #: The largest operating clearance (or preload) of a roller bearing, a share of Dwe.
@@ -236,6 +238,16 @@ class MethodRules(RollerMountingRules):
             return None
         fi, fo, dw = parts
         return (fi + fo - 1.0) * dw
+
+    @rule
+    def _stiffness_limits_need_the_method(self) -> SpecFieldError | None:
+        if self.method == "iso-16281":
+            return None
+        for name in STIFFNESS_LIMITS:
+            if getattr(self.limits, name, None) is not None:
+                return SpecFieldError(f"limits.{name}", "is judged on the bearing as "
+                                      "mounted: give method: iso-16281, or leave it out")
+        return None
 
     @rule
     def _mounting_fields_need_the_method(self) -> SpecFieldError | None:

@@ -23,6 +23,7 @@ from bearingcalc.units import (
     KINEMATIC_VISCOSITY,
     LENGTH,
     POWER,
+    STIFFNESS,
     STRESS,
     TEMPERATURE,
     TIME,
@@ -148,6 +149,8 @@ PLAUSIBLE_POSITION = Plausible(0.0, 100.0, "up to 100 m", ("mm", "m"))
 PLAUSIBLE_FORCE = Plausible(1e-6, 1e9, "1 µN to 10⁶ kN", ("N", "kN"))
 #: Stresses and pressure limits from a kilopascal to 10⁶ MPa (steels' contact limits are
 #: near 4000 MPa).
+#: Stiffnesses from 1 N/mm to 10⁷ N/µm (a bearing's is some 10 to 10⁴ N/µm).
+PLAUSIBLE_STIFFNESS = Plausible(1e3, 1e13, "1 N/mm to 10⁷ N/µm", ("N/µm", "N/mm", "N/m"))
 PLAUSIBLE_STRESS = Plausible(1e3, 1e12, "1 kPa to 10⁶ MPa", ("MPa", "GPa", "Pa"))
 #: Times from a millisecond to 10⁹ hours (required lives are 10² to 10⁶ h).
 PLAUSIBLE_TIME = Plausible(1e-3, 3.6e12, "1 ms to 10⁹ h", ("h", "s"))
@@ -319,6 +322,7 @@ AngularAccel = quantity(ANGULAR_ACCEL)
 Force = quantity(FORCE, "non-negative", plausible=PLAUSIBLE_FORCE)
 PositiveForce = quantity(FORCE, "positive", plausible=PLAUSIBLE_FORCE)
 PositiveStress = quantity(STRESS, "positive", plausible=PLAUSIBLE_STRESS)
+PositiveStiffness = quantity(STIFFNESS, "positive", plausible=PLAUSIBLE_STIFFNESS)
 ElasticModulus = quantity(STRESS, "positive", plausible=PLAUSIBLE_MODULUS)
 PositiveTime = quantity(TIME, "positive", plausible=PLAUSIBLE_TIME)
 PositiveViscosity = quantity(KINEMATIC_VISCOSITY, "positive", plausible=PLAUSIBLE_VISCOSITY)

@@ -15,8 +15,13 @@ from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
 from bearingcalc.models.bearing_estimate import GeometryEstimate
 from bearingcalc.models.bearing_geometry_rules import GeometryRules
+from bearingcalc.models.bearing_limits import BallBearingLimits
 from bearingcalc.models.bearing_load_rules import LoadFactorRules, LoadRules
-from bearingcalc.models.bearing_method_rules import MethodRules, MountingFields
+from bearingcalc.models.bearing_method_rules import (
+    STIFFNESS_LIMITS,
+    MethodRules,
+    MountingFields,
+)
 from bearingcalc.models.bearing_operating_rules import (
     ArrangementRules,
     LubricationRules,
@@ -49,8 +54,6 @@ from bearingcalc.models.quantities import (
     Force,
     PositiveForce,
     PositiveLength,
-    PositiveStress,
-    PositiveTime,
 )
 from bearingcalc.models.rules import rule
 
@@ -102,17 +105,6 @@ class LoadFactors(SpecModel):
     y2: Ratio | None = Field(None, description="double row: Y for Fa/Fr > e")
     x0: Ratio | None = Field(None, description="static radial factor X0")
     y0: Ratio | None = Field(None, description="static axial factor Y0")
-
-
-class BallBearingLimits(SpecModel):
-    min_rating_life: PositiveTime | None = Field(None, description="judged on the modified "
-                                                 "rating life; not judged when absent")
-    min_static_safety: Ratio = Field(1.0, description="smallest static safety factor s0")
-    max_spin_to_roll: Ratio | None = Field(None, description="largest |spin/roll|, judged "
-                                           "at the race that is not controlling")
-    max_contact_pressure: PositiveStress | None = Field(
-        None, description="largest Hertz pressure; ISO 76's by default: 4200 MPa for ball "
-        "bearings, 4000 MPa for roller bearings")
 
 
 class BearingFields(SpecModel):
@@ -378,6 +370,7 @@ class RollingBearingSpec(MethodRules, PairRules, GeometryEstimate, BinOilRules,
             "poisson_ratio": self.material.poisson_ratio,
             "max_contact_pressure": self.contact_pressure_limit,
             **self.mounting_inputs(),
+            **{name: getattr(self.limits, name) for name in STIFFNESS_LIMITS},
         }
 
     @property
