@@ -35,6 +35,11 @@ if TYPE_CHECKING:
 #: Status of a design whose inputs are valid but whose results overflow double precision.
 OUT_OF_RANGE = 99
 #: The heading of the table of an axis's results, where its rows carry none of their own.
+#: The gears' displacements at the mesh a drive as mounted may limit, in words.
+MESH_DISPLACEMENTS = {"mesh_offset_change": "offset change E",
+                      "pinion_axial_shift": "pinion axial shift P",
+                      "gear_axial_shift": "gear axial shift G",
+                      "shaft_angle_change": "shaft angle change Σ"}
 TABLE_HEADINGS = {"bin": "duty cycle", "element": "rolling elements as mounted"}
 OUT_OF_RANGE_REASON = ("", "the design's numbers are out of the range of double precision; "
                        "check the magnitudes of the inputs")
@@ -337,14 +342,17 @@ KINDS: dict[str, Kind] = {
              "bearingcalc.models.bevel_drive:BevelDriveSpec",
              "bearingcalc.core.bevel_drive",
              margins=("slip_margin", "face_width_margin", "bending_safety_margin",
-                      "contact_safety_margin", "life_margin", "static_safety_margin"),
+                      "contact_safety_margin", "life_margin", "static_safety_margin",
+                      *(f"{key}_margin" for key in MESH_DISPLACEMENTS)),
              governing=("life_margin", "system_modified_rating_life", "static_safety_margin"),
              judged={**PAIR, "life_margin": Judged("system modified rating life",
                                                    "system_modified_rating_life", True,
                                                    "ratio", "required"),
                      "static_safety_margin": Judged("smallest static safety s0",
                                                     smallest_bearing_safety, True,
-                                                    limit_of="static safety s0")},
+                                                    limit_of="static safety s0"),
+                     **{f"{key}_margin": Judged(name, key, False, "fraction")
+                        for key, name in MESH_DISPLACEMENTS.items()}},
              plots=(Plot("duty-damage"), Plot("bearing-lives"),
                     Plot("shaft-bending", "bearingcalc.core.bevel_drive:shaft_bending_lines")),
              standards=BEVEL_DRIVE_STANDARDS),

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -328,3 +329,27 @@ def test_a_shaft_beyond_small_displacements_is_refused(cli, spec_file):
     assert run.code == 2, run.out
     lines = run.err.strip().splitlines()
     assert len(lines) == 1 and ": pinion_bearings: " in lines[0], run.err
+
+
+def test_the_mesh_limits_judge_the_drive_as_mounted(cli, spec_file):
+    """limits.max_pinion_axial_shift and friends: margins 1 − |x|/limit in the verdict;
+    refused in one line under the catalogue method."""
+    text = (Path("specs") / "bevel-drive-mounted.yaml").read_text(encoding="utf-8")
+    limited = text.replace("  min_static_safety: 1.0", "  min_static_safety: 1.0\n"
+                           "  max_pinion_axial_shift: 40 µm\n  max_shaft_angle_change: 0.01 deg")
+    run = cli("solve", spec_file(limited), "--format", "json")
+    assert run.code == 1, run.err
+    record = json.loads(run.out)
+    results = record["results"]
+    assert results["pinion_axial_shift_margin"] == pytest.approx(
+        1.0 - abs(results["pinion_axial_shift"]) / 40e-6, rel=1e-12)
+    assert results["shaft_angle_change_margin"] == pytest.approx(
+        1.0 - abs(results["shaft_angle_change"]) / math.radians(0.01), rel=1e-12)
+    assert [v["key"] for v in record["verdicts"] if not v["passed"]] == [
+        "pinion_axial_shift_margin"]
+    catalogue = limited.replace("method: iso-16281\n", "").replace(
+        "pinion_setting: {preload: 1 kN}    # each bearing's axial load at rest\n", "")
+    run = cli("solve", spec_file(catalogue))
+    assert run.code == 2
+    assert any(": limits.max_pinion_axial_shift: " in line
+               for line in run.err.strip().splitlines()), run.err

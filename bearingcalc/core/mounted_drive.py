@@ -38,6 +38,9 @@ RESULTS: dict[str, tuple[str, str]] = {
     "gear_axial_shift": ("m", "G: the gear's shift along its axis, away from the pitch "
                          "apex, relative to where the axes cross"),
     "shaft_angle_change": ("rad", "Σ: the change of the shaft angle, positive opening"),
+    **{f"{key}_margin": ("1", f"1 − |{key}| / max_{key}") for key in (
+        "mesh_offset_change", "pinion_axial_shift", "gear_axial_shift",
+        "shaft_angle_change")},
 }
 #: Each bearing's results as mounted, along the member axis (declared with the drive's).
 MOUNTED_COLUMNS = ("max_element_load", "reference_rating_life",
@@ -211,6 +214,12 @@ def evaluate_mounted(inputs: Mapping[str, Any], pair: Any, speeds: Mapping[str, 
         checks += own_checks
         results.update(shaft_results(shaft, solved, mesh, shape))
     results.update(mesh_displacements(pair.results, shafts, shape))
+    for key in ("mesh_offset_change", "pinion_axial_shift", "gear_axial_shift",
+                "shaft_angle_change"):
+        limit = inputs.get(f"max_{key}")
+        if limit is not None:
+            results[f"{key}_margin"] = 1.0 - np.abs(results[key]) / np.asarray(limit,
+                                                                              dtype=float)
     return mounted, results, checks
 
 

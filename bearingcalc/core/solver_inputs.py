@@ -218,6 +218,10 @@ class _BevelDriveInputs(_BevelPairInputs):
     input_speed: Numbers                 # the pinion's [rad/s]
     min_rating_life: MaybeNumbers        # [s]
     min_static_safety: Numbers           # [1]
+    max_mesh_offset_change: MaybeNumbers   # as mounted, the largest |E| [m]
+    max_pinion_axial_shift: MaybeNumbers   # |P| [m]
+    max_gear_axial_shift: MaybeNumbers     # |G| [m]
+    max_shaft_angle_change: MaybeNumbers   # |Σ| [rad]
     #: "pinion" and "gear" -> the shaft's bearings
     shafts: dict[str, list[MountedBearingInputs]]
     #: "pinion" and "gear" -> "locating-floating", "back-to-back" or "face-to-face"

@@ -33,6 +33,8 @@ from bearingcalc.models.plain_numbers import Ratio
 from bearingcalc.models.quantities import (
     AngularSpeed,
     Length,
+    PositiveAngle,
+    PositiveLength,
     PositivePower,
     PositiveTime,
     Torque,
@@ -52,6 +54,9 @@ if TYPE_CHECKING:
 #: Keys of a ball-bearing spec that the drive sets for every bearing itself.
 _DRIVE_SETS = ("radial_load", "axial_load", "speed", "inner_speed", "outer_speed")
 SHAFTS = ("pinion", "gear")
+#: The limits of the gears' displacements at the mesh, judged as mounted.
+MESH_LIMITS = ("max_mesh_offset_change", "max_pinion_axial_shift", "max_gear_axial_shift",
+               "max_shaft_angle_change")
 
 
 ShaftArrangement = Literal["locating-floating", "back-to-back", "face-to-face"]
@@ -87,6 +92,14 @@ class BevelDriveLimits(BevelGearsLimits):
     min_rating_life: PositiveTime | None = Field(None, description="judged on the system's "
                                                  "modified rating life")
     min_static_safety: Ratio = Field(1.0, description="judged on the smallest s0")
+    max_mesh_offset_change: PositiveLength | None = Field(
+        None, description="iso-16281: the largest |E| at the mesh")
+    max_pinion_axial_shift: PositiveLength | None = Field(
+        None, description="iso-16281: the largest |P| at the mesh")
+    max_gear_axial_shift: PositiveLength | None = Field(
+        None, description="iso-16281: the largest |G| at the mesh")
+    max_shaft_angle_change: PositiveAngle | None = Field(
+        None, description="iso-16281: the largest |Σ| at the mesh")
 
 
 DriveBin = bin_model("DriveBin", {
@@ -349,6 +362,7 @@ class BevelDriveSpec(DriveMountingRules, BinOilRules, DutyCycleRules, BevelPair)
         inputs["input_speed"] = self.input_speed
         inputs["min_rating_life"] = self.limits.min_rating_life
         inputs["min_static_safety"] = self.limits.min_static_safety
+        inputs.update({name: getattr(self.limits, name) for name in MESH_LIMITS})
         inputs["shafts"] = {shaft: [self._bearing_inputs(bearing) for bearing in bearings]
                             for shaft, bearings in self.shafts()}
         inputs["arrangements"] = {shaft: self.arrangement(shaft) for shaft, _ in self.shafts()}

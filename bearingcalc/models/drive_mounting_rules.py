@@ -22,6 +22,7 @@ class DriveMountingRules:
         pinion_setting: Any
         gear_setting: Any
         duty_cycle: Any
+        limits: Any
         shafts: Callable[[], list[tuple[str, list[Any]]]]
         arrangement: Callable[[str], str]
 
@@ -63,6 +64,17 @@ class DriveMountingRules:
                         "of a drive as one bearing: leave arrangement out, or give "
                         "method: iso-281"))
         return problems
+
+    @rule
+    def _mesh_limits_need_the_method(self) -> SpecFieldError | None:
+        if self.method == "iso-16281":
+            return None
+        for name in ("max_mesh_offset_change", "max_pinion_axial_shift",
+                     "max_gear_axial_shift", "max_shaft_angle_change"):
+            if getattr(self.limits, name, None) is not None:
+                return SpecFieldError(f"limits.{name}", "is judged on the drive as mounted: "
+                                      "give method: iso-16281, or leave it out")
+        return None
 
     @whole_spec_rule
     def _mounted_drive_at_one_point(self) -> SpecFieldError | None:

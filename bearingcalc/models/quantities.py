@@ -317,6 +317,7 @@ def quantity(dimension: Dimension, sign: str | None = None,
 Length = quantity(LENGTH, plausible=PLAUSIBLE_POSITION)
 PositiveLength = quantity(LENGTH, "positive", plausible=PLAUSIBLE_LENGTH)
 Angle = quantity(ANGLE)
+PositiveAngle = quantity(ANGLE, "positive")
 AngularSpeed = quantity(ANGULAR_SPEED, plausible=PLAUSIBLE_SPEED)
 AngularAccel = quantity(ANGULAR_ACCEL)
 Force = quantity(FORCE, "non-negative", plausible=PLAUSIBLE_FORCE)
