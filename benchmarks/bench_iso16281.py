@@ -21,11 +21,7 @@ import os
 for _variable in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_variable, "1")
 
-import argparse  # noqa: E402
-import resource  # noqa: E402
-import statistics  # noqa: E402
-import time  # noqa: E402
-
+import _chunked  # noqa: E402
 import numpy as np  # noqa: E402
 
 from bearingcalc.core import iso16281_balls  # noqa: E402
@@ -78,51 +74,20 @@ def iterations(geometry: BallGeometry, loads: np.ndarray) -> list[int]:
     return taken.tolist()
 
 
-def timed(geometry: BallGeometry, loads: np.ndarray, chunk: int) -> tuple[float, bool]:
-    """Seconds to solve every design, ``chunk`` designs a call; whether all converged."""
-    start = time.perf_counter()
-    ok = True
-    for first in range(0, loads.shape[0], chunk):
-        part = BallGeometry(*(a[first:first + chunk] for a in geometry))
-        solved = iso16281_balls.solve_ball_equilibrium(part, loads[first:first + chunk])
-        ok = ok and bool(solved.converged.all() and np.max(solved.residual) < 1e-9)
-    return time.perf_counter() - start, ok
-
-
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--designs", type=int, default=30_000)
-    parser.add_argument("--runs", type=int, default=3)
-    parser.add_argument("--large", type=int, default=100_000, help="0 skips the large run")
-    parser.add_argument("--chunk", type=int, default=30_000,
-                        help="designs per call in the large run")
-    parser.add_argument("--seed", type=int, default=0)
-    args = parser.parse_args()
+    args = _chunked.parser(__doc__, designs=30_000).parse_args()
+    solve = iso16281_balls.solve_ball_equilibrium
     geometry, loads = designs(args.designs, args.seed)
-    iso16281_balls.solve_ball_equilibrium(BallGeometry(*(a[:100] for a in geometry)),
-                                          loads[:100])
-    times = []
-    for _ in range(args.runs):
-        seconds, ok = timed(geometry, loads, args.designs)
-        assert ok, "a design did not converge"
-        times.append(seconds)
-    rate = args.designs / statistics.median(times)
-    print(f"{args.designs} designs in one call, {args.runs} runs: median "
-          f"{statistics.median(times):.3f} s = {rate:,.0f} designs/s, best "
-          f"{args.designs / min(times):,.0f}/s (target >= {TARGET:,}/s)")
+    _chunked.one_call(solve, geometry, loads, args.runs, TARGET, f"{args.designs} designs")
     sample = 2000
-    counts = iterations(BallGeometry(*(a[:sample] for a in geometry)), loads[:sample])
+    counts = iterations(_chunked.head(geometry, sample), loads[:sample])
     quartiles = np.percentile(counts, [50, 90, 99, 100])
     print(f"Newton iterations over the first {sample} designs: median {quartiles[0]:.0f}, "
           f"90 % {quartiles[1]:.0f}, 99 % {quartiles[2]:.0f}, max {quartiles[3]:.0f}")
     if args.large:
         geometry, loads = designs(args.large, args.seed + 1)
-        seconds, ok = timed(geometry, loads, args.chunk)
-        assert ok, "a design did not converge"
-        print(f"{args.large} designs in chunks of {args.chunk}: {seconds:.2f} s = "
-              f"{args.large / seconds:,.0f} designs/s")
-    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
-    print(f"peak resident memory: {peak:.0f} MB (target < 400 MB)")
+        _chunked.in_chunks(solve, geometry, loads, args.chunk)
+    _chunked.peak_memory()
 
 
 if __name__ == "__main__":

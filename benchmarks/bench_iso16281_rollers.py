@@ -20,11 +20,7 @@ import os
 for _variable in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_variable, "1")
 
-import argparse  # noqa: E402
-import resource  # noqa: E402
-import statistics  # noqa: E402
-import time  # noqa: E402
-
+import _chunked  # noqa: E402
 import numpy as np  # noqa: E402
 
 from bearingcalc.core.iso16281_rollers import (  # noqa: E402
@@ -55,46 +51,17 @@ def designs(n: int, laminae: int, seed: int) -> tuple[RollerGeometry, np.ndarray
     return geometry, np.stack([fa, fr, zero, zero, moment], axis=1)
 
 
-def timed(geometry: RollerGeometry, loads: np.ndarray, chunk: int) -> tuple[float, bool]:
-    """Seconds to solve every design, ``chunk`` designs a call; whether all converged."""
-    start = time.perf_counter()
-    ok = True
-    for first in range(0, loads.shape[0], chunk):
-        part = RollerGeometry(*(a[first:first + chunk] for a in geometry))
-        solved = solve_roller_equilibrium(part, loads[first:first + chunk])
-        ok = ok and bool(solved.converged.all() and np.max(solved.residual) < 1e-9)
-    return time.perf_counter() - start, ok
-
-
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--designs", type=int, default=10_000)
-    parser.add_argument("--runs", type=int, default=3)
-    parser.add_argument("--large", type=int, default=100_000, help="0 skips the large run")
-    parser.add_argument("--chunk", type=int, default=10_000,
-                        help="designs per call in the large run")
+    parser = _chunked.parser(__doc__, designs=10_000)
     parser.add_argument("--laminae", type=int, default=30)
-    parser.add_argument("--seed", type=int, default=0)
     args = parser.parse_args()
     geometry, loads = designs(args.designs, args.laminae, args.seed)
-    solve_roller_equilibrium(RollerGeometry(*(a[:100] for a in geometry)), loads[:100])
-    times = []
-    for _ in range(args.runs):
-        seconds, ok = timed(geometry, loads, args.designs)
-        assert ok, "a design did not converge"
-        times.append(seconds)
-    rate = args.designs / statistics.median(times)
-    print(f"{args.designs} designs of {args.laminae} laminae in one call, {args.runs} runs: "
-          f"median {statistics.median(times):.3f} s = {rate:,.0f} designs/s, best "
-          f"{args.designs / min(times):,.0f}/s (target >= {TARGET:,}/s)")
+    _chunked.one_call(solve_roller_equilibrium, geometry, loads, args.runs, TARGET,
+                      f"{args.designs} designs of {args.laminae} laminae")
     if args.large:
         geometry, loads = designs(args.large, args.laminae, args.seed + 1)
-        seconds, ok = timed(geometry, loads, args.chunk)
-        assert ok, "a design did not converge"
-        print(f"{args.large} designs in chunks of {args.chunk}: {seconds:.2f} s = "
-              f"{args.large / seconds:,.0f} designs/s")
-    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
-    print(f"peak resident memory: {peak:.0f} MB (target < 400 MB)")
+        _chunked.in_chunks(solve_roller_equilibrium, geometry, loads, args.chunk)
+    _chunked.peak_memory()
 
 
 if __name__ == "__main__":

@@ -16,6 +16,7 @@ import pytest
 from tests import iso16281_reference as reference
 from tests import iso16281_shaft_reference as shaft
 from tests.conftest import solve_json
+from tests.mounted_specs import TAPERED_ROLLERS
 
 STEEL = 207.5e9
 
@@ -42,13 +43,7 @@ TAPERED_PAIR = """kind: rolling-bearing
 type: tapered-roller
 arrangement: {arrangement}
 method: iso-16281
-dynamic_load_rating: 54 kN
-static_load_rating: 63 kN
-roller_count: 17
-roller_diameter: 7.5 mm
-roller_length: 14 mm
-pitch_diameter: 45 mm
-contact_angle: 14 deg
+""" + TAPERED_ROLLERS + """\
 width: 17.25 mm
 {setting}
 radial_load: 6 kN

@@ -16,6 +16,7 @@ import pytest
 
 from tests import iso16281_reference as reference
 from tests.conftest import solve_json
+from tests.mounted_specs import TAPERED_ROLLERS
 
 #: The material a spec that names none takes: steel, E = 207.5 GPa, ν = 0.3.
 STEEL = 207.5e9
@@ -37,13 +38,7 @@ speed: 3000 rpm
 TAPERED = """kind: rolling-bearing
 type: tapered-roller
 method: iso-16281
-dynamic_load_rating: 54 kN
-static_load_rating: 63 kN
-roller_count: 17
-roller_diameter: 7.5 mm
-roller_length: 14 mm
-pitch_diameter: 45 mm
-contact_angle: 14 deg
+""" + TAPERED_ROLLERS + """\
 radial_load: 6 kN
 axial_load: {axial}
 speed: 3000 rpm
@@ -192,7 +187,7 @@ def test_laminae_of_several_counts_in_one_sweep_equal_their_own_solves(cli, spec
     ("roller_profile: {crown_radius: 2 mm}", "roller_profile.crown_radius"),
     ("roller_profile: {crown_radius: 1 m, radius: 2 m}", "roller_profile.radius"),
     ("roller_included_angle: 4 deg", "roller_included_angle"),
-    ("rows: 2", "rows"),
+    ("rows: 3", "rows"),
     ("axial_load: 1 kN", "axial_load"),
     ("tilting_moment: 2 N*m\nmisalignment: 1 mrad", "misalignment"),
 ])

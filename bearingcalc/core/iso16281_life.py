@@ -158,11 +158,33 @@ ROLLER_STATIONARY_MEAN = 0.364
 ROLLER_RACEWAY_RATIO = 1.038
 
 
+def edge_stress_factors(laminae: ArrayLike, width: int | None = None) -> NDArray:
+    r"""ISO/TS 16281's edge-stress factor f_k of lamina k = 1 … n_s of a roller, which
+    raises the load of the laminae towards the roller's ends in the life:
+
+    .. math:: f_k = 1 - \frac{0.01}{\ln\left(1.985\left|\frac{2k - n_s - 1}{2n_s - 2}
+              \right|\right)}
+
+    1 at the roller's middle, 1 + 0.01/ln(1/0.9925) = 2.33 at its end laminae.
+    ``laminae``: each design's n_s; the result is (N, ``width``), 1 past a design's own
+    laminae (``width`` defaults to the largest n_s). Source: ISO/TS 16281:2008, 8.3
+    (eq. 60).
+    """
+    count = np.atleast_1d(np.asarray(laminae, dtype=float))[:, None]
+    k = np.arange(1, int(count.max() if width is None else width) + 1, dtype=float)
+    share = np.abs((2.0 * k - count - 1.0) / (2.0 * count - 2.0))
+    with np.errstate(divide="ignore"):
+        # the middle lamina of an odd count sits at share 0: ln → −∞ and f → 1
+        factor = 1.0 - 0.01 / np.log(1.985 * share)
+    return np.where(k <= count, factor, 1.0)
+
+
 def roller_reference_life(lamina_load: NDArray, roller_count: ArrayLike,
                           roller_diameter: ArrayLike, pitch_diameter: ArrayLike,
                           contact_angle: ArrayLike, dynamic_load_rating: ArrayLike, *,
                           rows: ArrayLike = 1, inner_rotates: ArrayLike = True,
-                          laminae: ArrayLike | None = None) -> ReferenceLife:
+                          laminae: ArrayLike | None = None,
+                          edge_stress: ArrayLike = False) -> ReferenceLife:
     r"""ISO/TS 16281's reference rating life of a roller bearing from every lamina's
     load, ``lamina_load`` (N, Zmax, n_s), NaN past Z.
 
@@ -178,9 +200,13 @@ def roller_reference_life(lamina_load: NDArray, roller_count: ArrayLike,
     .. math:: L_{10r} = \left[\sum_k (q_{ei,k}/q_{ci})^{9/2} + (q_{ee,k}/q_{ce})^{9/2}
               \right]^{-8/9} \cdot 10^6
 
-    revolutions; P_ref with L10r = (C/P_ref)^(10/3)·10⁶. ``laminae``: each design's n_s
-    where some are padded with NaN (default: every one of ``lamina_load``'s). Source:
-    ISO/TS 16281:2008, 8.3 (eqs. 47 to 65), its edge-stress factor off.
+    revolutions; P_ref with L10r = (C/P_ref)^(10/3)·10⁶, the sum over the laminae of
+    every row. ``laminae``: each design's n_s of one row where some are padded with NaN
+    (default: every one of a row's in ``lamina_load``, whose last axis holds the rows one
+    after the other, as :func:`~bearingcalc.core.iso16281_rollers.roller_geometry` lays
+    them out). Where ``edge_stress`` holds, each lamina's load enters the equivalent
+    loads as f_k·q_k (:func:`edge_stress_factors`, each row's own). Source: ISO/TS
+    16281:2008, 8.3 (eqs. 47 to 65).
     """
     count = np.asarray(roller_count, dtype=float)
     alpha = np.asarray(contact_angle, dtype=float)
@@ -190,11 +216,16 @@ def roller_reference_life(lamina_load: NDArray, roller_count: ArrayLike,
     ratio = ROLLER_RACEWAY_RATIO * ((1 - gamma) / (1 + gamma)) ** (143 / 108)
     base = c / (ROLLER_REDUCTION * count * np.asarray(rows, dtype=float) ** (7 / 9)
                 * np.cos(alpha))
-    share = (lamina_load.shape[2] if laminae is None
-             else np.asarray(laminae, dtype=float)) ** (-7 / 9)
+    row_count = int(np.max(rows))
+    width = lamina_load.shape[2] // row_count
+    slices = np.broadcast_to(width if laminae is None else laminae, count.shape)
+    share = np.asarray(slices, dtype=float) ** (-7 / 9)
     inner_rating = base / ROLLER_ROTATING_MEAN * (1 + ratio ** 4.5) ** (2 / 9) * share
     outer_rating = base / ROLLER_STATIONARY_MEAN * (1 + ratio ** -4.5) ** (2 / 9) * share
     loads = np.nan_to_num(lamina_load, nan=0.0)
+    factors = np.where(np.asarray(edge_stress, dtype=bool)[..., None],
+                       np.tile(edge_stress_factors(slices, width), row_count), 1.0)
+    loads = loads * factors[:, None, :]
     fourth = (np.sum(loads ** 4, axis=1) / count[:, None]) ** 0.25
     four_and_half = (np.sum(loads ** 4.5, axis=1) / count[:, None]) ** (1 / 4.5)
     rotates = np.asarray(inner_rotates, dtype=bool)[..., None]

@@ -18,7 +18,8 @@ MAX_ITERATIONS = 100
 
 def damped_newton(potential: Callable[[NDArray], Any], q: NDArray, applied: NDArray,
                   moving: NDArray, scale: NDArray, typical: NDArray,
-                  internal: NDArray | None = None) -> tuple[NDArray, NDArray]:
+                  internal: NDArray | None = None, reach: NDArray | None = None
+                  ) -> tuple[NDArray, NDArray]:
     r"""Minimise U(q) = U_c(q) − F·q over the coordinates ``moving`` (N, 5) holds, from
     ``q`` (N, 5), with F = ``applied`` (N, 5):
 
@@ -31,7 +32,9 @@ def damped_newton(potential: Callable[[NDArray], Any], q: NDArray, applied: NDAr
     residual, and the Levenberg damping λ (times the stiffness scale ``typical`` (N,)
     [N/m]) then falls tenfold; else it grows tenfold. Returns q and the relative residual
     max|∇U|/max(|F|, |∇U_c|, ``internal``), ``internal`` (N,) [N] the size of forces
-    that cancel inside (a preloaded pair's), whose rounding no step can beat.
+    that cancel inside (a preloaded pair's), whose rounding no step can beat. A design
+    whose scaled displacement outgrows ``reach`` (N,) [m] has no equilibrium (its ring
+    runs off: U is unbounded below) and is left there, its residual above the tolerance.
     Source: J. Nocedal and S. J. Wright, *Numerical Optimization*, 2nd ed., 3.1 (Armijo)
     and 10.3 (Levenberg–Marquardt).
     """
@@ -44,12 +47,15 @@ def damped_newton(potential: Callable[[NDArray], Any], q: NDArray, applied: NDAr
         size = np.maximum(size, internal)
     held = ~moving[:, :, None] | ~moving[:, None, :]
     state = potential(q)
+    gone = np.zeros(n, dtype=bool)
     for _ in range(MAX_ITERATIONS):
         force = np.where(moving, state.force / scale, 0.0)
         gradient = force - target
         residual = np.max(np.abs(gradient), axis=1) / np.maximum(
             size, np.max(np.abs(force), axis=1))
-        done = residual <= RESIDUAL_TOLERANCE
+        if reach is not None:
+            gone |= np.max(np.abs(np.where(moving, q * scale, 0.0)), axis=1) > reach
+        done = (residual <= RESIDUAL_TOLERANCE) | gone
         if done.all():
             break
         hessian = np.where(held, 0.0, state.hessian / scale[:, :, None] / scale[:, None, :])

@@ -23,6 +23,9 @@ from bearingcalc.core.iso16281_newton import RESIDUAL_TOLERANCE, damped_newton
 LINE_CONSTANT = 35948.0 * 1e3 ** (10 / 9) * 1e3 ** (8 / 9)
 #: The lamina law's exponent, q ∝ δ^(10/9).
 LAMINA_EXPONENT = 10.0 / 9.0
+#: How far past the roller's half length a ring may move before its design counts as
+#: having no equilibrium (its ring runs off, the potential unbounded below).
+REACH = 4.0
 #: Designs solved together: a chunk's (designs, rollers, laminae) arrays stay small.
 CHUNK = 512
 
@@ -86,16 +89,22 @@ def roller_geometry(roller_count: ArrayLike, roller_diameter: ArrayLike,
                     effective_length: ArrayLike, contact_angle: ArrayLike, *,
                     diametral_clearance: ArrayLike = 0.0, laminae: ArrayLike = 30,
                     profile: str = "iso", line_constant: ArrayLike | None = None,
-                    crown_radius: ArrayLike | None = None) -> RollerGeometry:
+                    crown_radius: ArrayLike | None = None, row_distance: ArrayLike = 0.0
+                    ) -> RollerGeometry:
     """The laminae of each design: n_s slices of Lwe/n_s, their positions, gaps (the
     clearance along the contact normal and the profile at both contacts) and constant.
     ``profile``: "iso" (ISO/TS 16281's logarithmic profile), "none" or "crown" (one arc
     of ``crown_radius``). ``laminae`` may differ between designs: a design's laminae past
-    its own count are padding, at an infinite gap, so they never touch."""
+    its own count are padding, at an infinite gap, so they never touch.
+
+    A design with a ``row_distance`` d > 0 has two rows: two rollers at each azimuth
+    whose middles lie d apart along the axis (0: a single row). Roller j's laminae are
+    then the first row's n_s (at ℓ_k − d/2) and the second's (at ℓ_k + d/2), each row
+    padded to the largest n_s, each profiled about its own middle."""
     arrays = np.broadcast_arrays(*(np.atleast_1d(np.asarray(v, dtype=float)) for v in (
         roller_count, roller_diameter, effective_length, contact_angle, diametral_clearance,
-        np.inf if crown_radius is None else crown_radius, laminae)))
-    count, dwe, lwe, alpha, clearance, crown, slices = arrays
+        np.inf if crown_radius is None else crown_radius, laminae, row_distance)))
+    count, dwe, lwe, alpha, clearance, crown, slices, distance = arrays
     k = np.arange(int(slices.max()))[None, :]
     real = k < slices[:, None]
     positions = np.where(real, (k - slices[:, None] / 2.0 + 0.5) * (lwe / slices)[:, None],
@@ -107,9 +116,22 @@ def roller_geometry(roller_count: ArrayLike, roller_diameter: ArrayLike,
     else:
         drop = logarithmic_profile(positions, dwe, lwe)
     gap = np.where(real, (clearance * np.cos(alpha) / 2.0)[:, None] + 2.0 * drop, np.inf)
+    if distance.max() > 0.0:
+        double = (distance > 0.0)[:, None]
+        half = np.where(double, distance[:, None] / 2.0, 0.0)
+        positions = np.concatenate([np.where(real, positions - half, 0.0),
+                                    np.where(real & double, positions + half, 0.0)], axis=1)
+        gap = np.concatenate([gap, np.where(double, gap, np.inf)], axis=1)
     constant = (LINE_CONSTANT * lwe ** (8 / 9) if line_constant is None
                 else np.broadcast_to(np.asarray(line_constant, dtype=float), lwe.shape))
     return RollerGeometry(count, alpha, gap, positions, constant / slices)
+
+
+def row_loads(lamina_load: NDArray, rows: int) -> NDArray:
+    """Each row's roller loads (N, Zmax, ``rows``) [N] from the laminae (N, Zmax,
+    rows·n_s) of :func:`roller_geometry`'s layout, NaN past Z."""
+    n, z, width = lamina_load.shape
+    return np.sum(lamina_load.reshape(n, z, rows, width // rows), axis=3)
 
 
 def lamina_deflections(geometry: RollerGeometry, displacement: NDArray, azimuth: NDArray
@@ -275,8 +297,9 @@ def _newton(geometry: RollerGeometry, rollers: _Rollers, q: NDArray,
     # a preloaded bearing's rollers push on the ring from every side: their loads cancel
     # in its force but set the rounding of the sum
     internal = np.sum(_state(geometry, rollers, q).lamina, axis=(1, 2))
+    # no equilibrium moves a ring by its rollers' length: one that runs off has none
     return damped_newton(lambda trial: _state(geometry, rollers, trial), q, applied,
-                         moving, scale, typical, internal)
+                         moving, scale, typical, internal, reach=REACH * lever)
 
 
 class RollerContacts(NamedTuple):

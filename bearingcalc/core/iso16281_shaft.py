@@ -32,6 +32,9 @@ from bearingcalc.core.iso16281_newton import (
     damped_newton,
 )
 
+#: How many of its levers a shaft may move before its design counts as having no
+#: equilibrium (the shaft runs off, the potential unbounded below).
+REACH = 4.0
 #: The in-plane coordinates (δx, δy, θz), all that move under loads in the radial
 #: load's plane.
 IN_PLANE = (0, 1, 4)
@@ -99,7 +102,7 @@ def shaft_state(bearings: Sequence[ShaftBearing], matrices: Sequence[NDArray],
         state = bearing.contacts(q)
         energy += state.energy
         force += np.einsum("nji,nj->ni", matrix, state.force)
-        stiffness += np.einsum("nki,nkl,nlj->nij", matrix, state.stiffness, matrix)
+        stiffness += np.swapaxes(matrix, 1, 2) @ state.stiffness @ matrix
         local.append(q)
         contacts.append(state)
     return _Shaft(energy, force, stiffness, local, contacts)
@@ -144,8 +147,7 @@ def _typical_stiffness(bearings: Sequence[ShaftBearing], matrices: Sequence[NDAr
         probe = np.zeros((n, 5))
         probe[:, 0] = np.maximum(-bearing.offset, 0.0) + 1e-5
         probe[:, 1] = 1e-5
-        stiffness = np.einsum("nki,nkl,nlj->nij", matrix,
-                              bearing.contacts(probe).stiffness, matrix)
+        stiffness = np.swapaxes(matrix, 1, 2) @ bearing.contacts(probe).stiffness @ matrix
         total += np.trace(stiffness / scale[:, :, None] / scale[:, None, :], axis1=1,
                           axis2=2) / 5.0
     return np.where(total > 0.0, total, 1e8)
@@ -174,8 +176,10 @@ def _newton(bearings: Sequence[ShaftBearing], matrices: Sequence[NDArray], q: ND
     start = shaft_state(bearings, matrices, q)
     internal = sum(np.max(np.abs(contacts.force[:, :3]), axis=1)
                    for contacts in start.contacts)
+    # no equilibrium moves the shaft by several of its levers: one that runs off has none
     return damped_newton(potential, q, applied, moving, scale,
-                         _typical_stiffness(bearings, matrices, scale), internal)
+                         _typical_stiffness(bearings, matrices, scale), internal,
+                         reach=REACH * scale[:, 3])
 
 
 

@@ -25,6 +25,7 @@ from bearingcalc.core.iso16281_rollers import (
     lamina_deflections,
     roller_contacts_at,
     roller_geometry,
+    row_loads,
     solve_roller_equilibrium,
 )
 from bearingcalc.core.mounted_pair import BearingFamily, pair_results
@@ -95,17 +96,22 @@ def mounted_results(inputs: Mapping[str, Any], c: NDArray, iso281: Mapping[str, 
 
 
 def _geometry(inputs: Mapping[str, Any], flat: Any) -> tuple[RollerGeometry, NDArray]:
-    """Every design's laminae (their count may differ between designs) and the count."""
+    """Every design's laminae (their count may differ between designs) and the count of
+    one row's. A double row's rows lie in the two halves of the bearing's width (their
+    middles B/2 apart), or side by side (Lwe apart) where no width is given."""
     laminae = flat(inputs["laminae"]).astype(int)
     one_way = traits(str(inputs["bearing_type"])).one_way
-    crown = inputs.get("crown_radius")
+    crown, width = inputs.get("crown_radius"), inputs.get("width")
+    lwe = flat(inputs["roller_length"])
     geometry = roller_geometry(
         *(flat(inputs[key]) for key in ("roller_count", "roller_diameter", "roller_length",
                                         "contact_angle")),
         diametral_clearance=0.0 if one_way else flat(
             shared.or_zero(inputs.get("operating_clearance"))),
         laminae=laminae, profile=str(inputs["roller_profile"]),
-        crown_radius=None if crown is None else flat(crown))
+        crown_radius=None if crown is None else flat(crown),
+        row_distance=np.where(flat(inputs["rows"]) > 1, lwe if width is None else
+                              np.maximum(flat(width) / 2.0, lwe), 0.0))
     return geometry, laminae
 
 
@@ -122,10 +128,12 @@ def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> BearingFamily:
         "contact_angle"))
     rotates = flat(np.abs(inputs["inner_speed"]) >= np.abs(inputs["outer_speed"])) > 0
     material = (flat(inputs["elastic_modulus"]), flat(inputs["poisson_ratio"]))
+    rows = flat(inputs["rows"])
 
     def life(contacts: Any) -> Any:
         return roller_reference_life(contacts.lamina_load, z, dwe, dpw, alpha, flat(c),
-                                     inner_rotates=rotates, laminae=laminae)
+                                     rows=rows, inner_rotates=rotates, laminae=laminae,
+                                     edge_stress=bool(inputs.get("edge_stress_factor")))
 
     def pressures(contacts: Any) -> tuple[NDArray, NDArray, NDArray]:
         found = largest_roller_contacts(contacts.lamina_load, dwe, lwe, dpw, alpha,
@@ -138,10 +146,17 @@ def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> BearingFamily:
     with np.errstate(invalid="ignore", divide="ignore"):
         first_contact = np.where(alpha > 0.0, np.min(geometry.gap, axis=1) / np.sin(alpha),
                                  0.0)
-    return BearingFamily("roller", lambda q: roller_contacts_at(geometry, q),
+    def contacts(q: NDArray) -> Any:
+        # a double row's element at ψ_j is its two rollers: the larger is its load
+        found = roller_contacts_at(geometry, q)
+        return found._replace(element_load=np.max(row_loads(found.lamina_load, row_count),
+                                                  axis=2))
+
+    row_count = int(rows.max())
+    return BearingFamily("roller", contacts,
                       np.zeros_like(z), dpw / 2.0 * np.tan(alpha), first_contact, dpw / 2.0,
                       life, pressures, deflection, 10.0 / 3.0, CONTACT_TOO_WIDE,
-                      lambda contacts: _edge_loaded(contacts.lamina_load, laminae))
+                      lambda contacts: _edge_loaded(contacts.lamina_load, laminae, row_count))
 
 
 def _single(inputs: Mapping[str, Any], family: BearingFamily, flat: Any,
@@ -154,19 +169,54 @@ def _single(inputs: Mapping[str, Any], family: BearingFamily, flat: Any,
         inputs, flat, geometry.roller_count.size), fixed_tilt=None if misalignment is None
         else flat(misalignment))
     inner, outer, crushed = family.pressures(solved)
+    rows = flat(inputs["rows"])
+    per_roller = _per_roller(solved, rows)
     with np.errstate(invalid="ignore"):
         results = shared.equilibrium_results(solved, family.deflection(solved.displacement,
                                                                        solved))
+    loads = np.nan_to_num(per_roller.element_load)
+    results.update(max_element_load=np.max(loads, axis=1),
+                   loaded_elements=np.sum(loads > 0, axis=1).astype(float))
     if misalignment is not None:
         results["tilting_moment_reaction"] = solved.reaction[:, 4]
     results.update(shared.rib_load(inputs, results["max_element_load"], flat))
+    # rollers all round carry any radial load and moment: where such a ring finds no
+    # equilibrium it was pushed past any small displacement, by a load too large
+    one_way = traits(str(inputs["bearing_type"])).one_way
+    runs_off = ~solved.converged & ~one_way
     found = shared.completed(inputs, Found(
         results, {"edge_loaded": family.edge_loaded(solved)},
-        [(shared.NO_EQUILIBRIUM, ~solved.converged),
-         (shared.crushing_code(inputs, CONTACT_TOO_WIDE), crushed)]), (inner, outer),
+        [(shared.NO_EQUILIBRIUM, ~solved.converged & one_way),
+         (shared.crushing_code(inputs, CONTACT_TOO_WIDE), crushed | runs_off)]),
+        (inner, outer),
         family.life(solved), iso281, speed, shape, "roller")
-    return found, {"element": shared.element_rows({"azimuth": solved.azimuth,
-                                                   "load": solved.element_load}, shape)}
+    return found, {"element": _element_rows(per_roller, int(rows.max()), shape)}
+
+
+def _per_roller(solved: Any, rows: NDArray) -> Any:
+    """``solved`` with its elements the rollers of each row, the first row's Z and then
+    the second's (NaN past Z, and in a second row a design does not have)."""
+    row_count = int(rows.max())
+    if row_count == 1:
+        return solved
+    per_row = row_loads(solved.lamina_load, row_count)
+    per_row[:, :, 1:] = np.where((rows > 1)[:, None, None], per_row[:, :, 1:], np.nan)
+    return solved._replace(element_load=np.concatenate(np.moveaxis(per_row, 2, 0), axis=1),
+                           azimuth=np.tile(solved.azimuth, row_count))
+
+
+def _element_rows(per_roller: Any, row_count: int, shape: tuple[int, ...]) -> Along:
+    """Each roller's azimuth and load along ``element``; a double row's under a heading
+    of each row."""
+    along = shared.element_rows({"azimuth": per_roller.azimuth,
+                                 "load": per_roller.element_load}, shape)
+    if row_count == 1:
+        return along
+    z = len(along.rows) // row_count
+    names = tuple(f"row_{i // z + 1}_element_{i % z + 1}" for i in range(len(along.rows)))
+    headings = tuple(f"row {i // z + 1}: rolling elements as mounted"
+                     for i in range(len(along.rows)))
+    return Along(names, along.values, headings)
 
 
 def _crown_fits(radius: NDArray, length: NDArray, diameter: NDArray) -> NDArray:
@@ -178,13 +228,14 @@ def _crown_fits(radius: NDArray, length: NDArray, diameter: NDArray) -> NDArray:
     return (radius > half) & (drop < CROWN_DROP_SHARE * diameter)
 
 
-def _edge_loaded(lamina_load: NDArray, laminae: NDArray) -> NDArray:
-    """Where a roller's end lamina (the first, or the design's last of its ``laminae``)
-    carries more than the mean of its laminae."""
-    loads = np.nan_to_num(lamina_load, nan=0.0)
-    last = (laminae - 1)[:, None, None]
+def _edge_loaded(lamina_load: NDArray, laminae: NDArray, rows: int = 1) -> NDArray:
+    """Where a roller's end lamina (the first, or the design's last of its ``laminae``,
+    of either row) carries more than the mean of its row's laminae."""
+    n, z, width = lamina_load.shape
+    loads = np.nan_to_num(lamina_load, nan=0.0).reshape(n, z, rows, width // rows)
+    last = (laminae - 1)[:, None, None, None]
     ends = np.maximum(loads[..., 0], np.take_along_axis(
-        loads, np.broadcast_to(last, (*loads.shape[:2], 1)), axis=2)[..., 0])
-    mean = loads.sum(axis=2) / laminae[:, None]
+        loads, np.broadcast_to(last, (*loads.shape[:3], 1)), axis=3)[..., 0])
+    mean = loads.sum(axis=3) / laminae[:, None, None]
     # a straight, untilted roller loads its laminae alike, to the rounding of their sum
-    return np.any((ends > mean * (1.0 + 1e-9)) & (mean > 0), axis=1)
+    return np.any((ends > mean * (1.0 + 1e-9)) & (mean > 0), axis=(1, 2))

@@ -136,12 +136,13 @@ class _MountingInputs(TypedDict, total=False):
     crown_radius: MaybeNumbers           # a "crown" profile's radius [m]
     laminae: MaybeNumbers                # slices of each roller [1]
     roller_included_angle: MaybeNumbers  # a tapered roller's included angle [rad]
+    edge_stress_factor: bool             # ISO/TS 16281's edge-stress factor in the life
     min_stiffness_radial: MaybeNumbers   # the least radial stiffness as mounted [N/m]
     min_stiffness_axial: MaybeNumbers    # the least axial stiffness as mounted [N/m]
     setting_end_play: MaybeNumbers       # a pair's end play, negative: preload [m]
     setting_preload: MaybeNumbers        # a pair's preload at rest, each bearing [N]
     pair_spacing: MaybeNumbers           # a pair's pressure centres' distance [m]
-    width: MaybeNumbers                  # B (T) of one bearing of a pair [m]
+    width: MaybeNumbers                  # B (T): a pair's spacing, a double row's [m]
 
 
 class RollingBearingInputs(_BearingOwnInputs, _OperatingInputs, _RollerInputs, _MountingInputs,
@@ -206,6 +207,8 @@ class _ElementMountingInputs(TypedDict, total=False):
     crown_radius: MaybeNumbers           # [m]
     laminae: MaybeNumbers                # [1]
     roller_included_angle: MaybeNumbers  # [rad]
+    edge_stress_factor: bool             # in the life
+    width: MaybeNumbers                  # B: where a double row's rows lie [m]
 
 
 class MountedBearingInputs(_MountedBearingInputs, _BearingOwnInputs, _RollerInputs,

@@ -30,7 +30,8 @@ MOUNTED_TYPES = names_where(mounted=True)
 #: The method's own solver inputs (a drive's bearings take none of them).
 MOUNTING_INPUTS = ("method", "operating_clearance", "tilting_moment", "misalignment",
                    "roller_profile", "crown_radius", "laminae", "roller_included_angle",
-                   "setting_end_play", "setting_preload", "pair_spacing", "width")
+                   "edge_stress_factor", "setting_end_play", "setting_preload",
+                   "pair_spacing", "width")
 #: The internal geometry the method needs, by the family of the rolling elements.
 MOUNTED_GEOMETRY = {
     "ball": ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_conformity",
@@ -43,7 +44,8 @@ ELEMENT_FIELDS = {"ball": ("ball_count", "ball_diameter"),
 #: The limits judged only as mounted: the least stiffnesses.
 STIFFNESS_LIMITS = ("min_stiffness_radial", "min_stiffness_axial")
 #: The method's fields of roller bearings alone.
-ROLLER_MOUNTING_FIELDS = ("roller_profile", "laminae", "roller_included_angle")
+ROLLER_MOUNTING_FIELDS = ("roller_profile", "laminae", "roller_included_angle",
+                          "edge_stress_factor")
 #: The largest operating clearance (or preload) of a roller bearing, a share of Dwe.
 ROLLER_CLEARANCE_SHARE = 0.1
 #: ISO/TS 16281's count of laminae where the spec gives none.
@@ -105,13 +107,17 @@ class ElementMountingFields(SpecModel):
     roller_included_angle: Angle | None = Field(
         None, description="iso-16281, tapered rollers: the roller's included angle θ, for "
         "the rib's load 2·Q·sin(θ/2)")
+    edge_stress_factor: bool | None = Field(
+        None, description="iso-16281, rollers: true raises each lamina's load towards the "
+        "roller's ends by ISO/TS 16281's edge-stress factor in the life (default false)")
 
 
 #: The fields of a bearing as mounted, alone or on a drive's shaft.
 ELEMENT_MOUNTING_FIELDS = tuple(ElementMountingFields.model_fields)
 #: Their solver inputs, which a drive's bearing passes on as mounted.
 ELEMENT_MOUNTING_INPUTS = ("operating_clearance", "roller_profile", "crown_radius",
-                           "laminae", "roller_included_angle")
+                           "laminae", "roller_included_angle", "edge_stress_factor",
+                           "width")
 
 
 class MountingFields(ElementMountingFields):
@@ -140,11 +146,13 @@ class MountingFields(ElementMountingFields):
         inputs: dict[str, object] = {
             "method": self.method, "operating_clearance": self.operating_clearance,
             "tilting_moment": self.tilting_moment, "misalignment": self.misalignment}
+        if self.method == "iso-16281":
+            inputs["width"] = self.width
         if self.method == "iso-16281" and self.arrangement != "single":
             setting = self.setting
             inputs.update(setting_end_play=setting.end_play if setting else None,
                           setting_preload=setting.preload if setting else None,
-                          pair_spacing=self.pair_spacing, width=self.width)
+                          pair_spacing=self.pair_spacing)
         inputs.update(self.estimated_inputs())
         if self.method != "iso-16281" or self.type_traits.family != "roller":
             return inputs
@@ -153,7 +161,8 @@ class MountingFields(ElementMountingFields):
         return {**inputs, "roller_profile": "crown" if crowned else (profile or "iso"),
                 "crown_radius": profile.crown_radius if crowned else None,
                 "laminae": DEFAULT_LAMINAE if self.laminae is None else self.laminae,
-                "roller_included_angle": self.roller_included_angle}
+                "roller_included_angle": self.roller_included_angle,
+                "edge_stress_factor": bool(self.edge_stress_factor)}
 
 
 class RollerMountingRules(ReadsBearing):
@@ -164,6 +173,7 @@ class RollerMountingRules(ReadsBearing):
         roller_profile: Any
         laminae: int | None
         roller_included_angle: float | None
+        edge_stress_factor: bool | None
 
     @rule
     def _roller_mounting_fields(self) -> SpecFieldError | None:
@@ -204,13 +214,21 @@ class RollerMountingRules(ReadsBearing):
         return None
 
     @rule
-    def _mounted_single_row(self) -> SpecFieldError | None:
+    def _mounted_double_row(self) -> SpecFieldError | None:
         # a pair's own rule refuses a double row in a matched pair
-        if (self.method == "iso-16281" and self.rollers and self.rows != 1
+        if not (self.method == "iso-16281" and self.rollers and self.rows != 1
                 and self.arrangement == "single"):
-            return SpecFieldError("rows", "method: iso-16281 solves single-row roller "
-                                  "bearings here: give rows: 1, or method: iso-281 for the "
-                                  "double row", at="method")
+            return None
+        if self.type_traits.one_way:
+            return SpecFieldError("rows", "a double-row tapered bearing is two rows set "
+                                  "against each other: as mounted, give rows: 1 with "
+                                  "arrangement: back-to-back (or face-to-face) and the "
+                                  "pair's setting", at="method")
+        missing = [name for name in ELEMENT_FIELDS["roller"] if getattr(self, name) is None]
+        if missing:
+            return SpecFieldError(missing[0], "missing: a double-row bearing as mounted "
+                                  "takes its rollers' geometry (the estimate from the "
+                                  f"catalogue is of single rows): give {', '.join(missing)}")
         return None
 
     @rule

@@ -1,0 +1,166 @@
+"""A double-row cylindrical or needle roller bearing as mounted (``rows: 2``) through
+every command, and what is refused of it. Its physics is checked against an
+independent reference in ``tests/test_iso16281_double_row.py``."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from bearingcalc.cli import app
+
+NN = """\
+kind: rolling-bearing
+name: NN 3010 as mounted
+type: cylindrical-roller
+method: iso-16281
+rows: 2
+dynamic_load_rating: 53 kN
+static_load_rating: 80 kN
+roller_count: 23
+roller_diameter: 6.5 mm
+roller_length: 7 mm
+pitch_diameter: 65 mm
+width: 26 mm
+operating_clearance: 5 µm
+radial_load: 10 kN
+speed: 1500 rpm
+{extra}"""
+
+
+def _run(tmp_path, text: str, *args: str):
+    path = tmp_path / "nn.yaml"
+    path.write_text(text, encoding="utf-8")
+    return CliRunner().invoke(app, [*args[:1], str(path), *args[1:]])
+
+
+def _results(tmp_path, extra: str = "") -> dict:
+    run = _run(tmp_path, NN.format(extra=extra), "solve", "--format", "json")
+    assert run.exit_code == 0, run.output
+    return json.loads(run.output)["results"]
+
+
+def _row_loads(results: dict, row: int) -> list[float]:
+    return [results[f"row_{row}_element_{j}_load"] for j in range(1, 24)]
+
+
+def test_every_roller_of_both_rows_is_listed_and_the_largest_is_one_rollers(tmp_path):
+    results = _results(tmp_path, "misalignment: 0.5 mrad\n")
+    first, second = _row_loads(results, 1), _row_loads(results, 2)
+    assert "element_1_load" not in results and "row_3_element_1_load" not in results
+    assert results["max_element_load"] == max(first + second)
+    assert results["loaded_elements"] == sum(load > 0 for load in first + second)
+    # the tilt loads one row more than the other, roller by roller under the load
+    assert first[0] != pytest.approx(second[0], rel=1e-3)
+    assert results["row_2_element_1_azimuth"] == results["row_1_element_1_azimuth"] == 0.0
+
+
+def test_an_untilted_double_row_loads_both_rows_alike(tmp_path):
+    results = _results(tmp_path)
+    np_first, np_second = _row_loads(results, 1), _row_loads(results, 2)
+    assert np_second == pytest.approx(np_first, rel=1e-12, abs=1e-9)
+    assert math.isclose(results["ring_tilt"], 0.0, abs_tol=1e-15)
+
+
+def test_the_table_shows_each_row_under_its_heading(tmp_path):
+    run = _run(tmp_path, NN.format(extra="misalignment: 0.5 mrad\n"), "solve")
+    assert run.exit_code == 0, run.output
+    assert "row 1: rolling elements as mounted" in run.output
+    assert "row 2: rolling elements as mounted" in run.output
+
+
+def test_the_edge_stress_factor_takes_each_rows_ends(tmp_path):
+    plain = _results(tmp_path, "misalignment: 1 mrad\nroller_profile: none\n")
+    edged = _results(tmp_path, "misalignment: 1 mrad\nroller_profile: none\n"
+                               "edge_stress_factor: true\n")
+    assert edged["reference_rating_life"] < 0.5 * plain["reference_rating_life"]
+
+
+@pytest.mark.parametrize("command", [
+    ("tolerance", "--samples", "512", "--format", "json"),
+    ("tolerance", "--method", "worst-case", "--format", "json"),
+    ("sweep", "--vary", "misalignment=0mrad:1mrad:5", "--format", "json"),
+])
+def test_the_studies_run_on_a_double_row(tmp_path, command):
+    text = NN.format(extra="misalignment: 0.5 mrad ± 0.2 mrad\n")
+    if command[0] == "sweep":
+        text = NN.format(extra="misalignment: 0.5 mrad\n")
+    run = _run(tmp_path, text, *command)
+    assert run.exit_code == 0, run.output
+    assert "nan" not in run.output.lower().replace("nano", "")
+
+
+def test_the_report_draws_a_double_row(tmp_path):
+    out = tmp_path / "nn.html"
+    run = _run(tmp_path, NN.format(extra="misalignment: 0.5 mrad\n"), "report", "--output",
+               str(out))
+    assert run.exit_code == 0, run.output
+    assert "row_2_element_23" in out.read_text(encoding="utf-8")
+
+
+TAPERED = """\
+kind: rolling-bearing
+name: double-row tapered
+type: tapered-roller
+method: iso-16281
+rows: 2
+dynamic_load_rating: 90 kN
+static_load_rating: 120 kN
+contact_angle: 14 deg
+roller_count: 17
+roller_diameter: 7.5 mm
+roller_length: 14 mm
+pitch_diameter: 45 mm
+radial_load: 6 kN
+axial_load: 3 kN
+speed: 3000 rpm
+"""
+CATALOGUE_ONLY = """\
+kind: rolling-bearing
+name: NN 3010 from its catalogue data
+type: cylindrical-roller
+method: iso-16281
+rows: 2
+dynamic_load_rating: 53 kN
+static_load_rating: 80 kN
+bore_diameter: 50 mm
+outside_diameter: 80 mm
+width: 26 mm
+operating_clearance: 5 µm
+radial_load: 10 kN
+speed: 1500 rpm
+"""
+
+
+@pytest.mark.parametrize(("text", "field", "says"), [
+    (TAPERED, "rows", "back-to-back"),
+    (CATALOGUE_ONLY, "roller_count", "roller_diameter"),
+], ids=["tapered-double-row", "geometry-not-given"])
+def test_what_a_double_row_cannot_be_is_one_line(tmp_path, text, field, says):
+    run = _run(tmp_path, text, "solve")
+    assert run.exit_code == 2
+    lines = [line for line in run.output.splitlines() if line.strip()]
+    assert len(lines) == 1 and f" {field}: " in lines[0] and says in lines[0], run.output
+
+
+def test_a_drive_shaft_rests_on_a_double_row(tmp_path):
+    """The example drive with its gear's floating bearing a double row: each roller's
+    load is at most half the bearing's radial load over the rollers at ψ = 0 (two)."""
+    example = (Path(__file__).parents[1] / "specs" / "bevel-drive-mounted.yaml").read_text(
+        encoding="utf-8")
+    text = example.replace(
+        "dynamic_load_rating: 62 kN,  # NU 207-size",
+        "dynamic_load_rating: 62 kN, rows: 2, roller_count: 16, roller_diameter: 7 mm, "
+        "roller_length: 7 mm, pitch_diameter: 53 mm,")
+    assert text != example
+    run = _run(tmp_path, text, "solve", "--format", "json")
+    assert run.exit_code == 0, run.output
+    results = json.loads(run.output)["results"]
+    largest, radial = (results[f"gear_bearing_1_{key}"] for key in ("max_element_load",
+                                                                     "radial_load"))
+    assert 0.0 < largest < radial / 2.0
+    assert math.isfinite(results["gear_bearing_1_reference_rating_life"])
