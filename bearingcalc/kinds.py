@@ -149,16 +149,20 @@ class Kind:
     def _out_of_range(self, solution: Solution, status: NDArray) -> NDArray:
         """``OUT_OF_RANGE`` where the solver calls a design feasible but one of its
         results, of one value or along an axis, is not finite (and may not be +inf)."""
-        checks = [(values, key in self.unbounded) for key, values in solution.results.items()]
+        checks = [(values, key in self.unbounded, False)
+                  for key, values in solution.results.items()]
         for axis, along in solution.along.items():
-            unbounded = self.along[axis].unbounded
+            declared = self.along[axis]
             checks += [(np.asarray(values)[[along.has(column, row)
                                             for row in range(len(along.rows))]],
-                        column in unbounded) for column, values in along.values.items()]
-        for values, unbounded in checks:
+                        column in declared.unbounded, declared.sparse)
+                       for column, values in along.values.items()]
+        for values, unbounded, sparse in checks:
             finite = np.isfinite(values)
             if unbounded:
                 finite |= values == np.inf
+            if sparse:
+                finite |= np.isnan(values)
             if finite.shape != np.shape(status):  # rows along an axis: every one counts
                 finite = finite.all(axis=0) if finite.ndim > np.ndim(status) else finite
             if not finite.all():

@@ -173,10 +173,11 @@ def edge_stress_factors(laminae: ArrayLike, width: int | None = None) -> NDArray
     count = np.atleast_1d(np.asarray(laminae, dtype=float))[:, None]
     k = np.arange(1, int(count.max() if width is None else width) + 1, dtype=float)
     share = np.abs((2.0 * k - count - 1.0) / (2.0 * count - 2.0))
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore"):
         # the middle lamina of an odd count sits at share 0: ln → −∞ and f → 1
         factor = 1.0 - 0.01 / np.log(1.985 * share)
-    return np.where(k <= count, factor, 1.0)
+    # one lamina is the whole roller: it has no edge of its own to raise
+    return np.where((k <= count) & (count > 1), factor, 1.0)
 
 
 def roller_reference_life(lamina_load: NDArray, roller_count: ArrayLike,
@@ -218,6 +219,8 @@ def roller_reference_life(lamina_load: NDArray, roller_count: ArrayLike,
                 * np.cos(alpha))
     row_count = int(np.max(rows))
     width = lamina_load.shape[2] // row_count
+    if width * row_count != lamina_load.shape[2]:
+        raise ValueError(f"{lamina_load.shape[2]} laminae do not lay out {row_count} rows")
     slices = np.broadcast_to(width if laminae is None else laminae, count.shape)
     share = np.asarray(slices, dtype=float) ** (-7 / 9)
     inner_rating = base / ROLLER_ROTATING_MEAN * (1 + ratio ** 4.5) ** (2 / 9) * share

@@ -23,9 +23,11 @@ from bearingcalc.core.iso16281_newton import RESIDUAL_TOLERANCE, damped_newton
 LINE_CONSTANT = 35948.0 * 1e3 ** (10 / 9) * 1e3 ** (8 / 9)
 #: The lamina law's exponent, q ∝ δ^(10/9).
 LAMINA_EXPONENT = 10.0 / 9.0
-#: How far past the roller's half length a ring may move before its design counts as
-#: having no equilibrium (its ring runs off, the potential unbounded below).
-REACH = 4.0
+#: How many of its rollers' half lengths a ring may move before its design counts as
+#: having no equilibrium (its ring runs off, the potential unbounded below): far past
+#: any displacement of a bearing that holds, even a one-way bearing's just above the
+#: axial load it needs, whose ring moves some millimetres along its axis.
+REACH = 40.0
 #: Designs solved together: a chunk's (designs, rollers, laminae) arrays stay small.
 CHUNK = 512
 
@@ -297,7 +299,7 @@ def _newton(geometry: RollerGeometry, rollers: _Rollers, q: NDArray,
     # a preloaded bearing's rollers push on the ring from every side: their loads cancel
     # in its force but set the rounding of the sum
     internal = np.sum(_state(geometry, rollers, q).lamina, axis=(1, 2))
-    # no equilibrium moves a ring by its rollers' length: one that runs off has none
+    # no equilibrium moves a ring by many of its rollers' lengths: one that runs off has none
     return damped_newton(lambda trial: _state(geometry, rollers, trial), q, applied,
                          moving, scale, typical, internal, reach=REACH * lever)
 

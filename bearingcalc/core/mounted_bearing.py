@@ -71,7 +71,7 @@ ELEMENT_RESULTS = AxisResults({
     "azimuth": ("rad", "its azimuth ψ (0 under the radial load)"),
     "load": ("N", "its load Q"),
     "contact_angle": ("rad", "its operating contact angle"),
-}, after="equilibrium_residual", meaning="{row}: {meaning}")
+}, after="equilibrium_residual", meaning="{row}: {meaning}", sparse=True)
 #: The table's heading of the method's results.
 GROUP = "as mounted (ISO/TS 16281)"
 #: Warnings of every bearing as mounted: flag -> message.

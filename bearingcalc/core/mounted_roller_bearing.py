@@ -183,7 +183,7 @@ def _single(inputs: Mapping[str, Any], family: BearingFamily, flat: Any,
     # rollers all round carry any radial load and moment: where such a ring finds no
     # equilibrium it was pushed past any small displacement, by a load too large
     one_way = traits(str(inputs["bearing_type"])).one_way
-    runs_off = ~solved.converged & ~one_way
+    runs_off = ~solved.converged & (not one_way)
     found = shared.completed(inputs, Found(
         results, {"edge_loaded": family.edge_loaded(solved)},
         [(shared.NO_EQUILIBRIUM, ~solved.converged & one_way),
@@ -199,10 +199,13 @@ def _per_roller(solved: Any, rows: NDArray) -> Any:
     row_count = int(rows.max())
     if row_count == 1:
         return solved
+    double = (rows > 1)[:, None]
     per_row = row_loads(solved.lamina_load, row_count)
-    per_row[:, :, 1:] = np.where((rows > 1)[:, None, None], per_row[:, :, 1:], np.nan)
-    return solved._replace(element_load=np.concatenate(np.moveaxis(per_row, 2, 0), axis=1),
-                           azimuth=np.tile(solved.azimuth, row_count))
+    return solved._replace(
+        element_load=np.concatenate([per_row[:, :, 0],
+                                     np.where(double, per_row[:, :, 1], np.nan)], axis=1),
+        azimuth=np.concatenate([solved.azimuth, np.where(double, solved.azimuth, np.nan)],
+                               axis=1))
 
 
 def _element_rows(per_roller: Any, row_count: int, shape: tuple[int, ...]) -> Along:

@@ -45,6 +45,9 @@ class AxisResults(NamedTuple):
     meaning: str = "{meaning}"
     #: columns that may be +inf (a bin that does not turn lives for ever)
     unbounded: tuple[str, ...] = ()
+    #: a design may have fewer rows than another solved with it (its rolling elements):
+    #: its rows past its own are NaN, absent rather than out of range
+    sparse: bool = False
 
 
 @dataclass(frozen=True)
