@@ -148,7 +148,7 @@ def _zoom(study: Study, searches: list[_ExtremeSearch], low: NDArray, width: NDA
             block = np.repeat(search.point[None, :], len(grid), axis=0)
             block[:, search.free] = grid
             blocks.append(block)
-        results, _ = study.evaluate(low + np.vstack(blocks) * width)
+        results = _evaluate_once(study, low + np.vstack(blocks) * width)
         offset, still = 0, []
         for search, block in zip(active, blocks, strict=True):
             values = search.sign * np.asarray(results[search.key][offset:offset + len(block)])
@@ -166,6 +166,16 @@ def _zoom(study: Study, searches: list[_ExtremeSearch], low: NDArray, width: NDA
             if search.radius > ZOOM_RESOLUTION and search.stale < ZOOM_PATIENCE:
                 still.append(search)
         active = still
+
+
+def _evaluate_once(study: Study, points: NDArray) -> dict[str, NDArray]:
+    """The results at ``points`` (n, d), each distinct design solved once: the grids of
+    searches zoomed onto the same point (extremes at one design, many results with
+    their extremes on one face of an impossible region) repeat whole."""
+    unique, inverse = np.unique(points, axis=0, return_inverse=True)
+    results, _ = study.evaluate(unique)
+    index = np.reshape(inverse, -1)
+    return {key: np.asarray(values)[index] for key, values in results.items()}
 
 
 def refine_with_lbfgsb(study: Study, key: str, sign: float, start: NDArray, low: NDArray,
