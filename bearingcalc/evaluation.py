@@ -154,6 +154,11 @@ def _stacked(inputs: list[Any]) -> Any:
 _TRACEBACKS: dict[str, bool] = {"shown": False}
 
 
+def _listed(keys: Sequence[str]) -> str:
+    """``a``, ``a and b``, ``a, b and c``."""
+    return keys[0] if len(keys) == 1 else f"{', '.join(keys[:-1])} and {keys[-1]}"
+
+
 def show_tracebacks(shown: bool) -> None:
     """Print (or not) the traceback of every internal error as it is caught."""
     _TRACEBACKS["shown"] = shown
@@ -228,16 +233,18 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
     results: dict[str, float | None] = {}
     warnings: list[str] = [*spec.catalogue_notes(), *spec.warnings(), *raised]
     of_bins = {key for table in layout.tables if table.axis == "bin" for key in table.keys}
+    unbounded: dict[str, list[str]] = {}
     for key, value in raw.items():
         if math.isnan(value):
             raise document.error(f"{key} cannot be computed for this design; please report it")
         if math.isinf(value):
-            warnings.append(f"{key} is unbounded (null in JSON): "
-                            + ("the bin is at rest" if key in of_bins
-                               else "the limit holds however far it goes"))
+            reason = "the bin is at rest" if key in of_bins else kind.unbounded_reason
+            unbounded.setdefault(reason, []).append(key)
             results[key] = None
         else:
             results[key] = value
+    warnings += [f"{_listed(keys)} {'is' if len(keys) == 1 else 'are'} unbounded (null in "
+                 f"JSON): {reason}" for reason, keys in unbounded.items()]
     units = {key: layout.names[key][0] for key in results}
     margins = {key: value for key in kind.margins
                if (value := results.get(key)) is not None}

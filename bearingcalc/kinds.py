@@ -79,6 +79,8 @@ class Kind:
     limits: dict[str, str] = field(default_factory=dict)
     #: results that may legitimately be +inf (an edge that no design reaches)
     unbounded: tuple[str, ...] = ()
+    #: why they are, in the warning that says so
+    unbounded_reason: str = "the limit holds however far it goes"
     #: margin key -> what it judges, for verdicts in engineering terms
     judged: Mapping[str, Judged] = field(default_factory=dict)
     #: the drawings of its calculation report, in the report's order
@@ -336,6 +338,12 @@ KINDS: dict[str, Kind] = {
                            f"{direction} stiffness", f"stiffness_{direction}", True, "ratio")
                           for direction in ("radial", "axial")}},
                plots=(Plot("duty-damage"), Plot("life-against-load")),
+               # as mounted a tilting moment alone loads the elements at P = 0
+               unbounded=("load_ratio", "basic_rating_life", "basic_rating_life_revolutions",
+                          "modified_rating_life", "modified_rating_life_revolutions",
+                          "static_safety_factor", "static_safety_margin"),
+               unbounded_reason="no force loads the bearing (ISO 281 and ISO 76 rate "
+               "forces; a tilt alone loads its elements, and ISO/TS 16281's results rate it)",
                standards=ROLLING_BEARING_STANDARDS)
           for name, summary in (
               ("rolling-bearing", "a ball or roller bearing, single or paired: ISO 281 "

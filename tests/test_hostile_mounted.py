@@ -677,12 +677,6 @@ def test_contact_angle_stays_below_right_angle(tmp_path):
         assert assert_solved(result)["operating_contact_angle_max"] < math.pi / 2
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="a pure tilting moment (Fr = Fa = 0, M = 2 N*m) is refused with "
-    "'both loads are zero, so the life is undefined', though the moment loads the balls and "
-    "ISO/TS 16281 rates it",
-)
 def test_pure_moment_solves(tmp_path):
     assert_solved(
         run(

@@ -734,15 +734,17 @@ def test_pair_with_two_rows_is_one_line():
     refused(cli("solve", write("s.yaml", text)), "rows", line_of(text, "rows"))
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "a cylindrical roller bearing under a tilting moment (5 N·m) or an imposed misalignment "
-    "with preload and radial_load 0 is refused 'radial_load: both loads are zero, so the life "
-    "is undefined', which is false: the moment loads the rollers (ISO/TS 16281 rates it)"))
 @pytest.mark.parametrize("over", [{"tilting_moment": "5 N*m"},
                                   {"misalignment": "1 mrad", "operating_clearance": "-5 um"}])
 def test_moment_alone_is_not_called_no_load(over):
-    run = cli("solve", write("s.yaml", spec(CYL, radial_load="0 kN", **over)))
-    assert "both loads are zero" not in run.err
+    """A moment, or a tilt against a preload, loads the rollers with no force: ISO/TS
+    16281 rates it, ISO 281's lives and ISO 76's safety are unbounded (null)."""
+    run = cli("solve", write("s.yaml", spec(CYL, radial_load="0 kN", **over)), "--format",
+              "json")
+    assert run.code in (0, 1), run.err
+    results = json.loads(run.out)["results"]
+    assert results["max_element_load"] > 0 and results["reference_rating_life"] > 0
+    assert results["basic_rating_life"] is None and results["static_safety_factor"] is None
 
 
 def test_report_plots_the_life_the_limit_judges():
@@ -940,12 +942,6 @@ def test_tolerance_studies_finish_finite(data):
     assert "max_element_load" in record["results"]
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "tolerance: roller_length: 10 mm ± 0.5 mm with roller_profile: {crown_radius: 86 mm} "
-    "(valid at the nominal 10 mm; at the band's 10.5 mm the crown drops the ends 160 µm, "
-    "over 2 % of Dwe) is refused in one line naming roller_length, but at the line of "
-    "crown_radius (14) instead of roller_length's own (8); other band ends (roller_diameter, "
-    "contact_angle, crown_radius) are refused at their own line, as docs/tolerance.md says"))
 def test_tolerance_band_past_the_crown_limit_is_one_line():
     data = spec(CYL, roller_length="10 mm ± 0.5 mm", roller_profile={"crown_radius": "86 mm"})
     text = dump(data)

@@ -178,6 +178,17 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
 }
 
 
+def _contact_too_large(contacts: Mapping[str, NDArray], dw: ArrayLike, fr: NDArray,
+                       fa: NDArray, thrust: bool) -> list[tuple[int, NDArray]]:
+    """Where a contact ellipse outgrows the ball (a semi-axis above Dw/2), named by the
+    load that dominates, the one to lower: codes 15 (axial) and 14 (radial)."""
+    largest = np.maximum(contacts["inner_contact_semi_major"],
+                         contacts["outer_contact_semi_major"])
+    too_large = ~(largest <= np.asarray(dw) / 2.0)
+    axial_heavier = thrust | (np.asarray(fa) > np.asarray(fr))
+    return [(15, too_large & axial_heavier), (14, too_large & ~axial_heavier)]
+
+
 def evaluate(inputs: RollingBearingInputs,
              wanted: Collection[str] | None = None) -> Solution:
     """Registry entry point: results, warning flags and status codes from SI inputs.
@@ -194,7 +205,7 @@ def evaluate(inputs: RollingBearingInputs,
     alpha, fr, fa, speed = operating_point(inputs)
     # Checks in the order they are reported: the first that fails names the fault.
     found = Found(checks=[] if thrust else [(6, ~((alpha >= 0) & (alpha < np.pi / 2)))])
-    found.checks += [(7, ~(speed > 0)), (8, ~((fr > 0) | (fa > 0)))]
+    found.checks += [(7, ~(speed > 0)), (8, ~mounted_bearing.loaded(inputs, fr, fa))]
     out = found.results
 
     c_iso = c0_iso = f0_iso = None
@@ -237,9 +248,7 @@ def evaluate(inputs: RollingBearingInputs,
                                  inputs["elastic_modulus"], inputs["poisson_ratio"],
                                  inputs["max_contact_pressure"])
         out.update(contacts)
-        largest = np.maximum(contacts["inner_contact_semi_major"],
-                             contacts["outer_contact_semi_major"])
-        found.checks.append((15 if thrust else 14, ~(largest <= np.asarray(dw) / 2.0)))
+        found.checks += _contact_too_large(contacts, dw, fr, fa, thrust)
 
     mounted, along = mounted_bearing.as_mounted(inputs, mounted_ball_bearing.mounted_results,
                                                 c, out, speed)

@@ -34,7 +34,7 @@ def damped_newton(potential: Callable[[NDArray], Any], q: NDArray, applied: NDAr
     max|∇U|/max(|F|, |∇U_c|, ``internal``), ``internal`` (N,) [N] the size of forces
     that cancel inside (a preloaded pair's), whose rounding no step can beat. A design
     whose scaled displacement outgrows ``reach`` (N,) [m] has no equilibrium (its ring
-    runs off: U is unbounded below) and is left there, its residual above the tolerance.
+    runs off: U is unbounded below) and is left there, its residual infinite.
     Source: J. Nocedal and S. J. Wright, *Numerical Optimization*, 2nd ed., 3.1 (Armijo)
     and 10.3 (Levenberg–Marquardt).
     """
@@ -74,7 +74,7 @@ def damped_newton(potential: Callable[[NDArray], Any], q: NDArray, applied: NDAr
         state = type(state)(*(np.where(better.reshape((n,) + (1,) * (a.ndim - 1)), b, a)
                               for a, b in zip(state, new, strict=True)))
         damping = np.where(better, np.maximum(damping / 10.0, 1e-14), damping * 10.0)
-    return q, residual
+    return q, np.where(gone, np.inf, residual)
 
 
 def bracketed_newton(residual: Callable[[NDArray], tuple[NDArray, NDArray, NDArray]],

@@ -162,6 +162,17 @@ def or_zero(value: Any) -> Any:
     return 0.0 if value is None else value
 
 
+def loaded(inputs: Mapping[str, Any], radial: NDArray, axial: NDArray) -> NDArray:
+    """Where the bearing carries a load: a force, or as mounted a tilting moment or an
+    imposed misalignment, which loads its elements without one."""
+    force = (radial > 0) | (axial > 0)
+    if inputs.get("method") != "iso-16281":
+        return force
+    tilted = (np.asarray(or_zero(inputs.get("tilting_moment")), dtype=float) != 0) | (
+        np.asarray(or_zero(inputs.get("misalignment")), dtype=float) != 0)
+    return force | tilted
+
+
 def designs(inputs: Mapping[str, Any], *others: ArrayLike
             ) -> tuple[tuple[int, ...], Callable[[Any], NDArray]]:
     """The designs' shape (the broadcast of every number of ``inputs`` and of

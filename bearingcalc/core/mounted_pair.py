@@ -47,7 +47,9 @@ NO_SPACING = 33
 STATUS_REASONS = {
     NO_SPACING: ("pair_spacing", DerivedTest(
         "the pair's bearings overlap: their pressure centres and widths leave no room for "
-        "both; give pair_spacing, the distance of the pressure centres")),
+        "both (back-to-back, side by side, their centres lie B + 2c apart, c = "
+        "(Dpw/2)·tanα: spacers only part them further); give pair_spacing, the distance of "
+        "the pressure centres")),
 }
 #: How the two bearings face each other: (bearing 1's side, bearing 2's orientation).
 #: Bearing 1 carries the thrust that pushes the shaft toward +x.
@@ -123,15 +125,19 @@ def _spacing(inputs: Mapping[str, Any], family: BearingFamily, flat: Any
              ) -> tuple[NDArray, NDArray]:
     """The distance of the pressure centres [m] (signed: negative where a face-to-face
     pair's lie past each other) and where two bearings side by side would overlap.
-    Given, it is ``pair_spacing``; else two bearings of width B side by side: B + 2c
-    back-to-back, B − 2c face-to-face, B in tandem."""
-    given = inputs.get("pair_spacing")
-    if given is not None:
-        spacing = flat(given)
-        return spacing, np.zeros(spacing.shape, dtype=bool)
-    width = flat(inputs["width"])
+    Given, it is ``pair_spacing`` (back-to-back, below B + 2c where the width is given:
+    overlapping); else two bearings of width B side by side: B + 2c back-to-back, B − 2c
+    face-to-face, B in tandem."""
+    given, width = inputs.get("pair_spacing"), inputs.get("width")
     twice = 2.0 * family.pressure_offset
     arrangement = str(inputs["arrangement"])
+    if given is not None:
+        spacing = flat(given)
+        if arrangement != "back-to-back" or width is None:
+            return spacing, np.zeros(spacing.shape, dtype=bool)
+        # back-to-back, two bearings side by side are as close as their centres come
+        return spacing, spacing < (flat(width) + twice) * (1.0 - 1e-9)
+    width = flat(width)
     spacing = width + {"back-to-back": twice, "face-to-face": -twice,
                        "tandem": 0.0 * twice}[arrangement]
     return spacing, ~(width > 0.0)

@@ -183,10 +183,10 @@ def _single(inputs: Mapping[str, Any], family: BearingFamily, flat: Any,
     # rollers all round carry any radial load and moment: where such a ring finds no
     # equilibrium it was pushed past any small displacement, by a load too large
     one_way = traits(str(inputs["bearing_type"])).one_way
-    runs_off = ~solved.converged & (not one_way)
+    runs_off = np.isinf(solved.residual) & (not one_way)
     found = shared.completed(inputs, Found(
         results, {"edge_loaded": family.edge_loaded(solved)},
-        [(shared.NO_EQUILIBRIUM, ~solved.converged & one_way),
+        [(shared.NO_EQUILIBRIUM, ~solved.converged & ~runs_off),
          (shared.crushing_code(inputs, CONTACT_TOO_WIDE), crushed | runs_off)]),
         (inner, outer),
         family.life(solved), iso281, speed, shape, "roller")

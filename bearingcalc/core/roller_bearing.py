@@ -150,7 +150,8 @@ def evaluate(inputs: RollingBearingInputs,
     angle_ok = ((alpha > np.pi / 4) & (alpha <= np.pi / 2) if thrust
                 else (alpha >= 0) & (alpha <= np.pi / 4))
     # Checks in the order they are reported: the first that fails names the fault.
-    found = Found(checks=[(19, ~angle_ok), (7, ~(speed > 0)), (8, ~((fr > 0) | (fa > 0)))])
+    found = Found(checks=[(19, ~angle_ok), (7, ~(speed > 0)),
+                          (8, ~mounted_bearing.loaded(inputs, fr, fa))])
     out = found.results
     c = _given(inputs.get("dynamic_load_rating"))
     c0 = _given(inputs.get("static_load_rating"))

@@ -22,13 +22,20 @@ class LoadRules(ReadsBearing):
 
     @rule
     def _loaded(self) -> SpecFieldError | None:
-        if self.radial_load == 0 and self.axial_load == 0:
+        if self.radial_load == 0 and self.axial_load == 0 and not self._tilted_as_mounted():
             return SpecFieldError("radial_load", "both loads are zero, so the life is "
                                   "undefined: give radial_load or axial_load, like 10 kN")
         if self._axial_only and self.radial_load > 0:
             return SpecFieldError("radial_load", "a thrust ball bearing (α = 90°) carries no "
                                   "radial load; use angular-contact, or set it to 0 kN")
         return None
+
+    def _tilted_as_mounted(self) -> bool:
+        """Whether the bearing as mounted carries a tilting moment or an imposed
+        misalignment, which load its elements without a force."""
+        return getattr(self, "method", None) == "iso-16281" and any(
+            getattr(self, name, None) not in (None, 0.0)
+            for name in ("tilting_moment", "misalignment"))
 
     @rule
     def _straight_rollers_loaded_radially(self) -> SpecFieldError | None:

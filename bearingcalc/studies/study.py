@@ -14,7 +14,7 @@ from numpy.typing import NDArray
 from bearingcalc.errors import BearingcalcError, SpecError
 from bearingcalc.kinds import Kind
 from bearingcalc.models.base import SpecModel, field_parser
-from bearingcalc.models.field_path import resolve_field
+from bearingcalc.models.field_path import FieldPath, resolve_field
 from bearingcalc.models.quantities import Tolerance
 from bearingcalc.models.yaml_loader import Document
 from bearingcalc.result_keys import FlatResults
@@ -57,7 +57,8 @@ def check_band_ends(document: Document, spec: SpecModel) -> None:
                 raise SpecError(f"the {end} end of its tolerance band, {shown:.6g}"
                                 f"{' ' + shown_unit if shown_unit else ''}, is outside what "
                                 f"the spec takes: {what}", source=document.source,
-                                line=error.line, field=name)
+                                line=document.line_of(FieldPath.parse(name).parts),
+                                field=name)
 
 
 @dataclass
