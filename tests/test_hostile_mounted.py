@@ -622,12 +622,6 @@ def test_report_one_ball(tmp_path):
 # ---------------------------------------------------------------- defects found (xfail until fixed)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="one missing geometry field gives 3-4 lines: the missing field, then "
-    "inner_groove_conformity, static_factor (and lubrication's pitch_diameter) repeating "
-    "the same cause",
-)
 @pytest.mark.parametrize("field", ["ball_count", "ball_diameter", "pitch_diameter"])
 def test_missing_geometry_one_line(tmp_path, field):
     assert_refused(

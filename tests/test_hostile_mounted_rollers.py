@@ -709,16 +709,11 @@ def test_tolerance_leads_with_the_life_the_limit_judges():
 
 
 # --------------------------------------------------------------------------------------
-# 5. Defects: kept as strict xfails.
+# 5. Defects once kept as strict xfails, since fixed.
 
 @pytest.mark.parametrize(("clearance", "load"), [
     ("-10 um", "10 mN"),
-    pytest.param("15 um", "1 mN", marks=pytest.mark.xfail(strict=True, reason=(
-        "a cylindrical roller bearing with 15 µm clearance under a 1 mN radial load is "
-        "refused 'file:1: axial_load: the rings find no equilibrium ...': the damped Newton "
-        "method, starting at first contact where a lamina's slope δ^(1/9) vanishes, does not "
-        "reach the 1e-12 residual of so small a load; the spec has no axial_load and the "
-        "line is 1; such a design has an equilibrium"))),
+    ("15 um", "1 mN"),
 ])
 def test_small_radial_load_on_a_roller_bearing_is_solved(clearance, load):
     solve(spec(CYL, operating_clearance=clearance, radial_load=load))

@@ -14,6 +14,8 @@ from numpy.typing import NDArray
 #: The relative residual at which the equilibrium counts as found.
 RESIDUAL_TOLERANCE = 1e-12
 MAX_ITERATIONS = 100
+#: The last digits of a displacement its rounding leaves uncertain.
+ROUNDING_ULPS = 8.0
 
 
 def damped_newton(potential: Callable[[NDArray], Any], q: NDArray, applied: NDArray,
@@ -31,8 +33,9 @@ def damped_newton(potential: Callable[[NDArray], Any], q: NDArray, applied: NDAr
     designs, all in SI. A step is taken where it lowers U (Armijo's rule) or halves the
     residual, and the Levenberg damping λ (times the stiffness scale ``typical`` (N,)
     [N/m]) then falls tenfold; else it grows tenfold. Returns q and the relative residual
-    max|∇U|/max(|F|, |∇U_c|, ``internal``), ``internal`` (N,) [N] the size of forces
-    that cancel inside (a preloaded pair's), whose rounding no step can beat. A design
+    max|∇U|/max(|F|, |∇U_c|, ``internal``, f_ε/tolerance), ``internal`` (N,) [N] the
+    size of forces that cancel inside (a preloaded pair's), whose rounding no step can
+    beat, and f_ε the force that rounding the displacement makes (:func:`_rounding_force`). A design
     whose scaled displacement outgrows ``reach`` (N,) [m] has no equilibrium (its ring
     runs off: U is unbounded below) and is left there, its residual infinite.
     Source: J. Nocedal and S. J. Wright, *Numerical Optimization*, 2nd ed., 3.1 (Armijo)
@@ -51,8 +54,9 @@ def damped_newton(potential: Callable[[NDArray], Any], q: NDArray, applied: NDAr
     for _ in range(MAX_ITERATIONS):
         force = np.where(moving, state.force / scale, 0.0)
         gradient = force - target
-        residual = np.max(np.abs(gradient), axis=1) / np.maximum(
-            size, np.max(np.abs(force), axis=1))
+        residual = np.max(np.abs(gradient), axis=1) / np.maximum.reduce([
+            size, np.max(np.abs(force), axis=1),
+            _rounding_force(state.hessian, q, scale, moving) / RESIDUAL_TOLERANCE])
         if reach is not None:
             gone |= np.max(np.abs(np.where(moving, q * scale, 0.0)), axis=1) > reach
         done = (residual <= RESIDUAL_TOLERANCE) | gone
@@ -75,6 +79,16 @@ def damped_newton(potential: Callable[[NDArray], Any], q: NDArray, applied: NDAr
                               for a, b in zip(state, new, strict=True)))
         damping = np.where(better, np.maximum(damping / 10.0, 1e-14), damping * 10.0)
     return q, np.where(gone, np.inf, residual)
+
+
+def _rounding_force(hessian: NDArray, q: NDArray, scale: NDArray, moving: NDArray
+                    ) -> NDArray:
+    """The force [N] that rounding the displacement to its last digits makes,
+    ROUNDING_ULPS·ε·max_i |H_ii·u_i| in the scaled coordinates u = D·q: no step resolves
+    less (a load of millinewtons on a ring some micrometres from its datum)."""
+    stiffness = np.abs(np.diagonal(hessian, axis1=1, axis2=2)) / (scale * scale)
+    return ROUNDING_ULPS * np.finfo(float).eps * np.max(
+        np.where(moving, stiffness * np.abs(q * scale), 0.0), axis=1)
 
 
 def bracketed_newton(residual: Callable[[NDArray], tuple[NDArray, NDArray, NDArray]],

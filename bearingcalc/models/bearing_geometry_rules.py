@@ -66,7 +66,9 @@ class GeometryRules(ReadsBearing):
                               else ("outer_groove_conformity", "inner_groove_conformity"))
             return SpecFieldError(missing, "the contact stresses need both groove "
                                   "conformities (like 0.52 and 0.53)", at=given)
-        if self.inner_groove_conformity is not None and not self.has_geometry:
+        # a geometry given in part: the ratings' rule names what it lacks
+        if (self.inner_groove_conformity is not None and not self.has_geometry
+                and not self._missing_geometry()):
             return SpecFieldError("inner_groove_conformity", "the contact stresses need the "
                                   "geometry too: ball_count, ball_diameter and pitch_diameter")
         return None

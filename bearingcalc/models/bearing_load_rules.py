@@ -174,7 +174,8 @@ class LoadFactorRules(ReadsBearing):
     @rule
     def _axial_factors_found(self) -> SpecFieldError | None:
         if self.type_traits.load_rule is not LoadRule.GROOVE_TABLE or not self.axial_load > 0 or (
-                self.load_factors is not None or self.has_geometry):
+                self.load_factors is not None or self.has_geometry
+                or self._missing_geometry()):  # in part: the ratings' rule names what lacks
             return None
         if self.static_load_rating is not None and self.static_factor is not None:
             return None

@@ -64,8 +64,8 @@ class LubricationRules(ReadsBearing):
 
     @rule
     def _lubrication_sizes(self) -> SpecFieldError | None:
-        if self.lubrication is None:
-            return None
+        if self.lubrication is None or self._missing_geometry():
+            return None  # a geometry given in part: the ratings' rule names what it lacks
         if self.mean_diameter is None and (self.bore_diameter is None) == (
                 self.outside_diameter is None):  # one ring diameter alone: _envelope says so
             return SpecFieldError("pitch_diameter", "lubrication needs the pitch diameter "

@@ -21,6 +21,13 @@ class RatingRules(ReadsBearing):
     def _rated(self) -> SpecFieldError | None:
         if self.type_traits.family != "ball":  # a roller bearing's ratings: _roller_rated
             return None
+        missing = self._missing_geometry()
+        if missing and self.type_traits.rating_formula is not RatingFormula.CATALOGUE:
+            given = next(name for name in ("ball_count", "ball_diameter", "pitch_diameter")
+                         if name not in missing)
+            return SpecFieldError(missing[0], "the ball geometry is incomplete: give "
+                                  f"{', '.join(missing)} too, or leave the geometry out",
+                                  at=given)
         if self.dynamic_load_rating is None and not self.has_geometry:
             return SpecFieldError("dynamic_load_rating", "missing: give dynamic_load_rating "
                                   "(C from the catalogue, like 55.3 kN), or the geometry "

@@ -73,6 +73,17 @@ class ReadsBearing:
                               f"the {element} must be smaller than "
                               f"(outside_diameter − bore_diameter)/2 = {section:g} mm")
 
+    def _missing_geometry(self) -> list[str]:
+        """The fields of the rolling elements' geometry (their count and sizes, and the
+        pitch diameter or the rings' mean) that a spec giving part of it leaves out: none
+        where it gives all of them, or none of the elements' sizes."""
+        sizes = (("roller_count", "roller_diameter", "roller_length") if self.rollers
+                 else ("ball_count", "ball_diameter"))
+        missing = [name for name in sizes if getattr(self, name) is None]
+        if len(missing) == len(sizes):
+            return []
+        return missing + (["pitch_diameter"] if self.mean_diameter is None else [])
+
     @property
     def _axial_only(self) -> bool:
         """A thrust ball bearing (α = 90°): P = Fa, and it carries no radial load."""
