@@ -379,7 +379,11 @@ REFUSED_COMBINATIONS = {
     "opposed pair without setting": ({"setting": DROP}, None, "setting"),
     "no width and no spacing": ({"width": DROP}, None, "pair_spacing"),
     "negative axial load": ({"axial_load": "-1.5 kN"}, "axial_load", "axial_load"),
-    "both loads zero": ({"radial_load": "0 kN", "axial_load": "0 kN"}, None, "radial_load"),
+    "both loads zero and an end play": (
+        {"radial_load": "0 kN", "axial_load": "0 kN", "setting": "{end_play: 20 µm}"},
+        None,
+        "radial_load",
+    ),
     "axial load beyond 1e6 kN": ({"axial_load": "2e6 kN"}, "axial_load", "axial_load"),
     "spherical roller pair": (
         {
@@ -1071,3 +1075,14 @@ def test_schema_describes_the_new_fields():
         option for option in properties["laminae"]["anyOf"] if option.get("type") == "integer"
     )
     assert (laminae["minimum"], laminae["maximum"]) == (10, 200)
+
+
+def test_a_preload_alone_loads_the_pair(tmp_path):
+    """No external load: the preload loads both bearings alike, each carrying it; ISO
+    281's lives, which rate forces, are unbounded (null)."""
+    results = solved(tmp_path, BALL, radial_load="0 kN", axial_load="0 kN")
+    for i in (1, 2):
+        assert close(results[f"bearing_{i}_axial_load"], 300.0, rel=1e-9)
+    assert close(results["bearing_1_max_element_load"],
+                 results["bearing_2_max_element_load"], rel=1e-9)
+    assert results["reference_rating_life"] > 0 and results["basic_rating_life"] is None

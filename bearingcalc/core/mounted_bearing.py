@@ -163,14 +163,20 @@ def or_zero(value: Any) -> Any:
 
 
 def loaded(inputs: Mapping[str, Any], radial: NDArray, axial: NDArray) -> NDArray:
-    """Where the bearing carries a load: a force, or as mounted a tilting moment or an
-    imposed misalignment, which loads its elements without one."""
+    """Where the bearing carries a load: a force, or as mounted a tilting moment, an
+    imposed misalignment or a pair's preload (or negative end play), which load its
+    elements without one."""
     force = (radial > 0) | (axial > 0)
     if inputs.get("method") != "iso-16281":
         return force
-    tilted = (np.asarray(or_zero(inputs.get("tilting_moment")), dtype=float) != 0) | (
-        np.asarray(or_zero(inputs.get("misalignment")), dtype=float) != 0)
-    return force | tilted
+
+    def given(key: str) -> NDArray:
+        return np.asarray(or_zero(inputs.get(key)), dtype=float)
+
+    preload = inputs.get("setting_preload")
+    return (force | (given("tilting_moment") != 0) | (given("misalignment") != 0)
+            | (given("setting_end_play") < 0)
+            | (preload is not None and np.asarray(preload, dtype=float) > 0))
 
 
 def designs(inputs: Mapping[str, Any], *others: ArrayLike

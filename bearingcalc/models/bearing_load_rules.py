@@ -22,7 +22,7 @@ class LoadRules(ReadsBearing):
 
     @rule
     def _loaded(self) -> SpecFieldError | None:
-        if self.radial_load == 0 and self.axial_load == 0 and not self._tilted_as_mounted():
+        if self.radial_load == 0 and self.axial_load == 0 and not self._loaded_as_mounted():
             return SpecFieldError("radial_load", "both loads are zero, so the life is "
                                   "undefined: give radial_load or axial_load, like 10 kN")
         if self._axial_only and self.radial_load > 0:
@@ -30,12 +30,17 @@ class LoadRules(ReadsBearing):
                                   "radial load; use angular-contact, or set it to 0 kN")
         return None
 
-    def _tilted_as_mounted(self) -> bool:
-        """Whether the bearing as mounted carries a tilting moment or an imposed
-        misalignment, which load its elements without a force."""
-        return getattr(self, "method", None) == "iso-16281" and any(
-            getattr(self, name, None) not in (None, 0.0)
-            for name in ("tilting_moment", "misalignment"))
+    def _loaded_as_mounted(self) -> bool:
+        """Whether the bearing as mounted carries a tilting moment, an imposed
+        misalignment or a pair's preload (or negative end play), which load its elements
+        without a force."""
+        if getattr(self, "method", None) != "iso-16281":
+            return False
+        setting = getattr(self, "setting", None)
+        return (any(getattr(self, name, None) not in (None, 0.0)
+                    for name in ("tilting_moment", "misalignment"))
+                or (setting is not None and (setting.preload is not None or (
+                    setting.end_play is not None and setting.end_play < 0))))
 
     @rule
     def _straight_rollers_loaded_radially(self) -> SpecFieldError | None:
