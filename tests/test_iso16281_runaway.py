@@ -5,6 +5,7 @@ Fa = Q·sinα; Harris & Kotzalas, Part 1, ch. 7), with short and long rollers.""
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -48,3 +49,26 @@ def test_a_cylindrical_ring_pushed_off_names_the_load_that_crushes_it(tmp_path):
     lines = [line for line in run.output.splitlines() if line.strip()]
     assert len(lines) == 1 and ": tilting_moment: " in lines[0], run.output
     assert "crushed" in lines[0]
+
+
+ANGULAR = {
+    "kind": "rolling-bearing", "type": "angular-contact", "method": "iso-16281",
+    "contact_angle": "25 deg", "dynamic_load_rating": "14.8 kN", "static_load_rating": "7.8 kN",
+    "ball_count": 9, "ball_diameter": "7.938 mm", "pitch_diameter": "38.5 mm",
+    "inner_groove_conformity": 0.52, "outer_groove_conformity": 0.53,
+    "radial_load": "2 kN", "speed": "3000 rpm"}
+
+
+@pytest.mark.parametrize(("axial", "warned"), [("20 N", True), ("1 kN", False)])
+def test_a_single_bearing_tilted_past_the_model_says_so(tmp_path, axial, warned):
+    """Free to tilt with nothing holding its shaft, an angular-contact bearing's ring
+    tilts past 10 mrad under a small axial load: solved, with a warning."""
+    path = tmp_path / "ac.yaml"
+    path.write_text(yaml.safe_dump({**ANGULAR, "axial_load": axial}, allow_unicode=True,
+                                   sort_keys=False), encoding="utf-8")
+    run = CliRunner().invoke(app, ["solve", str(path), "--format", "json"])
+    assert run.exit_code in (0, 1), run.output  # 1: its contact pressure fails its limit
+    record = json.loads(run.output)
+    tilted = abs(record["results"]["ring_tilt"]) > 0.01
+    assert tilted == warned
+    assert any("tilts more than 10 mrad" in w for w in record["warnings"]) == warned

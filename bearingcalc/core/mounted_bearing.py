@@ -80,6 +80,10 @@ WARNINGS = {
                              "check the clearance and the loads",
     "narrow_load_zone": "the load zone is below 90°: a few rolling elements carry the load; "
                         "a smaller operating clearance spreads it",
+    "tilted_beyond_model": "the inner ring tilts more than 10 mrad, beyond the small "
+                           "displacements of ISO/TS 16281's rigid rings: a bearing left free "
+                           "to tilt does so where nothing else holds its shaft; give the "
+                           "shaft's misalignment, or the pair or drive it sits in",
 }
 #: The status code of a bearing whose rings find no equilibrium.
 NO_EQUILIBRIUM = 25
@@ -361,7 +365,8 @@ def stiffness_margins(inputs: Mapping[str, Any], results: Mapping[str, NDArray]
 def warning_flags(results: Mapping[str, NDArray]) -> dict[str, NDArray]:
     """The warnings every bearing as mounted raises from its results."""
     return {"single_element_loaded": results["loaded_elements"] == 1,
-            "narrow_load_zone": results["load_zone_angle"] < np.pi / 2}
+            "narrow_load_zone": results["load_zone_angle"] < np.pi / 2,
+            "tilted_beyond_model": np.abs(results["ring_tilt"]) > LARGEST_TILT}
 
 
 def below_minimum_load(iso281: Mapping[str, Any], c: ArrayLike, share: float) -> NDArray:
