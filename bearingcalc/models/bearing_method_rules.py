@@ -52,6 +52,16 @@ ROLLER_CLEARANCE_SHARE = 0.1
 DEFAULT_LAMINAE = 30
 
 
+def at_one_point(method: str, duty_cycle: object, given: str) -> SpecFieldError | None:
+    """ISO/TS 16281's method solves one operating point: a duty cycle is refused, naming
+    what to ``given`` instead."""
+    if method == "iso-16281" and duty_cycle is not None:
+        return SpecFieldError("duty_cycle", f"method: iso-16281 solves one operating point: "
+                              f"give {given}, or method: iso-281 for the duty cycle",
+                              at="method")
+    return None
+
+
 class CrownProfile(SpecModel):
     """A roller crowned by one circular arc over its length."""
 
@@ -290,11 +300,7 @@ class MethodRules(RollerMountingRules):
 
     @whole_spec_rule
     def _mounted_at_one_point(self) -> SpecFieldError | None:
-        if self.method == "iso-16281" and self.duty_cycle is not None:
-            return SpecFieldError("duty_cycle", "method: iso-16281 solves one operating "
-                                  "point: give the loads and speed, or method: iso-281 for "
-                                  "the duty cycle", at="method")
-        return None
+        return at_one_point(self.method, self.duty_cycle, "the loads and speed")
 
     @rule
     def _mounted_geometry(self) -> SpecFieldError | None:

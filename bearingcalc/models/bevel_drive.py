@@ -20,7 +20,7 @@ from bearingcalc.models.bearing_method_rules import (
     PairSetting,
 )
 from bearingcalc.models.bevel_gears import BevelGearsLimits, BevelPair
-from bearingcalc.models.drive_mounting_rules import DriveMountingRules
+from bearingcalc.models.drive_mounting_rules import MESH_LIMITS, DriveMountingRules
 from bearingcalc.models.duty import (
     OIL_BIN_FIELDS,
     OIL_BIN_PATHS,
@@ -54,9 +54,6 @@ if TYPE_CHECKING:
 #: Keys of a ball-bearing spec that the drive sets for every bearing itself.
 _DRIVE_SETS = ("radial_load", "axial_load", "speed", "inner_speed", "outer_speed")
 SHAFTS = ("pinion", "gear")
-#: The limits of the gears' displacements at the mesh, judged as mounted.
-MESH_LIMITS = ("max_mesh_offset_change", "max_pinion_axial_shift", "max_gear_axial_shift",
-               "max_shaft_angle_change")
 
 
 ShaftArrangement = Literal["locating-floating", "back-to-back", "face-to-face"]

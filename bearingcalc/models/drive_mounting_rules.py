@@ -8,10 +8,15 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from bearingcalc.errors import SpecFieldError
+from bearingcalc.models.bearing_method_rules import at_one_point
 from bearingcalc.models.rules import rule, whole_spec_rule
 
 if TYPE_CHECKING:
     from collections.abc import Callable
+
+#: The limits of the gears' displacements at the mesh, judged as mounted.
+MESH_LIMITS = ("max_mesh_offset_change", "max_pinion_axial_shift", "max_gear_axial_shift",
+               "max_shaft_angle_change")
 
 
 class DriveMountingRules:
@@ -69,8 +74,7 @@ class DriveMountingRules:
     def _mesh_limits_need_the_method(self) -> SpecFieldError | None:
         if self.method == "iso-16281":
             return None
-        for name in ("max_mesh_offset_change", "max_pinion_axial_shift",
-                     "max_gear_axial_shift", "max_shaft_angle_change"):
+        for name in MESH_LIMITS:
             if getattr(self.limits, name, None) is not None:
                 return SpecFieldError(f"limits.{name}", "is judged on the drive as mounted: "
                                       "give method: iso-16281, or leave it out")
@@ -78,8 +82,4 @@ class DriveMountingRules:
 
     @whole_spec_rule
     def _mounted_drive_at_one_point(self) -> SpecFieldError | None:
-        if self.method == "iso-16281" and self.duty_cycle is not None:
-            return SpecFieldError("duty_cycle", "method: iso-16281 solves one operating "
-                                  "point: give the torque and speed, or method: iso-281 for "
-                                  "the duty cycle", at="method")
-        return None
+        return at_one_point(self.method, self.duty_cycle, "the torque and speed")

@@ -11,10 +11,10 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from bearingcalc.errors import BearingcalcError, SpecError
+from bearingcalc.errors import BearingcalcError
 from bearingcalc.kinds import Kind
 from bearingcalc.models.base import SpecModel, field_parser
-from bearingcalc.models.field_path import FieldPath, resolve_field
+from bearingcalc.models.field_path import resolve_field
 from bearingcalc.models.quantities import Tolerance
 from bearingcalc.models.yaml_loader import Document
 from bearingcalc.result_keys import FlatResults
@@ -54,11 +54,9 @@ def check_band_ends(document: Document, spec: SpecModel) -> None:
                 what = (error.message if error.field in (None, name)
                         else f"{error.field}: {error.message}")
                 shown, shown_unit = to_display(value, unit.strip() or "1")
-                raise SpecError(f"the {end} end of its tolerance band, {shown:.6g}"
-                                f"{' ' + shown_unit if shown_unit else ''}, is outside what "
-                                f"the spec takes: {what}", source=document.source,
-                                line=document.line_of(FieldPath.parse(name).parts),
-                                field=name)
+                raise document.error(f"the {end} end of its tolerance band, {shown:.6g}"
+                                     f"{' ' + shown_unit if shown_unit else ''}, is outside "
+                                     f"what the spec takes: {what}", field=name)
 
 
 @dataclass
