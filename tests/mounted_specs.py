@@ -33,7 +33,9 @@ def solved_with_limits(cli, spec_file, example: str, after: str,
 
 
 def refused_lines(cli, spec_file, text: str) -> list[str]:
-    """The error lines of a spec that ``solve`` refuses (exit status 2)."""
+    """The error lines of a spec that ``solve`` refuses (exit status 2, nothing on
+    stdout)."""
     run = cli("solve", spec_file(text))
     assert run.code == 2, run.out
+    assert run.out.strip() == "", run.out
     return run.err.strip().splitlines()

@@ -14,11 +14,10 @@ import math
 
 import numpy as np
 import pytest
-from typer.testing import CliRunner
 
-from bearingcalc.cli import app
 from bearingcalc.core.iso16281_life import edge_stress_factors, roller_reference_life
 from bearingcalc.core.iso16281_rollers import roller_geometry, solve_roller_equilibrium
+from tests.mounted_specs import refused_lines
 
 
 def _minzhun_factors(laminae: int) -> list[float]:
@@ -95,18 +94,15 @@ speed: 1500 rpm
 """
 
 
-def _solve(tmp_path, edge: str, method: str = "iso-16281", kind: str = "cylindrical-roller"):
-    path = tmp_path / "nu210.yaml"
-    path.write_text(SPEC.format(edge=edge, method=method, type=kind), encoding="utf-8")
-    return CliRunner().invoke(app, ["solve", str(path), "--format", "json"])
-
-
-def test_the_field_lowers_an_edge_loaded_bearings_life_and_false_is_the_default(tmp_path):
+def test_the_field_lowers_an_edge_loaded_bearings_life_and_false_is_the_default(cli,
+                                                                                 spec_file):
     lives = {}
     for edge in ("", "edge_stress_factor: false\n", "edge_stress_factor: true\n"):
-        run = _solve(tmp_path, edge)
-        assert run.exit_code == 0, run.output
-        lives[edge] = json.loads(run.output)["results"]["reference_rating_life"]
+        run = cli("solve", spec_file(SPEC.format(edge=edge, method="iso-16281",
+                                                 type="cylindrical-roller")),
+                  "--format", "json")
+        assert run.code == 0, run.err
+        lives[edge] = json.loads(run.out)["results"]["reference_rating_life"]
     assert lives[""] == lives["edge_stress_factor: false\n"]
     assert lives["edge_stress_factor: true\n"] < 0.5 * lives[""]
 
@@ -133,11 +129,8 @@ BALLS = ("ball_count: 9\nball_diameter: 7.938 mm\npitch_diameter: 38.5 mm\n"
     ("deep-groove", "iso-16281", BALLS, "false"),
     ("cylindrical-roller", "iso-281", "", "maybe"),
 ], ids=["catalogue-method", "balls", "balls-false", "not-a-boolean"])
-def test_the_field_is_refused_where_it_means_nothing(tmp_path, kind, method, geometry, value):
-    path = tmp_path / "plain.yaml"
-    path.write_text(CATALOGUE_ONLY.format(type=kind, method=method, geometry=geometry,
-                                          value=value), encoding="utf-8")
-    run = CliRunner().invoke(app, ["solve", str(path)])
-    assert run.exit_code == 2
-    lines = [line for line in run.output.splitlines() if line.strip()]
-    assert len(lines) == 1 and "edge_stress_factor:" in lines[0], run.output
+def test_the_field_is_refused_where_it_means_nothing(cli, spec_file, kind, method, geometry,
+                                                     value):
+    lines = refused_lines(cli, spec_file, CATALOGUE_ONLY.format(
+        type=kind, method=method, geometry=geometry, value=value))
+    assert len(lines) == 1 and "edge_stress_factor:" in lines[0], lines
