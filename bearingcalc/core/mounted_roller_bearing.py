@@ -80,11 +80,11 @@ def mounted_results(inputs: Mapping[str, Any], c: NDArray, iso281: Mapping[str, 
     same bearing (its L10 and life factors), at the rings' relative speed [rad/s]: of a
     single bearing, or of a matched pair (:mod:`bearingcalc.core.mounted_pair`)."""
     shape, flat = shared.designs(inputs, c, speed)
-    family = _family(inputs, flat, c)
+    geometry, family = _family(inputs, flat, c)
     if inputs.get("arrangement") in PAIRS:
         found, along = pair_results(inputs, family, flat, shape, c, iso281, speed)
     else:
-        found, along = _single(inputs, family, flat, shape, iso281, speed)
+        found, along = _single(inputs, geometry, family, flat, shape, iso281, speed)
     crown = inputs.get("crown_radius")
     lwe = flat(inputs["roller_length"])
     found.checks.insert(0, (CROWN_TOO_SMALL, np.zeros(shape, bool) if crown is None
@@ -117,11 +117,13 @@ def _geometry(inputs: Mapping[str, Any], flat: Any) -> tuple[RollerGeometry, NDA
 
 def bearing_family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> BearingFamily:
     """What a roller bearing's inputs give a shaft as mounted (a pair's, a drive's)."""
-    return _family(inputs, flat, c)
+    return _family(inputs, flat, c)[1]
 
 
-def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> BearingFamily:
-    """What the rollers give a bearing as mounted: their contacts, life, pressures."""
+def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray
+            ) -> tuple[RollerGeometry, BearingFamily]:
+    """The rollers' laminae, and what they give a bearing as mounted: their contacts,
+    life, pressures."""
     geometry, laminae = _geometry(inputs, flat)
     z, dwe, lwe, dpw, alpha = (flat(inputs[key]) for key in (
         "roller_count", "roller_diameter", "roller_length", "pitch_diameter",
@@ -153,17 +155,16 @@ def _family(inputs: Mapping[str, Any], flat: Any, c: NDArray) -> BearingFamily:
                                                   axis=2))
 
     row_count = int(rows.max())
-    return BearingFamily("roller", contacts,
-                      np.zeros_like(z), dpw / 2.0 * np.tan(alpha), first_contact, dpw / 2.0,
-                      life, pressures, deflection, 10.0 / 3.0, CONTACT_TOO_WIDE,
-                      lambda contacts: _edge_loaded(contacts.lamina_load, laminae, row_count))
+    return geometry, BearingFamily(
+        "roller", contacts, np.zeros_like(z), dpw / 2.0 * np.tan(alpha), first_contact,
+        dpw / 2.0, life, pressures, deflection, 10.0 / 3.0, CONTACT_TOO_WIDE,
+        lambda contacts: _edge_loaded(contacts.lamina_load, laminae, row_count))
 
 
-def _single(inputs: Mapping[str, Any], family: BearingFamily, flat: Any,
-            shape: tuple[int, ...], iso281: Mapping[str, Any], speed: NDArray
+def _single(inputs: Mapping[str, Any], geometry: RollerGeometry, family: BearingFamily,
+            flat: Any, shape: tuple[int, ...], iso281: Mapping[str, Any], speed: NDArray
             ) -> tuple[Found, dict[str, Along]]:
     """A single bearing's results, its elements along ``element``."""
-    geometry, _ = _geometry(inputs, flat)
     misalignment = inputs.get("misalignment")
     solved = solve_roller_equilibrium(geometry, shared.applied_loads(
         inputs, flat, geometry.roller_count.size), fixed_tilt=None if misalignment is None
