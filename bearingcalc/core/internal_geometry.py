@@ -11,6 +11,7 @@ following from C0. The pitch diameter is the rings' mean, (d + D)/2.
 
 from __future__ import annotations
 
+import functools
 from typing import NamedTuple
 
 import numpy as np
@@ -58,6 +59,8 @@ class EstimatedGeometry(NamedTuple):
                 and RATING_RATIO[0] <= self.rating_ratio <= RATING_RATIO[1])
 
 
+# pure, and asked for again by each rule and result that reads the geometry
+@functools.lru_cache(maxsize=256)
 def estimate_ball_geometry(bore: float, outside: float, rating: float,
                            static_rating: float, contact_angle: float, bearing_type: str
                            ) -> EstimatedGeometry | None:
@@ -88,6 +91,8 @@ def estimate_ball_geometry(bore: float, outside: float, rating: float,
     return _best(z, dw, None, pitch, c / rating, c0 / static_rating)
 
 
+# pure, and asked for again by each rule and result that reads the geometry
+@functools.lru_cache(maxsize=256)
 def estimate_roller_geometry(bore: float, outside: float, width: float | None,
                              rating: float, static_rating: float, contact_angle: float,
                              bearing_type: str) -> EstimatedGeometry | None:
