@@ -434,40 +434,22 @@ def test_sweep_gaps_not_nan(tmp_path, spec, vary):
     assert rows
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="a sweep whose clearance crosses the grooves' distance (fi+fo-1)*Dw is "
-    "refused whole (exit 2, 'the spec is invalid at operating_clearance = -500um') instead "
-    "of leaving gaps at the impossible points, as 'sweep --help' promises",
+@pytest.mark.parametrize(
+    ("vary", "corner", "bound"),
+    [
+        ("operating_clearance=-500um:500um:11", "operating_clearance = -500um", "396.9 µm"),
+        ("ball_count=10:20:11", "ball_count = 20", "at most 15 fit"),
+    ],
 )
-def test_sweep_clearance_edge_has_gaps_with_reason(tmp_path):
-    rows = sweep_rows(
-        run(
-            tmp_path,
-            BASE,
-            "sweep",
-            "--vary",
-            "operating_clearance=-500um:500um:11",
-            "-f",
-            "csv",
-            "{spec}",
-        )
-    )
-    gaps = [r for r in rows if r.get("reason")]
-    assert gaps, "points beyond the grooves' distance should be gaps"
-    assert all(r.get("max_element_load", "") == "" for r in gaps)
-
-
-@pytest.mark.xfail(
-    strict=True,
-    reason="a ball_count sweep past the count that fits (15 here) is refused whole "
-    "(exit 2) instead of leaving gaps at the counts that do not fit",
-)
-def test_sweep_ball_count_past_fit_has_gaps(tmp_path):
-    rows = sweep_rows(
-        run(tmp_path, BASE, "sweep", "--vary", "ball_count=10:20:11", "-f", "csv", "{spec}")
-    )
-    assert any(r.get("reason") for r in rows)
+def test_sweep_past_a_spec_rule_names_the_corner_and_the_bound(tmp_path, vary, corner, bound):
+    """A sweep crossing one of the spec's own rules (a clearance past the grooves'
+    distance (fi + fo − 1)·Dw, more balls than fit on the pitch circle) is refused in one
+    line that names the corner and the bound to narrow the range to."""
+    result = run(tmp_path, BASE, "sweep", "--vary", vary, "-f", "csv", "{spec}")
+    assert_no_crash(result)
+    assert result.exit_code == 2 and not result.stdout
+    lines = [line for line in result.stderr.splitlines() if line.strip()]
+    assert len(lines) == 1 and corner in lines[0] and bound in lines[0], result.stderr
 
 
 def test_sweep_grid_clearance_moment(tmp_path):
@@ -629,15 +611,11 @@ def test_missing_geometry_one_line(tmp_path, field):
     )
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="an angular-contact bearing with a near-zero axial load (1 mN, 5 N) "
-    "under 2 kN radial solves to a spurious state (ring tilted 8.6 mrad with no moment, two "
-    "balls at contact angle 0 carrying 1305 N, load_zone_angle 0 with 4 balls 'loaded') while "
-    "0 N and 100 N are refused as having no equilibrium",
-)
-@pytest.mark.parametrize("axial", ["1 mN", "5 N"])
+@pytest.mark.parametrize("axial", ["1 mN", "5 N", "20 N", "100 N"])
 def test_angular_contact_near_zero_axial_refused(tmp_path, axial):
+    """Once solved to spurious states (balls pressed past their groove's bottom, a ring
+    tilted 30 mrad with balls at 85°) while 0 N and 100 N were refused: every load below
+    the least that holds the balls on their shoulders is refused alike."""
     assert_refused(
         run(tmp_path, spec_with(ANGULAR, axial_load=axial), "solve", "--format", "json"),
         "axial_load",
@@ -660,6 +638,11 @@ def test_deep_groove_no_equilibrium_message_fits_type(tmp_path):
 )
 def test_moment_beyond_hertz_refused(tmp_path, changes, field):
     assert_refused(run(tmp_path, spec_with(BASE, **changes), "solve", "--format", "json"), field)
+
+
+def test_ring_pushed_over_its_balls_names_the_clearance(tmp_path):
+    spec = spec_with(BASE, operating_clearance="410 µm", tilting_moment=DROP)
+    assert_refused(run(tmp_path, spec, "solve", "--format", "json"), "operating_clearance")
 
 
 def test_contact_angle_stays_below_right_angle(tmp_path):

@@ -203,6 +203,34 @@ def test_an_angular_contact_bearing_without_axial_load_has_no_equilibrium():
     assert not mine.converged[0]
 
 
+def test_an_angular_contact_bearing_free_to_tilt_holds_above_a_least_axial_load_only():
+    """Under 2 kN radial and a growing axial load a single 25° bearing, its ring free to
+    tilt, has no equilibrium on its shoulders up to some least axial load and one at every
+    load above it: no stationary point with a ball pressed past its groove's bottom
+    (α ≤ 0, where an angular-contact bearing's model has no contact) is taken for one.
+    Each state taken is checked from the groove centres, written here again: every ball
+    pressed is pressed at 0 < α < 90°, and the loads balance."""
+    bearing = reference.BallBearing(9, 7.938e-3, 38.5e-3, 0.52, 0.53,
+                                    free_contact_angle=math.radians(25))
+    axial = np.concatenate([[1e-3, 5.0], np.linspace(20.0, 1500.0, 75)])
+    loads = np.zeros((axial.size, 5))
+    loads[:, 0], loads[:, 1] = axial, 2000.0
+    mine = solve_ball_equilibrium(_geometry([bearing] * axial.size), loads)
+    held = mine.converged
+    assert held.any() and not held[0]
+    least = axial[held].min()
+    assert held[axial >= least].all()
+    psi = 2 * np.pi * np.arange(9) / 9
+    for q, reaction, load in zip(mine.displacement[held], mine.reaction[held], loads[held],
+                                 strict=True):
+        groove = (0.52 + 0.53 - 1) * bearing.ball_diameter
+        sx = groove * math.sin(math.radians(25)) + q[0] + 38.5e-3 / 2 * q[4] * np.cos(psi)
+        sr = groove * math.cos(math.radians(25)) + q[1] * np.cos(psi)
+        pressed = np.hypot(sx, sr) > groove
+        assert np.all((sx[pressed] > 0) & (sr[pressed] > 0))
+        assert reaction == pytest.approx(load, rel=1e-9, abs=1e-9 * load[1])
+
+
 # --- the reference life, contacts and the published cases ------------------------------------
 
 def _life(bearing: reference.BallBearing, loads: np.ndarray, c: float):

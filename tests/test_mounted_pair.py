@@ -179,6 +179,24 @@ def test_a_preload_gives_each_bearing_that_axial_load_at_rest(cli, spec_file):
         assert results[f"bearing_{number}_axial_load"] == pytest.approx(1200.0, rel=1e-6)
 
 
+@pytest.mark.parametrize(("preload", "radial", "skids"), [
+    ("1.2 kN", "1 mN", False), ("50 N", "1 mN", True), ("50 N", "3 kN", False)])
+def test_the_minimum_load_is_judged_on_the_load_the_balls_carry(cli, spec_file, preload,
+                                                                radial, skids):
+    """The makers' minimum load, 1 % of the pair's C, judged against the
+    equivalent reference load: a preload that loads the balls (the makers' cure for
+    skidding) clears it with no external load, a light preload does not, and a radial
+    load does."""
+    text = BALL_PAIR.format(arrangement="face-to-face", setting=f"setting: {{preload: {preload}}}",
+                            axial="0 N", extra="").replace("radial_load: 3 kN",
+                                                           f"radial_load: {radial}")
+    [record] = solve_json(cli, spec_file(text))
+    load = record["results"]["dynamic_equivalent_reference_load"]
+    rating = record["results"]["dynamic_load_rating"]
+    assert (load < 0.01 * rating) == skids
+    assert any("balls may skid" in w for w in record["warnings"]) == skids
+
+
 @pytest.mark.parametrize(("arrangement", "setting", "extra", "field"), [
     ("single", "setting: {end_play: 10 µm}", "", "setting"),
     ("tandem", "setting: {end_play: 10 µm}", "", "setting"),

@@ -175,6 +175,9 @@ def sweep(
 ) -> None:
     """Solve the spec over a line or grid of one or two inputs; impossible points are gaps.
 
+    The spec's own checks must hold at the range's corners; a point the solver finds
+    impossible (no equilibrium, θ >= 45°) is a gap, its reason given.
+
     Exit status: 0 the sweep is written; 2 a bad spec, --vary or --result, or an output
     that cannot be written.
     """

@@ -178,12 +178,10 @@ def contact_state(geometry: BallGeometry, u: NDArray, balls: BallSet, columns: l
                   np.arctan2(sx, sr) if angles else None)
 
 
-def ball_deflections(geometry: BallGeometry, displacement: NDArray, azimuth: NDArray
-                     ) -> NDArray:
-    """Every ball's signed deflection δ = |s| − A [m] at the displacement (N, 5): its
-    compression where positive, its play where negative (an angular-contact ball off
-    its shoulder has no contact: its δ is made negative). ``azimuth`` (N, Zmax) as the
-    equilibrium gives it, NaN past Z."""
+def _groove_centres(geometry: BallGeometry, displacement: NDArray, azimuth: NDArray
+                    ) -> tuple[NDArray, NDArray, NDArray, NDArray]:
+    """s_x, s_r, δ = |s| − A and where the model gives a ball no contact (α ≥ 90°, or an
+    angular-contact ball at α ≤ 0), (N, Zmax), at the displacement (N, 5) in SI."""
     q = displacement
     cos, sin = np.cos(azimuth), np.sin(azimuth)
     sx = (geometry.axial_offset[:, None] + q[:, 0:1]
@@ -191,7 +189,40 @@ def ball_deflections(geometry: BallGeometry, displacement: NDArray, azimuth: NDA
     sr = geometry.radial_offset[:, None] + q[:, 1:2] * cos + q[:, 2:3] * sin
     deflection = np.sqrt(sx * sx + sr * sr) - geometry.groove_distance[:, None]
     off = (sr <= 0.0) | (geometry.one_sided[:, None] & (sx <= 0.0))
+    return sx, sr, deflection, off
+
+
+def ball_deflections(geometry: BallGeometry, displacement: NDArray, azimuth: NDArray
+                     ) -> NDArray:
+    """Every ball's signed deflection δ = |s| − A [m] at the displacement (N, 5): its
+    compression where positive, its play where negative (an angular-contact ball off
+    its shoulder has no contact: its δ is made negative). ``azimuth`` (N, Zmax) as the
+    equilibrium gives it, NaN past Z."""
+    _, _, deflection, off = _groove_centres(geometry, displacement, azimuth)
     return np.where(off, -np.abs(deflection), deflection)
+
+
+def pressed_beyond_contacts(geometry: BallGeometry, displacement: NDArray, azimuth: NDArray
+                            ) -> NDArray:
+    """Where a ball is pressed (δ > 0) at a place the model gives it no contact, (N,)
+    bool: an angular-contact ball pushed past its groove's bottom (α ≤ 0, onto the side
+    of the groove a one-sided bearing's model leaves out) or a ring pushed over its
+    balls (α ≥ 90°, see :func:`pushed_over_balls`). The rings of such a state rest on
+    contacts the model does not hold, so it is no equilibrium of the bearing: a single
+    angular-contact bearing with too little axial load reaches one, its ring pushed
+    back until its balls sit on the groove's bottom."""
+    _, _, deflection, off = _groove_centres(geometry, displacement, azimuth)
+    return np.any(off & (deflection > 0.0), axis=1)
+
+
+def pushed_over_balls(geometry: BallGeometry, displacement: NDArray, azimuth: NDArray
+                      ) -> NDArray:
+    """Where a ring has been pushed over a ball, (N,) bool: the ball pressed (δ > 0)
+    with its groove centres past each other radially (α ≥ 90°), its contact beyond the
+    shoulder. A deep-groove bearing reaches it under an axial load when its clearance
+    lets the ring move axially by about the grooves' distance."""
+    _, sr, deflection, _ = _groove_centres(geometry, displacement, azimuth)
+    return np.any((sr <= 0.0) & (deflection > 0.0), axis=1)
 
 
 class BallContacts(NamedTuple):
@@ -203,6 +234,9 @@ class BallContacts(NamedTuple):
     element_load: NDArray      # (N, Zmax) Q of each ball, NaN past Z [N]
     contact_angle: NDArray     # (N, Zmax) |α| of each ball's operating contact [rad]
     azimuth: NDArray           # (N, Zmax) ψ of each ball, NaN past Z [rad]
+    #: (N,) a ball pressed where the model gives it no contact (see
+    #: :func:`pressed_beyond_contacts`)
+    beyond_contacts: NDArray
 
 
 def ball_contacts_at(geometry: BallGeometry, displacement: NDArray) -> BallContacts:
@@ -218,7 +252,9 @@ def ball_contacts_at(geometry: BallGeometry, displacement: NDArray) -> BallConta
     state = contact_state(geometry, np.asarray(displacement, dtype=float) * to_si, balls,
                    list(range(5)), angles=True)
     blank = np.where(mask, 1.0, np.nan)
-    azimuth = np.arctan2(balls.trig[(0, 1)], balls.trig[(1, 0)]) % (2.0 * np.pi)
+    azimuth = (np.arctan2(balls.trig[(0, 1)], balls.trig[(1, 0)]) % (2.0 * np.pi)) * blank
     return BallContacts(state.energy, state.force * to_si,
                         state.hessian * to_si[:, :, None] * to_si[:, None, :],
-                        state.load * blank, np.abs(state.angle) * blank, azimuth * blank)
+                        state.load * blank, np.abs(state.angle) * blank, azimuth,
+                        pressed_beyond_contacts(geometry, np.asarray(displacement, dtype=float),
+                                                azimuth))

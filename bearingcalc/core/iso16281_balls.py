@@ -28,6 +28,7 @@ from bearingcalc.core.iso16281_ball_contacts import (
     BallSet,
     ball_set,
     contact_state,
+    pressed_beyond_contacts,
 )
 
 #: The displacements' order, and the stiffness matrix's.
@@ -96,9 +97,13 @@ def solve_ball_equilibrium(geometry: BallGeometry, load: ArrayLike, *,
                                       width)
     # u = S·q with S = diag(1, 1, 1, L, L): the force is S·∂U/∂u, the stiffness S·H·S
     to_si = np.array([1.0, 1.0, 1.0, 0.0, 0.0])[None, :] + np.outer(lever, [0, 0, 0, 1, 1])
-    return BallEquilibrium(u / to_si, force * to_si, azimuth, loads, angles,
+    displacement = u / to_si
+    # a stationary point with a ball pressed where the model gives it no contact is no
+    # equilibrium of the bearing (the one-sided contacts make the potential non-convex)
+    holds = ~pressed_beyond_contacts(geometry, displacement, azimuth)
+    return BallEquilibrium(displacement, force * to_si, azimuth, loads, angles,
                            hessian * to_si[:, :, None] * to_si[:, None, :], residual,
-                           residual <= RESIDUAL_TOLERANCE)
+                           (residual <= RESIDUAL_TOLERANCE) & holds)
 
 
 def _solve_chunk(geometry: BallGeometry, u: NDArray, target: NDArray, free: list[int],

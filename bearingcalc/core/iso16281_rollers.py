@@ -313,6 +313,9 @@ class RollerContacts(NamedTuple):
     element_load: NDArray      # (N, Zmax) each roller's load, NaN past Z [N]
     lamina_load: NDArray       # (N, Zmax, n_s) [N]
     azimuth: NDArray           # (N, Zmax) [rad], NaN past Z
+    #: (N,) False: a roller's laminae touch wherever they are pressed (the balls' own
+    #: contacts have places the model leaves out)
+    beyond_contacts: NDArray
 
 
 def roller_contacts_at(geometry: RollerGeometry, displacement: NDArray) -> RollerContacts:
@@ -329,4 +332,4 @@ def roller_contacts_at(geometry: RollerGeometry, displacement: NDArray) -> Rolle
     return RollerContacts(state.energy, state.force, state.hessian,
                           state.lamina.sum(axis=2) * blank,
                           np.where(mask[..., None], state.lamina, np.nan),
-                          (psi % (2 * np.pi)) * blank)
+                          (psi % (2 * np.pi)) * blank, np.zeros(count.size, dtype=bool))

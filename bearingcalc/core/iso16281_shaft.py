@@ -132,8 +132,11 @@ def solve_shaft(bearings: Sequence[ShaftBearing], load: ArrayLike, lever: ArrayL
     scale[:, 3:] = np.broadcast_to(np.asarray(lever, dtype=float), (n,))[:, None]
     q, residual = _newton(bearings, matrices, q, applied, free, scale)
     state = shaft_state(bearings, matrices, q)
+    # a stationary point with an element pressed where its bearing's model gives it no
+    # contact is no equilibrium of the shaft
+    beyond = np.logical_or.reduce([contacts.beyond_contacts for contacts in state.contacts])
     return ShaftEquilibrium(q, state.local, state.contacts, state.force, state.stiffness,
-                            residual, residual <= RESIDUAL_TOLERANCE)
+                            residual, (residual <= RESIDUAL_TOLERANCE) & ~beyond)
 
 
 def _typical_stiffness(bearings: Sequence[ShaftBearing], matrices: Sequence[NDArray],

@@ -23,6 +23,7 @@ from bearingcalc.core.iso16281_ball_contacts import (
     ball_contacts_at,
     ball_deflections,
     ball_geometry,
+    pushed_over_balls,
 )
 from bearingcalc.core.iso16281_balls import solve_ball_equilibrium
 from bearingcalc.core.iso16281_life import (
@@ -41,8 +42,8 @@ RESULTS = shared.results_with({
 #: Warnings of the balls as mounted: flag -> message.
 WARNINGS = {
     **shared.WARNINGS,
-    "below_minimum_load": "the equivalent load is below 1 % of C, the makers' minimum load of "
-                          "a ball bearing: the balls may skid",
+    "below_minimum_load": "the equivalent reference load is below 1 % of C, the makers' "
+                          "minimum load of a ball bearing: the balls may skid",
 }
 #: The makers' minimum load of a ball bearing, a share of C.
 MINIMUM_LOAD_SHARE = 0.01
@@ -53,8 +54,14 @@ CONTACT_TOO_LARGE = {"radial_load": (26, "load"), "tilting_moment": (27, "tiltin
                      "setting.preload": (36, "preload"),
                      "setting.end_play": (37, "interference (negative end play)"),
                      "axial_load": (38, "axial load")}
+#: The status code of a ring pushed over its balls (α ≥ 90°).
+OVER_SHOULDER = 42
 STATUS_REASONS = {
     **shared.STATUS_REASONS,
+    OVER_SHOULDER: ("operating_clearance", "the clearance lets the axial load push the "
+                    "ring over its balls (a contact angle of 90° or more, beyond the "
+                    "groove's shoulder): no bearing has a clearance this large for its "
+                    "balls; give the mounted bearing's, a few µm to a few tens of µm"),
     **mounted_pair.STATUS_REASONS,
     **{code: (field, DerivedTest(
         "the most heavily loaded ball's contact ellipse outgrows the ball (a semi-axis "
@@ -77,7 +84,7 @@ def mounted_results(inputs: Mapping[str, Any], c: NDArray, iso281: Mapping[str, 
     else:
         found, along = _single(inputs, geometry, family, flat, shape, iso281, speed)
     found.flags.update(below_minimum_load=shared.below_minimum_load(
-        iso281, c, MINIMUM_LOAD_SHARE))
+        found.results, c, MINIMUM_LOAD_SHARE))
     return found, along
 
 
@@ -131,6 +138,10 @@ def _single(inputs: Mapping[str, Any], geometry: BallGeometry, family: BearingFa
         inputs, flat, geometry.ball_count.size), fixed_tilt=None if misalignment is None
         else flat(misalignment))
     inner, outer, crushed = family.pressures(solved)
+    # only a clearance lets a deep-groove ring over its balls; an angular-contact
+    # bearing's stationary point there lies beyond its shoulders, as any other refused
+    over_shoulder = pushed_over_balls(geometry, solved.displacement, solved.azimuth
+                                      ) & ~geometry.one_sided
     with np.errstate(invalid="ignore", all="ignore"):
         results = shared.equilibrium_results(solved, family.deflection(solved.displacement,
                                                                        solved))
@@ -139,7 +150,8 @@ def _single(inputs: Mapping[str, Any], geometry: BallGeometry, family: BearingFa
     if misalignment is not None:
         results["tilting_moment_reaction"] = solved.reaction[:, 4]
     found = shared.completed(inputs, Found(results, checks=[
-        (shared.NO_EQUILIBRIUM, ~solved.converged),
+        (OVER_SHOULDER, over_shoulder),
+        (shared.NO_EQUILIBRIUM, ~solved.converged & ~over_shoulder),
         (shared.crushing_code(inputs, CONTACT_TOO_LARGE), crushed)]), (inner, outer),
         family.life(solved), iso281, speed, shape, "ball")
     return found, {"element": shared.element_rows({"azimuth": solved.azimuth,

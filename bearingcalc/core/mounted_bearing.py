@@ -369,10 +369,12 @@ def warning_flags(results: Mapping[str, NDArray]) -> dict[str, NDArray]:
             "tilted_beyond_model": np.abs(results["ring_tilt"]) > LARGEST_TILT}
 
 
-def below_minimum_load(iso281: Mapping[str, Any], c: ArrayLike, share: float) -> NDArray:
-    """Where ISO 281's equivalent load P is below the makers' minimum, ``share``·C."""
-    return (np.asarray(iso281["equivalent_dynamic_load"], dtype=float)
-            < share * np.asarray(c, dtype=float))
+def below_minimum_load(results: Mapping[str, Any], c: ArrayLike, share: float) -> NDArray:
+    """Where the dynamic equivalent reference load P_ref is below the makers' minimum,
+    ``share``·C: the load the elements carry as mounted, so that a preload (the makers'
+    cure for skidding) or a tilting moment counts, as ISO 281's P would not."""
+    load = np.asarray(results["dynamic_equivalent_reference_load"], dtype=float)
+    return load < share * np.asarray(c, dtype=float)
 
 
 def reshaped(found: Found, shape: tuple[int, ...]) -> Found:

@@ -42,8 +42,9 @@ WARNINGS = {
     "edge_loaded": "a roller is edge-loaded: its end lamina carries more than its mean "
                    "(ISO/TS 16281): the profile does not relieve the ends at this tilt or "
                    "load",
-    "below_minimum_load_roller": "the equivalent load is below 2 % of C, the makers' minimum "
-                                 "load of a roller bearing: the rollers may skid",
+    "below_minimum_load_roller": "the equivalent reference load is below 2 % of C, the "
+                                 "makers' minimum load of a roller bearing: the rollers "
+                                 "may skid",
 }
 #: The largest drop of a crowned roller at its ends, a share of Dwe: crowns drop some
 #: micrometres to tens.
@@ -91,7 +92,7 @@ def mounted_results(inputs: Mapping[str, Any], c: NDArray, iso281: Mapping[str, 
                             else ~_crown_fits(flat(crown), lwe,
                                               flat(inputs["roller_diameter"])).reshape(shape)))
     found.flags.update(below_minimum_load_roller=shared.below_minimum_load(
-        iso281, c, MINIMUM_LOAD_SHARE))
+        found.results, c, MINIMUM_LOAD_SHARE))
     return found, along
 
 
