@@ -328,7 +328,7 @@ KINDS: dict[str, Kind] = {
                "bearingcalc.core.rolling_bearing",
                margins=("life_margin", "static_safety_margin", "contact_pressure_margin",
                         "spin_to_roll_margin", "stiffness_radial_margin",
-                        "stiffness_axial_margin"),
+                        "stiffness_axial_margin", "operating_clearance_margin"),
                governing=("life_margin", ("modified_reference_rating_life",
                                           "modified_rating_life"), "static_safety_factor"),
                judged={"life_margin": LIFE, "static_safety_margin": STATIC,
@@ -336,7 +336,9 @@ KINDS: dict[str, Kind] = {
                        "spin_to_roll_margin": SPIN_TO_ROLL,
                        **{f"stiffness_{direction}_margin": Judged(
                            f"{direction} stiffness", f"stiffness_{direction}", True, "ratio")
-                          for direction in ("radial", "axial")}},
+                          for direction in ("radial", "axial")},
+                       "operating_clearance_margin": Judged("operating clearance",
+                                                            "operating_clearance", True)},
                plots=(Plot("duty-damage"), Plot("life-against-load")),
                # as mounted a tilting moment alone loads the elements at P = 0
                unbounded=("load_ratio", "basic_rating_life", "basic_rating_life_revolutions",

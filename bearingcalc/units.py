@@ -63,11 +63,13 @@ POWER = Dimension("power", "W", "gram * meter ** 2 / second ** 3", "9.4 kW", "kW
 TORQUE = Dimension("torque", "N·m", "gram * meter ** 2 / second ** 2", "150 N*m", "N·m", 1e-3)
 MASS = Dimension("mass", "kg", "gram", "0.13 kg", "kg", 1e-3)
 STIFFNESS = Dimension("stiffness", "N/m", "gram / second ** 2", "100 N/µm", "N/µm", 1e-3)
+#: A linear expansion coefficient, per kelvin (a temperature difference: no offset).
+THERMAL_EXPANSION = Dimension("thermal expansion", "1/K", "1 / kelvin", "11.5e-6 1/K", "1/K")
 #: A plain number (a ratio such as a groove conformity), written without a unit.
 DIMENSIONLESS = Dimension("plain number", "1", "dimensionless", "0.52", "")
 DIMENSIONS = {d.name: d for d in (LENGTH, ANGLE, ANGULAR_SPEED, ANGULAR_ACCEL, FORCE, STRESS,
                                   TIME, KINEMATIC_VISCOSITY, TEMPERATURE, DENSITY, POWER,
-                                  TORQUE, MASS, STIFFNESS)}
+                                  TORQUE, MASS, STIFFNESS, THERMAL_EXPANSION)}
 
 #: unit -> (scale, offset): kelvin = scale · value + offset.
 TEMPERATURE_UNITS: dict[str, tuple[float, float]] = {

@@ -95,3 +95,13 @@ def _example_specs_stay_untouched():
     after = snapshot()
     changed = sorted(set(before) ^ set(after) | {p for p in before if before[p] != after.get(p)})
     assert not changed, f"tests changed these example specs: {changed}"
+
+
+def refused_in_one_sentence(call, words) -> None:
+    """``call()`` raises a ValueError of one sentence holding every one of ``words``."""
+    with pytest.raises(ValueError) as refusal:
+        call()
+    message = str(refusal.value)
+    assert message.endswith(".") and message.count(". ") == 0, message
+    for word in words:
+        assert word in message, message

@@ -17,7 +17,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core import mounted_ball_bearing, mounted_bearing, mounted_pair
+from bearingcalc.core import (
+    mounted_ball_bearing,
+    mounted_bearing,
+    mounted_clearance,
+    mounted_loads,
+    mounted_pair,
+)
 from bearingcalc.core.arrangements import (
     DOUBLE_ROW_PAIRS,
     PAIRS,
@@ -96,6 +102,7 @@ RESULTS: dict[str, tuple[str, str]] = {
     "outer_spin_to_roll": ("1", "spin/roll of the outer race relative to the ball"),
     "spin_to_roll_margin": ("1", "max_spin_to_roll − the larger |spin_to_roll|"),
     **mounted_ball_bearing.RESULTS,
+    **mounted_clearance.RESULTS,
 }
 
 #: Headings of the table, each with its results.
@@ -121,6 +128,7 @@ GROUPS: dict[str, tuple[str, ...]] = {
                    "ball_attitude_angle", "inner_spin_to_roll", "outer_spin_to_roll",
                    "spin_to_roll_margin"),
     mounted_bearing.GROUP: tuple(mounted_ball_bearing.RESULTS),
+    mounted_clearance.GROUP: tuple(mounted_clearance.RESULTS),
 }
 
 #: How tables show results whose SI unit alone does not say it (revolutions in millions).
@@ -205,7 +213,7 @@ def evaluate(inputs: RollingBearingInputs,
     alpha, fr, fa, speed = operating_point(inputs)
     # Checks in the order they are reported: the first that fails names the fault.
     found = Found(checks=[] if thrust else [(6, ~((alpha >= 0) & (alpha < np.pi / 2)))])
-    found.checks += [(7, ~(speed > 0)), (8, ~mounted_bearing.loaded(inputs, fr, fa))]
+    found.checks += [(7, ~(speed > 0)), (8, ~mounted_loads.loaded(inputs, fr, fa))]
     out = found.results
 
     c_iso = c0_iso = f0_iso = None

@@ -117,6 +117,9 @@ class BearingTraits(NamedTuple):
     fill: tuple[float, float] | None = None
     #: A roller's effective length in diameters: least, most and usual.
     roller_proportion: tuple[float, float, float] | None = None
+    #: Which of ISO 5753-1's tables gives its radial clearance groups ("radial-ball",
+    #: "cylindrical"), None where none does.
+    clearance_table: str | None = None
 
     @property
     def fields(self) -> frozenset[str]:
@@ -146,7 +149,8 @@ TABLE: tuple[BearingTraits, ...] = (
                   one_way=False, angle_rule=AngleRule.DEFAULT, contact_angle=0.0,
                   example_angle=None, rating_formula=RatingFormula.RADIAL_BALL,
                   static_formula=StaticFormula.RADIAL_BALL,
-                  load_rule=LoadRule.GROOVE_TABLE, mounted=True, fill=(0.45, 0.7), **_BALL),
+                  load_rule=LoadRule.GROOVE_TABLE, mounted=True, fill=(0.45, 0.7),
+                  clearance_table="radial-ball", **_BALL),
     BearingTraits("angular-contact", ("angular-contact",), thrust=False, pairable=True,
                   one_way=True, angle_rule=AngleRule.GIVEN, contact_angle=None,
                   example_angle="40 deg", rating_formula=RatingFormula.RADIAL_BALL,
@@ -170,14 +174,16 @@ TABLE: tuple[BearingTraits, ...] = (
                   rating_formula=RatingFormula.RADIAL_ROLLER,
                   static_formula=StaticFormula.RADIAL_ROLLER,
                   load_rule=LoadRule.RADIAL_ONLY, ribless_forms=(("NU", "inner"), ("N", "outer")),
-                  mounted=True, fill=(0.6, 0.95), roller_proportion=(0.6, 2.5, 1.0), **_ROLLER),
+                  mounted=True, fill=(0.6, 0.95), roller_proportion=(0.6, 2.5, 1.0),
+                  clearance_table="cylindrical", **_ROLLER),
     BearingTraits("needle-roller", ("needle-roller",), thrust=False, rows=(1, 2),
                   pairable=False, one_way=False, angle_rule=AngleRule.FIXED,
                   contact_angle=0.0, example_angle=None, material_factor=1.1,
                   rating_formula=RatingFormula.RADIAL_ROLLER,
                   static_formula=StaticFormula.RADIAL_ROLLER,
                   load_rule=LoadRule.RADIAL_ONLY, drawn_cup=True, mounted=True,
-                  fill=(0.6, 0.97), roller_proportion=(2.5, 10.0, 4.0), **_ROLLER),
+                  fill=(0.6, 0.97), roller_proportion=(2.5, 10.0, 4.0),
+                  clearance_table="cylindrical", **_ROLLER),
     BearingTraits("tapered-roller", ("tapered-roller",), thrust=False, rows=(1, 2),
                   pairable=True, one_way=True, angle_rule=AngleRule.GIVEN,
                   contact_angle=None, example_angle="15 deg", material_factor=1.1,

@@ -31,6 +31,7 @@ from bearingcalc.core.iso16281_life import (
     ball_spring_constant,
     largest_ball_contacts,
 )
+from bearingcalc.core.mounted_loads import below_minimum_load
 from bearingcalc.core.mounted_pair import BearingFamily, pair_results
 from bearingcalc.core.solver import Along
 
@@ -42,7 +43,7 @@ RESULTS = shared.results_with({
 #: Warnings of the balls as mounted: flag -> message.
 WARNINGS = {
     **shared.WARNINGS,
-    "below_minimum_load": "the equivalent reference load is below 1 % of C, the makers' "
+    "below_minimum_load": "the load on the balls is below 1 % of C, the makers' "
                           "minimum load of a ball bearing: the balls may skid",
 }
 #: The makers' minimum load of a ball bearing, a share of C.
@@ -83,8 +84,8 @@ def mounted_results(inputs: Mapping[str, Any], c: NDArray, iso281: Mapping[str, 
         found, along = pair_results(inputs, family, flat, shape, c, iso281, speed)
     else:
         found, along = _single(inputs, geometry, family, flat, shape, iso281, speed)
-    found.flags.update(below_minimum_load=shared.below_minimum_load(
-        found.results, c, MINIMUM_LOAD_SHARE))
+    found.flags.update(below_minimum_load=below_minimum_load(
+        inputs, found.results, iso281, c, MINIMUM_LOAD_SHARE))
     return found, along
 
 

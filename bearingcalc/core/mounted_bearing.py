@@ -16,6 +16,7 @@ from numpy.typing import ArrayLike, NDArray
 from bearingcalc.core.bearing_life import life_margin
 from bearingcalc.core.common import Family, Found
 from bearingcalc.core.iso281 import life_modification_factor
+from bearingcalc.core.mounted_clearance import mounted_clearance
 from bearingcalc.core.solver import Along, AxisResults
 
 #: A family's results as mounted from (inputs, C, ISO 281's results, speed).
@@ -166,23 +167,6 @@ def or_zero(value: Any) -> Any:
     return 0.0 if value is None else value
 
 
-def loaded(inputs: Mapping[str, Any], radial: NDArray, axial: NDArray) -> NDArray:
-    """Where the bearing carries a load: a force, or as mounted a tilting moment, an
-    imposed misalignment or a pair's preload (or negative end play), which load its
-    elements without one."""
-    force = (radial > 0) | (axial > 0)
-    if inputs.get("method") != "iso-16281":
-        return force
-
-    def given(key: str) -> NDArray:
-        return np.asarray(or_zero(inputs.get(key)), dtype=float)
-
-    preload = inputs.get("setting_preload")
-    return (force | (given("tilting_moment") != 0) | (given("misalignment") != 0)
-            | (given("setting_end_play") < 0)
-            | (preload is not None and np.asarray(preload, dtype=float) > 0))
-
-
 def designs(inputs: Mapping[str, Any], *others: ArrayLike
             ) -> tuple[tuple[int, ...], Callable[[Any], NDArray]]:
     """The designs' shape (the broadcast of every number of ``inputs`` and of
@@ -206,7 +190,15 @@ def as_mounted(inputs: Mapping[str, Any], mounted_results: MountedResults, c: ND
     nothing otherwise."""
     if inputs.get("method") != METHOD:
         return Found(), {}
-    return mounted_results(inputs, c, iso281, speed)
+    if inputs.get("mounting") is None:
+        return mounted_results(inputs, c, iso281, speed)
+    # the operating clearance follows from the drawing: the chain at the bands' middles
+    # (a study's samples) sets it, and its extremes are reported beside it
+    chain = mounted_clearance(inputs)
+    found, along = mounted_results({**inputs, "operating_clearance": chain[
+        "operating_clearance"]}, c, iso281, speed)
+    found.results.update(chain)
+    return found, along
 
 
 def element_rows(values: Mapping[str, NDArray], shape: tuple[int, ...]) -> Along:
@@ -367,14 +359,6 @@ def warning_flags(results: Mapping[str, NDArray]) -> dict[str, NDArray]:
     return {"single_element_loaded": results["loaded_elements"] == 1,
             "narrow_load_zone": results["load_zone_angle"] < np.pi / 2,
             "tilted_beyond_model": np.abs(results["ring_tilt"]) > LARGEST_TILT}
-
-
-def below_minimum_load(results: Mapping[str, Any], c: ArrayLike, share: float) -> NDArray:
-    """Where the dynamic equivalent reference load P_ref is below the makers' minimum,
-    ``share``·C: the load the elements carry as mounted, so that a preload (the makers'
-    cure for skidding) or a tilting moment counts, as ISO 281's P would not."""
-    load = np.asarray(results["dynamic_equivalent_reference_load"], dtype=float)
-    return load < share * np.asarray(c, dtype=float)
 
 
 def reshaped(found: Found, shape: tuple[int, ...]) -> Found:

@@ -28,6 +28,7 @@ from bearingcalc.core.iso16281_rollers import (
     row_loads,
     solve_roller_equilibrium,
 )
+from bearingcalc.core.mounted_loads import below_minimum_load
 from bearingcalc.core.mounted_pair import BearingFamily, pair_results
 from bearingcalc.core.solver import Along
 
@@ -42,7 +43,7 @@ WARNINGS = {
     "edge_loaded": "a roller is edge-loaded: its end lamina carries more than its mean "
                    "(ISO/TS 16281): the profile does not relieve the ends at this tilt or "
                    "load",
-    "below_minimum_load_roller": "the equivalent reference load is below 2 % of C, the "
+    "below_minimum_load_roller": "the load on the rollers is below 2 % of C, the "
                                  "makers' minimum load of a roller bearing: the rollers "
                                  "may skid",
 }
@@ -91,8 +92,8 @@ def mounted_results(inputs: Mapping[str, Any], c: NDArray, iso281: Mapping[str, 
     found.checks.insert(0, (CROWN_TOO_SMALL, np.zeros(shape, bool) if crown is None
                             else ~_crown_fits(flat(crown), lwe,
                                               flat(inputs["roller_diameter"])).reshape(shape)))
-    found.flags.update(below_minimum_load_roller=shared.below_minimum_load(
-        found.results, c, MINIMUM_LOAD_SHARE))
+    found.flags.update(below_minimum_load_roller=below_minimum_load(
+        inputs, found.results, iso281, c, MINIMUM_LOAD_SHARE))
     return found, along
 
 

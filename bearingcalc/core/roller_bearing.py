@@ -20,6 +20,8 @@ from numpy.typing import ArrayLike, NDArray
 from bearingcalc.core import (
     ball_bearing,
     mounted_bearing,
+    mounted_clearance,
+    mounted_loads,
     mounted_pair,
     mounted_roller_bearing,
 )
@@ -76,6 +78,7 @@ RESULTS: dict[str, tuple[str, str]] = {
                                     "cage"),
     "cage_speed": _BALL["cage_speed"],
     **mounted_roller_bearing.RESULTS,
+    **mounted_clearance.RESULTS,
 }
 
 GROUPS: dict[str, tuple[str, ...]] = {
@@ -91,6 +94,7 @@ GROUPS: dict[str, tuple[str, ...]] = {
     "kinematics": ("cage_frequency", "ball_pass_frequency_outer", "ball_pass_frequency_inner",
                    "roller_spin_frequency", "cage_speed"),
     mounted_bearing.GROUP: tuple(mounted_roller_bearing.RESULTS),
+    mounted_clearance.GROUP: tuple(mounted_clearance.RESULTS),
 }
 
 WARNINGS: dict[str, str] = {
@@ -151,7 +155,7 @@ def evaluate(inputs: RollingBearingInputs,
                 else (alpha >= 0) & (alpha <= np.pi / 4))
     # Checks in the order they are reported: the first that fails names the fault.
     found = Found(checks=[(19, ~angle_ok), (7, ~(speed > 0)),
-                          (8, ~mounted_bearing.loaded(inputs, fr, fa))])
+                          (8, ~mounted_loads.loaded(inputs, fr, fa))])
     out = found.results
     c = _given(inputs.get("dynamic_load_rating"))
     c0 = _given(inputs.get("static_load_rating"))

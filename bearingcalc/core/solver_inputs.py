@@ -12,7 +12,7 @@ nominal inputs by arrays, which a mapping does by copy without knowing the kind.
 
 from __future__ import annotations
 
-from typing import TypedDict
+from typing import Any, TypedDict
 
 from numpy.typing import ArrayLike
 
@@ -139,6 +139,10 @@ class _MountingInputs(TypedDict, total=False):
     edge_stress_factor: bool             # ISO/TS 16281's edge-stress factor in the life
     min_stiffness_radial: MaybeNumbers   # the least radial stiffness as mounted [N/m]
     min_stiffness_axial: MaybeNumbers    # the least axial stiffness as mounted [N/m]
+    min_operating_clearance: MaybeNumbers  # the least clearance a mounting gives [m]
+    #: the drawing the operating clearance follows from (see
+    #: :func:`bearingcalc.core.mounted_clearance.mounted_clearance`), in its place
+    mounting: dict[str, Any] | None
     setting_end_play: MaybeNumbers       # a pair's end play, negative: preload [m]
     setting_preload: MaybeNumbers        # a pair's preload at rest, each bearing [N]
     pair_spacing: MaybeNumbers           # a pair's pressure centres' distance [m]
@@ -203,6 +207,7 @@ class _ElementMountingInputs(TypedDict, total=False):
     """A drive's bearing as mounted (absent under the catalogue method)."""
 
     operating_clearance: MaybeNumbers    # the mounted diametral clearance [m]
+    mounting: dict[str, Any] | None      # the drawing it follows from, in its place
     roller_profile: str                  # "iso", "none" or "crown" (rollers)
     crown_radius: MaybeNumbers           # [m]
     laminae: MaybeNumbers                # [1]

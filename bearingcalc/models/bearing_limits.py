@@ -7,7 +7,12 @@ from pydantic import Field
 
 from bearingcalc.models.base import SpecModel
 from bearingcalc.models.plain_numbers import Ratio
-from bearingcalc.models.quantities import PositiveStiffness, PositiveStress, PositiveTime
+from bearingcalc.models.quantities import (
+    Length,
+    PositiveStiffness,
+    PositiveStress,
+    PositiveTime,
+)
 
 
 class BallBearingLimits(SpecModel):
@@ -23,3 +28,6 @@ class BallBearingLimits(SpecModel):
         None, description="iso-16281: the least radial stiffness, like 100 N/µm")
     min_stiffness_axial: PositiveStiffness | None = Field(
         None, description="iso-16281: the least axial stiffness, like 50 N/µm")
+    min_operating_clearance: Length | None = Field(
+        None, description="iso-16281 with a mounting: the least operating clearance, like "
+        "0 µm (no assembly preloaded); negative: the most preload")

@@ -8,12 +8,18 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
-from pydantic import Discriminator, Field
+from pydantic import Discriminator, Field, ValidationInfo, field_validator
 
 from bearingcalc.core.bearing_types import names_where
 from bearingcalc.core.mounted_roller_bearing import CROWN_DROP_SHARE
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import BRANCH_MARK, SpecModel, branch
+from bearingcalc.models.bearing_mounting import (
+    BearingMounting,
+    chain_inputs,
+    mounting_in_place,
+    resolve,
+)
 from bearingcalc.models.bearing_reads import ReadsBearing
 from bearingcalc.models.plain_numbers import LaminaCount
 from bearingcalc.models.quantities import (
@@ -28,10 +34,10 @@ from bearingcalc.models.rules import rule, whole_spec_rule
 #: The types ISO/TS 16281's method solves here (their trait ``mounted``).
 MOUNTED_TYPES = names_where(mounted=True)
 #: The method's own solver inputs (a drive's bearings take none of them).
-MOUNTING_INPUTS = ("method", "operating_clearance", "tilting_moment", "misalignment",
-                   "roller_profile", "crown_radius", "laminae", "roller_included_angle",
-                   "edge_stress_factor", "setting_end_play", "setting_preload",
-                   "pair_spacing", "width")
+MOUNTING_INPUTS = ("method", "operating_clearance", "mounting", "tilting_moment",
+                   "misalignment", "roller_profile", "crown_radius", "laminae",
+                   "roller_included_angle", "edge_stress_factor", "setting_end_play",
+                   "setting_preload", "pair_spacing", "width")
 #: The internal geometry the method needs, by the family of the rolling elements.
 MOUNTED_GEOMETRY = {
     "ball": ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_conformity",
@@ -43,6 +49,8 @@ ELEMENT_FIELDS = {"ball": ("ball_count", "ball_diameter"),
                   "roller": ("roller_count", "roller_diameter", "roller_length")}
 #: The limits judged only as mounted: the least stiffnesses.
 STIFFNESS_LIMITS = ("min_stiffness_radial", "min_stiffness_axial")
+#: Every limit judged only as mounted, a solver input each.
+MOUNTED_LIMITS = (*STIFFNESS_LIMITS, "min_operating_clearance")
 #: The method's fields of roller bearings alone.
 ROLLER_MOUNTING_FIELDS = ("roller_profile", "laminae", "roller_included_angle",
                           "edge_stress_factor")
@@ -108,6 +116,9 @@ class ElementMountingFields(SpecModel):
     operating_clearance: Length | None = Field(
         None, description="iso-16281: the mounted bearing's diametral radial clearance at "
         "its temperature (negative: preload)")
+    mounting: BearingMounting | None = Field(
+        None, description="iso-16281: the drawing the operating clearance follows from, in "
+        "its place: clearance_group, shaft and housing classes, temperatures")
     roller_profile: RollerProfile | None = Field(
         None, description="iso-16281, rollers: the rollers' profile: iso (ISO/TS 16281's "
         "logarithmic profile, the default), none (straight) or {crown_radius: …}")
@@ -122,10 +133,18 @@ class ElementMountingFields(SpecModel):
         "roller's ends by ISO/TS 16281's edge-stress factor in the life (default false)")
 
 
+    @field_validator("mounting", mode="after")
+    @classmethod
+    def _mounting_bands(cls, value: BearingMounting | None, info: ValidationInfo
+                        ) -> BearingMounting | None:
+        # the bearing's bore, outside and type are validated before its mounting
+        return None if value is None else resolve(value, info.data)
+
+
 #: The fields of a bearing as mounted, alone or on a drive's shaft.
 ELEMENT_MOUNTING_FIELDS = tuple(ElementMountingFields.model_fields)
 #: Their solver inputs, which a drive's bearing passes on as mounted.
-ELEMENT_MOUNTING_INPUTS = ("operating_clearance", "roller_profile", "crown_radius",
+ELEMENT_MOUNTING_INPUTS = ("operating_clearance", "mounting", "roller_profile", "crown_radius",
                            "laminae", "roller_included_angle", "edge_stress_factor",
                            "width")
 
@@ -155,7 +174,10 @@ class MountingFields(ElementMountingFields):
         rollers."""
         inputs: dict[str, object] = {
             "method": self.method, "operating_clearance": self.operating_clearance,
-            "tilting_moment": self.tilting_moment, "misalignment": self.misalignment}
+            "tilting_moment": self.tilting_moment, "misalignment": self.misalignment,
+            "mounting": None if self.mounting is None else chain_inputs(
+                self.mounting, self.bore_diameter, self.outside_diameter,
+                self.material.elastic_modulus, self.material.poisson_ratio)}
         if self.method == "iso-16281":
             inputs["width"] = self.width
         if self.method == "iso-16281" and self.arrangement != "single":
@@ -281,7 +303,7 @@ class MethodRules(RollerMountingRules):
     def _mounting_fields_need_the_method(self) -> SpecFieldError | None:
         if self.method == "iso-16281":
             return None
-        for name in ("operating_clearance", "tilting_moment", "misalignment",
+        for name in ("operating_clearance", "mounting", "tilting_moment", "misalignment",
                      *ROLLER_MOUNTING_FIELDS, "setting", "pair_spacing"):
             if getattr(self, name) is not None:
                 return SpecFieldError(name, "is for the bearing as mounted: give method: "
@@ -332,11 +354,13 @@ class MethodRules(RollerMountingRules):
             return None
         # one whose single row carries thrust one way sits at its free contact angle
         takes_clearance = not self.type_traits.one_way
+        if self.mounting is not None:
+            return mounting_in_place(self)
         if takes_clearance and self.operating_clearance is None:
             return SpecFieldError("operating_clearance", f"missing: a {self.type} bearing "
                                   "under method: iso-16281 needs its operating clearance, like "
-                                  "operating_clearance: 10 µm (negative: preload)",
-                                  at="method")
+                                  "operating_clearance: 10 µm (negative: preload), or its "
+                                  "mounting", at="method")
         if not takes_clearance and self.operating_clearance is not None:
             return SpecFieldError("operating_clearance", f"a single {self.type} bearing "
                                   "takes its free contact_angle, not a clearance: leave "

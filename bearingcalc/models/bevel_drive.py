@@ -14,8 +14,8 @@ from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.bearing_method_rules import (
     ELEMENT_MOUNTING_FIELDS,
     ELEMENT_MOUNTING_INPUTS,
+    MOUNTED_LIMITS,
     MOUNTING_INPUTS,
-    STIFFNESS_LIMITS,
     ElementMountingFields,
     PairSetting,
 )
@@ -374,7 +374,7 @@ class BevelDriveSpec(DriveMountingRules, BinOilRules, DutyCycleRules, BevelPair)
         kept = ELEMENT_MOUNTING_INPUTS if self.method == "iso-16281" else ()
         own = {key: value for key, value in self.rolling_bearing(bearing).solver_inputs().items()
                if key in kept or key not in (*_DRIVE_SETS, *MOUNTING_INPUTS,
-                                             *STIFFNESS_LIMITS, "min_rating_life")}
+                                             *MOUNTED_LIMITS, "min_rating_life")}
         return {"position": bearing.position,
                 "locating": "locating" if bearing.locating else "floating",
                 "induced_axial_factor": bearing.induced_axial_factor, **own}

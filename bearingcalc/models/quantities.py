@@ -26,6 +26,7 @@ from bearingcalc.units import (
     STIFFNESS,
     STRESS,
     TEMPERATURE,
+    THERMAL_EXPANSION,
     TIME,
     TORQUE,
     Dimension,
@@ -328,6 +329,10 @@ ElasticModulus = quantity(STRESS, "positive", plausible=PLAUSIBLE_MODULUS)
 PositiveTime = quantity(TIME, "positive", plausible=PLAUSIBLE_TIME)
 PositiveViscosity = quantity(KINEMATIC_VISCOSITY, "positive", plausible=PLAUSIBLE_VISCOSITY)
 Temperature = quantity(TEMPERATURE, "positive")
+#: Expansion coefficients of engineering solids, from invar's 1e-6/K to polymers' 2e-4/K.
+ThermalExpansion = quantity(THERMAL_EXPANSION, "positive",
+                            plausible=Plausible(1e-7, 1e-3, "1e-7 to 1e-3 1/K",
+                                                ("1/K", "ppm/K")))
 PositiveDensity = quantity(DENSITY, "positive")
 PositivePower = quantity(POWER, "positive")
 Torque = quantity(TORQUE, "positive")

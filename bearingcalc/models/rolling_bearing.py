@@ -18,10 +18,11 @@ from bearingcalc.models.bearing_geometry_rules import GeometryRules
 from bearingcalc.models.bearing_limits import BallBearingLimits
 from bearingcalc.models.bearing_load_rules import LoadFactorRules, LoadRules
 from bearingcalc.models.bearing_method_rules import (
-    STIFFNESS_LIMITS,
+    MOUNTED_LIMITS,
     MethodRules,
     MountingFields,
 )
+from bearingcalc.models.bearing_mounting import ClearanceLimitRules
 from bearingcalc.models.bearing_operating_rules import (
     ArrangementRules,
     LubricationRules,
@@ -185,7 +186,7 @@ BearingBin = bin_model("BearingBin", {
     "outer_speed": (AngularSpeed, "outer ring, fixed frame"), **OIL_BIN_FIELDS})
 
 
-class RollingBearingSpec(MethodRules, PairRules, GeometryEstimate, BinOilRules,
+class RollingBearingSpec(ClearanceLimitRules, MethodRules, PairRules, GeometryEstimate, BinOilRules,
                          DutyCycleRules, ElementFitRules, LubricationRules, ArrangementRules,
                          LoadFactorRules, LoadRules, OperatingRules, AngleRules, RatingRules,
                          GeometryRules, MountingFields, BearingFields, Spec):
@@ -370,7 +371,7 @@ class RollingBearingSpec(MethodRules, PairRules, GeometryEstimate, BinOilRules,
             "poisson_ratio": self.material.poisson_ratio,
             "max_contact_pressure": self.contact_pressure_limit,
             **self.mounting_inputs(),
-            **{name: getattr(self.limits, name) for name in STIFFNESS_LIMITS},
+            **{name: getattr(self.limits, name) for name in MOUNTED_LIMITS},
         }
 
     @property

@@ -1,0 +1,121 @@
+"""A bearing's operating clearance from its ``mounting``: the chain of
+:mod:`bearingcalc.core.mounting_fits` at the middle of every band (or at a study's
+samples), and its extremes over the bands' ends, for a bearing as mounted
+(``method: iso-16281``).
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from bearingcalc.core.mounting_fits import (
+    CHAIN_RESULTS,
+    Seats,
+    Temperatures,
+    operating_clearance,
+)
+
+#: The toleranced links of the chain, each a band [low, high] whose ends the extremes
+#: are taken over: the operating clearance is monotonic in each.
+BANDED = ("initial_clearance", "shaft_diameter", "bore_diameter", "housing_diameter",
+          "outside_diameter")
+#: The heading of the chain's results.
+GROUP = "mounting (ISO 286, ISO 492, Lamé)"
+#: Each result of the chain, and its extremes over the bands.
+RESULTS: dict[str, tuple[str, str]] = {}
+_MEANINGS = {
+    "fit_interference_inner": ("m", "the shaft's fit as drawn: its seat less the ring's "
+                               "mean bore, at the assembly's temperature (negative: loose)"),
+    "fit_interference_outer": ("m", "the housing's fit as drawn: the ring's mean outside "
+                               "less its seat (negative: loose)"),
+    "effective_interference_inner": ("m", "the shaft's fit less 0.4·Rz pressed down, at "
+                                     "the operating temperatures"),
+    "effective_interference_outer": ("m", "the housing's fit less 0.4·Rz pressed down, at "
+                                     "the operating temperatures"),
+    "fit_pressure_inner": ("Pa", "the pressure between shaft and inner ring (Lamé)"),
+    "fit_pressure_outer": ("Pa", "the pressure between outer ring and housing (Lamé)"),
+    "inner_ring_hoop_stress": ("Pa", "the inner ring's hoop stress at its bore"),
+    "clearance_reduction_fit_inner": ("m", "the inner raceway's growth from its fit"),
+    "clearance_reduction_fit_outer": ("m", "the outer raceway's shrinking from its fit"),
+    "clearance_change_thermal": ("m", "the clearance lost as the inner ring runs warmer "
+                                 "than the outer, α·Dpw·(ΔT_i − ΔT_o)"),
+    "initial_clearance": ("m", "the unmounted bearing's radial clearance (its group's)"),
+    "operating_clearance": ("m", "the mounted bearing's diametral clearance at its "
+                            "temperatures (negative: preload)"),
+}
+for _key in CHAIN_RESULTS:
+    _unit, _meaning = _MEANINGS[_key]
+    RESULTS[_key] = (_unit, _meaning + "; in solve at the middle of every band")
+    RESULTS[f"{_key}_min"] = (_unit, f"the least {_key} over the chain's bands")
+    RESULTS[f"{_key}_max"] = (_unit, f"the largest {_key} over the chain's bands")
+
+
+RESULTS["operating_clearance_margin"] = ("m", "operating_clearance − "
+                                         "min_operating_clearance")
+
+
+def raceway_diameters(inputs: Mapping[str, Any]) -> tuple[NDArray, NDArray]:
+    """The inner and outer raceways' diameters F and E [m] across an element's middle:
+    Dpw ∓ Dw (balls), Dpw ∓ Dwe (rollers)."""
+    element = inputs.get("ball_diameter")
+    if element is None:
+        element = inputs["roller_diameter"]
+    pitch = np.asarray(inputs["pitch_diameter"], dtype=float)
+    element = np.asarray(element, dtype=float)
+    return pitch - element, pitch + element
+
+
+def _chain(mounting: Mapping[str, Any], links: Mapping[str, Any],
+           inner_raceway: NDArray, outer_raceway: NDArray, pitch: NDArray
+           ) -> dict[str, NDArray]:
+    """The chain with the toleranced ``links`` (:data:`BANDED`) and the rest of
+    ``mounting``."""
+    def at(name: str) -> NDArray:
+        return np.asarray(mounting[name], dtype=float)
+
+    seats = Seats(links["shaft_diameter"], links["bore_diameter"],
+                  links["housing_diameter"], links["outside_diameter"],
+                  *(at(name) for name in (
+                      "shaft_bore", "housing_outside", "shaft_modulus", "shaft_poisson",
+                      "housing_modulus", "housing_poisson", "ring_modulus", "ring_poisson",
+                      "shaft_roughness", "housing_roughness")))
+    assembly = at("assembly_temperature")
+    rises = [at(name) - assembly for name in ("inner_ring_temperature",
+                                              "outer_ring_temperature",
+                                              "shaft_temperature", "housing_temperature")]
+    temperatures = Temperatures(*rises, at("ring_expansion"), at("shaft_expansion"),
+                                at("housing_expansion"))
+    return operating_clearance(links["initial_clearance"], seats, temperatures,
+                               inner_raceway, outer_raceway, pitch)
+
+
+def mounted_clearance(inputs: Mapping[str, Any]) -> dict[str, NDArray]:
+    """The chain's results (:data:`RESULTS`) of ``inputs['mounting']``: at its links'
+    values (the bands' middles, or a study's samples), and each result's least and
+    largest over the 2⁵ corners of the bands (``mounting['band_low']`` and
+    ``['band_high']``: name -> its band's end)."""
+    mounting = inputs["mounting"]
+    inner_raceway, outer_raceway = raceway_diameters(inputs)
+    pitch = np.asarray(inputs["pitch_diameter"], dtype=float)
+    results = _chain(mounting, {name: np.asarray(mounting[name], dtype=float)
+                                for name in BANDED}, inner_raceway, outer_raceway, pitch)
+    corners = [_chain(mounting, dict(zip(BANDED, corner, strict=True)), inner_raceway,
+                      outer_raceway, pitch)
+               for corner in itertools.product(*((mounting["band_low"][name],
+                                                  mounting["band_high"][name])
+                                                 for name in BANDED))]
+    least = inputs.get("min_operating_clearance")
+    if least is not None:
+        results["operating_clearance_margin"] = (results["operating_clearance"]
+                                                 - np.asarray(least, dtype=float))
+    shape = np.shape(results["operating_clearance"])
+    for key in CHAIN_RESULTS:
+        values = np.stack([np.broadcast_to(corner[key], shape) for corner in corners])
+        results[f"{key}_min"] = np.broadcast_to(values.min(axis=0), shape)
+        results[f"{key}_max"] = np.broadcast_to(values.max(axis=0), shape)
+    return results
