@@ -211,3 +211,35 @@ def test_the_clearance_limit_needs_a_mounting(cli, spec_file):
     text = BEARING + "operating_clearance: 10 µm\nlimits:\n  min_operating_clearance: 0 µm\n"
     lines = refused_lines(cli, spec_file, text)
     assert len(lines) == 1 and "min_operating_clearance" in lines[0], lines
+
+
+def test_the_interference_against_creep_is_nsks():
+    """NSK, Rolling Bearings, CAT. No. E1102e, 9.1.2 (2): Δd_F = 0.08·√(d/B·Fr)·10⁻³ mm
+    (Fr in N), the same as its {kgf} form 0.25·√(d/B·Fr) to the rounding of 0.25/√g;
+    above 0.2·C0r at least Δd ≥ 0.02·Fr/B·10⁻³ mm (eq. 9.2; 0.2·Fr/B in kgf) as well."""
+    from bearingcalc.core.mounted_clearance import required_interference
+
+    d, b, fr, c0 = 40.0, 18.0, 3000.0, 19000.0
+    light = required_interference(np.array(d * 1e-3), np.array(b * 1e-3), np.array(fr), c0)
+    assert light == pytest.approx(0.08 * math.sqrt(d / b * fr) * 1e-6, rel=1e-12)
+    kgf = 0.25 * math.sqrt(d / b * fr / 9.80665) * 1e-6
+    assert light == pytest.approx(kgf, rel=3e-3)
+    heavy = required_interference(np.array(d * 1e-3), np.array(b * 1e-3), np.array(8000.0),
+                                  c0)
+    assert heavy == pytest.approx(max(0.02 * 8000.0 / b, 0.08 * math.sqrt(d / b * 8000.0))
+                                  * 1e-6, rel=1e-12)
+    # NSK rounds 0.2/g = 0.0204 to 0.02
+    assert 0.02 * 8000.0 / b == pytest.approx(0.2 * 8000.0 / 9.80665 / b, rel=2.5e-2)
+
+
+@pytest.mark.parametrize(("shaft", "creeps", "too_tight"), [
+    ("k5", True, False),    # least interference 2 µm < 0.08·√(40/18·3000) = 6.5 µm
+    ("m6", False, False),   # +9..+25 on a 0..−12 bore: least 9 µm, middle 23 µm < 28 µm
+    ("p6", False, True),    # +26..+42: the middle, 40 µm, past 7/10 000 of 40 mm = 28 µm
+])
+def test_a_creeping_or_too_tight_shaft_fit_warns(cli, spec_file, shaft, creeps, too_tight):
+    text = CLASSED.replace("shaft: k5", f"shaft: {shaft}")
+    [record] = solve_json(cli, spec_file(text))
+    warned = " ".join(record["warnings"])
+    assert ("against creep" in warned) == creeps
+    assert ("7/10 000 of d" in warned) == too_tight

@@ -16,7 +16,8 @@ from numpy.typing import ArrayLike, NDArray
 from bearingcalc.core.bearing_life import life_margin
 from bearingcalc.core.common import Family, Found
 from bearingcalc.core.iso281 import life_modification_factor
-from bearingcalc.core.mounted_clearance import mounted_clearance
+from bearingcalc.core.mounted_clearance import WARNINGS as CHAIN_WARNINGS
+from bearingcalc.core.mounted_clearance import chain_warnings, mounted_clearance
 from bearingcalc.core.solver import Along, AxisResults
 
 #: A family's results as mounted from (inputs, C, ISO 281's results, speed).
@@ -77,6 +78,7 @@ ELEMENT_RESULTS = AxisResults({
 GROUP = "as mounted (ISO/TS 16281)"
 #: Warnings of every bearing as mounted: flag -> message.
 WARNINGS = {
+    **CHAIN_WARNINGS,
     "single_element_loaded": "one rolling element carries the whole load (ISO/TS 16281): "
                              "check the clearance and the loads",
     "narrow_load_zone": "the load zone is below 90°: a few rolling elements carry the load; "
@@ -198,6 +200,7 @@ def as_mounted(inputs: Mapping[str, Any], mounted_results: MountedResults, c: ND
     found, along = mounted_results({**inputs, "operating_clearance": chain[
         "operating_clearance"]}, c, iso281, speed)
     found.results.update(chain)
+    found.flags.update(chain_warnings(inputs, chain))
     return found, along
 
 

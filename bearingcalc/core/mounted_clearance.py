@@ -59,6 +59,67 @@ RESULTS["operating_clearance_margin"] = ("m", "operating_clearance − "
                                          "min_operating_clearance")
 
 
+#: NSK's guide against a fit that damages the inner ring: the largest interference under
+#: about 7/10 000 of the shaft's diameter (Rolling Bearings, CAT. No. E1102e, 9.1.2 (5)).
+LARGEST_INTERFERENCE_SHARE = 7e-4
+#: NSK's interference a radial load needs against creep (CAT. No. E1102e, 9.1.2 (2)): a
+#: light load's 0.08·√(d/B·Fr) µm (d, B [mm], Fr [N]), eq. (9.1); above 20 % of C0r, where
+#: NSK finds (9.1) often short, at least a heavy load's 0.02·Fr/B µm, eq. (9.2), as well.
+CREEP_LIGHT, CREEP_HEAVY, HEAVY_SHARE = 0.08e-6, 0.02e-6, 0.2
+WARNINGS = {
+    "inner_ring_creeps": "the turning inner ring's least effective interference is below "
+                         "what its radial load needs against creep (NSK: 0.08·√(d/B·Fr) µm, "
+                         "0.02·Fr/B µm above 20 % of C0): a tighter shaft class, or a ring "
+                         "held otherwise",
+    "fit_too_tight": "the shaft's interference exceeds 7/10 000 of d, NSK's guide against "
+                     "a fit that damages the ring (inner_ring_hoop_stress gives its "
+                     "stress)",
+}
+
+
+def required_interference(bore: NDArray, width: NDArray, radial_load: NDArray,
+                          static_rating: NDArray | None) -> NDArray:
+    r"""The effective interference [m] a turning inner ring under the radial load Fr [N]
+    needs against creep (d, B [m]):
+
+    .. math:: Δd_F = 0.08\sqrt{\frac{d}{B}F_r}\ \text{µm}, \qquad
+              Δd = 0.02\,\frac{F_r}{B}\ \text{µm}\ \ (F_r > 0.2\,C_{0r})
+
+    with d and B in mm. Source: NSK, Rolling Bearings, CAT. No. E1102e, 9.1.2 (2), eqs.
+    (9.1) and (9.2).
+    """
+    d_mm, b_mm = bore * 1e3, width * 1e3
+    light = CREEP_LIGHT * np.sqrt(d_mm / b_mm * radial_load)
+    if static_rating is None:
+        return light
+    heavy = CREEP_HEAVY * radial_load / b_mm
+    return np.where(radial_load > HEAVY_SHARE * static_rating, np.maximum(light, heavy), light)
+
+
+def chain_warnings(inputs: Mapping[str, Any], results: Mapping[str, NDArray]
+                   ) -> dict[str, NDArray]:
+    """The chain's warning flags: a turning inner ring whose least fit is below what its
+    load needs (where the bearing's width is known), a shaft fit tighter than NSK's
+    guide."""
+    mounting = inputs["mounting"]
+    bore = np.asarray(mounting["band_low"]["bore_diameter"], dtype=float)
+    # judged at the design's own fit (the bands' middles in solve), not at the bands'
+    # tightest corner, which every usual class of a tight fit passes
+    flags = {"fit_too_tight": results["fit_interference_inner"]
+             > LARGEST_INTERFERENCE_SHARE * bore}
+    width = inputs.get("width")
+    if width is not None:
+        turns = np.abs(np.asarray(inputs["inner_speed"], dtype=float)) > np.abs(
+            np.asarray(inputs["outer_speed"], dtype=float))
+        rating = inputs.get("static_load_rating")
+        needed = required_interference(bore, np.asarray(width, dtype=float),
+                                       np.asarray(inputs["radial_load"], dtype=float),
+                                       None if rating is None else np.asarray(rating, float))
+        flags["inner_ring_creeps"] = turns & (results["effective_interference_inner_min"]
+                                              < needed)
+    return flags
+
+
 def raceway_diameters(inputs: Mapping[str, Any]) -> tuple[NDArray, NDArray]:
     """The inner and outer raceways' diameters F and E [m] across an element's middle:
     Dpw ∓ Dw (balls), Dpw ∓ Dwe (rollers)."""
