@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 from scipy import stats
 
-from tests.conftest import solve_json
+from tests.conftest import ROOT, solve_json
 from tests.mounted_specs import refused_lines
 from tests.test_mounting_fits import _lame_system
 
@@ -243,3 +243,23 @@ def test_a_creeping_or_too_tight_shaft_fit_warns(cli, spec_file, shaft, creeps, 
     warned = " ".join(record["warnings"])
     assert ("against creep" in warned) == creeps
     assert ("7/10 000 of d" in warned) == too_tight
+
+
+def test_a_drives_bearing_takes_its_clearance_from_its_mounting(cli, spec_file):
+    """The mounted drive's deep-groove gear bearing given a mounting solves as the same
+    drive given that bearing the operating clearance its chain reports."""
+    drive = (ROOT / "specs" / "bevel-drive-mounted.yaml").read_text("utf-8")
+    typed = "     operating_clearance: 10 µm}"
+    assert typed in drive
+    mounting = ("     mounting: {clearance_group: CN, shaft: k5, housing: H7, "
+                "inner_ring_temperature: 70 degC, outer_ring_temperature: 60 degC}}")
+    [mounted] = solve_json(cli, spec_file(drive.replace(typed, mounting)))
+    clearance = mounted["results"]["gear_bearing_2_operating_clearance"]
+    low = mounted["results"]["gear_bearing_2_operating_clearance_min"]
+    high = mounted["results"]["gear_bearing_2_operating_clearance_max"]
+    assert low < clearance < high
+    [given] = solve_json(cli, spec_file(drive.replace(
+        typed, f"     operating_clearance: {clearance!r} m}}")))
+    for key in ("gear_bearing_2_radial_load", "gear_bearing_2_max_element_load",
+                "gear_bearing_1_reference_rating_life", "pinion_axial_shift"):
+        assert mounted["results"][key] == pytest.approx(given["results"][key], rel=1e-9)

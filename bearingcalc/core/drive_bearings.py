@@ -36,6 +36,10 @@ BEARING_RESULTS: dict[str, tuple[str, str]] = {
     "max_element_load": ("N", "its largest rolling-element load (ISO/TS 16281)"),
     "reference_rating_life": ("s", "L10r (ISO/TS 16281)"),
     "modified_reference_rating_life": ("s", "a1·aISO·L10r (ISO/TS 16281)"),
+    "operating_clearance": ("m", "with a mounting: its operating clearance from the drawing, "
+                                 "at the middle of every band (ISO/TS 16281)"),
+    "operating_clearance_min": ("m", "with a mounting: its least over the bands"),
+    "operating_clearance_max": ("m", "with a mounting: its largest over the bands"),
 }
 
 
