@@ -6,6 +6,7 @@ samples), and its extremes over the bands' ends, for a bearing as mounted
 
 from __future__ import annotations
 
+import functools
 import itertools
 from collections.abc import Mapping
 from typing import Any
@@ -176,7 +177,10 @@ def mounted_clearance(inputs: Mapping[str, Any]) -> dict[str, NDArray]:
                                                  - np.asarray(least, dtype=float))
     shape = np.shape(results["operating_clearance"])
     for key in CHAIN_RESULTS:
-        values = np.stack([np.broadcast_to(corner[key], shape) for corner in corners])
-        results[f"{key}_min"] = np.broadcast_to(values.min(axis=0), shape)
-        results[f"{key}_max"] = np.broadcast_to(values.max(axis=0), shape)
+        # reduced corner by corner: a study's corners are constants beside its samples,
+        # and a stack of them over the samples would hold 2⁵ arrays of its size
+        least = functools.reduce(np.minimum, (corner[key] for corner in corners))
+        most = functools.reduce(np.maximum, (corner[key] for corner in corners))
+        results[f"{key}_min"] = np.broadcast_to(least, shape)
+        results[f"{key}_max"] = np.broadcast_to(most, shape)
     return results
