@@ -12,7 +12,7 @@ import math
 import re
 import sys
 import traceback
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -233,8 +233,15 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
     results: dict[str, float | None] = {}
     warnings: list[str] = [*spec.catalogue_notes(), *spec.warnings(), *raised]
     of_bins = {key for table in layout.tables if table.axis == "bin" for key in table.keys}
+    # on a sparse axis NaN is an element the design lacks (specs of 8 and 9 balls solved
+    # together pad the smaller one's)
+    absent = {key for table in layout.tables if kind.along[table.axis].sparse
+              for key in table.keys}
     unbounded: dict[str, list[str]] = {}
     for key, value in raw.items():
+        if math.isnan(value) and key in absent:
+            results[key] = None
+            continue
         if math.isnan(value):
             raise document.error(f"{key} cannot be computed for this design; please report it")
         if math.isinf(value):
@@ -253,7 +260,25 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
     judged = judge(kind.judged, kind.results, layout.with_values(results), margins)
     return Evaluation(document.source, kind.name, name, results, units, margins, warnings,
                       spec.row_names(), judged, spec.catalogue_sources(),
-                      {key: layout.names[key][1] for key in results}, layout.tables)
+                      {key: layout.names[key][1] for key in results},
+                      _present(layout.tables, absent, results))
+
+
+def _present(tables: Sequence[ResultTable], absent: set[str],
+             results: Mapping[str, float | None]) -> tuple[ResultTable, ...]:
+    """The tables without the rows of elements this design lacks (every cell absent)."""
+    def lacks(cells: tuple[str | None, ...]) -> bool:
+        keys = [key for key in cells if key is not None]
+        return bool(keys) and all(key in absent and results.get(key) is None for key in keys)
+
+    kept = []
+    for table in tables:
+        rows = [i for i, cells in enumerate(table.cells) if not lacks(cells)]
+        kept.append(table if len(rows) == len(table.cells) else table._replace(
+            rows=tuple(table.rows[i] for i in rows),
+            positions=tuple(table.positions[i] for i in rows),
+            cells=tuple(table.cells[i] for i in rows)))
+    return tuple(kept)
 
 
 def _default_name(document: Document) -> str:

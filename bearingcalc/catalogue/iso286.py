@@ -122,7 +122,7 @@ def limit_deviations(tolerance_class: str, nominal_diameter: float) -> tuple[flo
     size = _size_mm(nominal_diameter)
     if letter == "j" and grade == 8 and size > SMALLEST_MM:
         raise ValueError(f"Tolerance class {tolerance_class!r} exists only up to 3 mm, not "
-                         f"at {size:g} mm: ISO 286-1 gives j5, j6 and j7 above 3 mm "
+                         f"at {size:.10g} mm: ISO 286-1 gives j5, j6 and j7 above 3 mm "
                          "(or use js8).")
     it = _cell(_row(_grades(), size)[2], f"IT{grade}")
     lower, upper = _limits_um(letter, grade, size, it, _row(_deviations(), size)[2])
@@ -205,9 +205,8 @@ def _size_mm(nominal_diameter: float) -> float:
     """The nominal size [mm], rounded to 1 nm; ValueError outside 3 mm to 500 mm."""
     size = size_mm("nominal diameter", nominal_diameter)
     if not SMALLEST_MM <= size <= LARGEST_MM:
-        raise ValueError(f"Nominal diameter {size:g} mm is outside the ISO 286 tables shipped "
-                         "with bearingcalc, which cover 3 mm to 500 mm (give it in metres, "
-                         "0.003 to 0.5).")
+        raise ValueError(f"Nominal diameter {size:.10g} mm is outside the ISO 286 tables shipped "
+                         "with bearingcalc, which cover 3 mm to 500 mm.")
     return size
 
 
@@ -216,7 +215,7 @@ def _row(rows: tuple[Row, ...], size: float) -> Row:
     for row in rows:
         if row[0] < size <= row[1]:
             return row
-    raise ValueError(f"No row of the ISO 286 tables holds {size:g} mm.")
+    raise ValueError(f"No row of the ISO 286 tables holds {size:.10g} mm.")
 
 
 def _grades() -> tuple[Row, ...]:

@@ -151,9 +151,9 @@ def _deviation(table: str, what: str, diameter: float, tolerance_class: str,
     if row is None:
         label = "tapered roller bearings" if tapered else "radial bearings"
         raise ValueError(
-            f"{what.capitalize()} {size:g} mm is outside ISO 492's class {tolerance_class.strip()} "
-            f"table of {label} shipped with bearingcalc, which covers {rows[0].over:g} mm "
-            f"to {rows[-1].up_to:g} mm (give it in metres).")
+            f"{what.capitalize()} {size:.10g} mm is outside ISO 492's class "
+            f"{tolerance_class.strip()} table of {label} shipped with bearingcalc, which "
+            f"covers {rows[0].over:g} mm to {rows[-1].up_to:g} mm.")
     return row.lower / UM_PER_M, row.upper / UM_PER_M
 
 

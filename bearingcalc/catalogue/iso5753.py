@@ -118,13 +118,13 @@ def radial_clearance(bore_diameter: float, group: str, *,
     name = _group_name(group, bearing_kind, groups)
     size = size_mm("bore diameter", bore_diameter)
     if size > LARGEST_MM:
-        raise ValueError(f"Bore diameter {size:g} mm is above {LARGEST_MM:g} mm, where "
+        raise ValueError(f"Bore diameter {size:.10g} mm is above {LARGEST_MM:g} mm, where "
                          "the makers' clearance tables disagree: give initial_clearance.")
     rows = _rows()[(bearing_kind, name)]
     row = next((row for row in rows if row.over < size <= row.up_to), None)
     if row is None:
         raise ValueError(f"ISO 5753-1 gives {name} of {bearing_kind} bearings for bores over "
-                         f"{rows[0].over:g} mm up to {rows[-1].up_to:g} mm, not {size:g} mm: "
+                         f"{rows[0].over:g} mm up to {rows[-1].up_to:g} mm, not {size:.10g} mm: "
                          "give initial_clearance.")
     return row.low / UM_PER_M, row.high / UM_PER_M
 

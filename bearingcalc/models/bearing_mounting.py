@@ -12,146 +12,65 @@ tolerance studies vary it as any toleranced field, by its own name
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Mapping
-from typing import Annotated, Any, Literal, NamedTuple
+from typing import Any
 
-from pydantic import Discriminator, Field, PlainValidator, PrivateAttr, WithJsonSchema
+from pydantic import Field, PrivateAttr
 
 from bearingcalc.catalogue import iso286, iso492, iso5753
 from bearingcalc.core.bearing_types import traits
 from bearingcalc.errors import SpecFieldError
-from bearingcalc.models.base import BRANCH_MARK, SpecModel, branch
-from bearingcalc.models.plain_numbers import PoissonRatio
+from bearingcalc.models.base import SpecModel
+from bearingcalc.models.mounting_fields import (
+    GROUPS_WORDS,
+    ClearanceGroup,
+    Material,
+    NonNegativeLength,
+    Roughness,
+    Seat,
+    SeatClass,
+    ToleranceClass,
+    material_constants,
+)
 from bearingcalc.models.quantities import (
-    ElasticModulus,
     Length,
     Measured,
     PositiveLength,
     Temperature,
     ThermalExpansion,
     Tolerance,
-    quantity,
 )
 from bearingcalc.models.rules import rule
-from bearingcalc.units import LENGTH
 
-#: A seat's ISO 286 class, with or without its nominal diameter in mm: "k5", "40 k5",
-#: "40 mm k5".
-_SEAT_CLASS = re.compile(r"^\s*(?:(?P<nominal>\d+(?:\.\d+)?)\s*(?:mm\s+)?)?"
-                         r"(?P<symbol>[A-Za-z]{1,2}\d{1,2})\s*$")
-#: A clearance group's name (C2, CN, C3 …, and the makers' matched groups).
-_GROUP = re.compile(r"^\s*C[0-9A-Z]{1,3}\s*$")
 #: The assembly's temperature where the spec gives none: 20 °C, ISO 1's reference.
 ASSEMBLY_TEMPERATURE = 293.15
 #: Bearing steel's expansion coefficient where the spec gives none [1/K].
 RING_EXPANSION = 11.5e-6
-#: A seat's material by name: E [Pa], ν, α [1/K], typical of the material (give your
-#: own as a mapping where it matters).
-NAMED_MATERIALS = {"steel": (210e9, 0.3, 11.5e-6), "aluminium": (70e9, 0.33, 23e-6),
-                   "cast iron": (110e9, 0.26, 10.5e-6)}
-
-_READ_LENGTH = PositiveLength.__metadata__[0].func
-_READ_ANY_LENGTH = quantity(LENGTH).__metadata__[0].func
-#: A length that may be zero: a solid shaft's bore, a polished surface's Rz.
-NonNegativeLength = quantity(LENGTH, "non-negative")
-
-
-class SeatClass(NamedTuple):
-    """A seat given by its ISO 286 class: its symbol (``k5``, ``H7``) and its nominal
-    diameter [m], None for the bearing's own."""
-
-    symbol: str
-    nominal: float | None
-
-
-def _seat(value: Any) -> Any:
-    """A seat's class (:class:`SeatClass`) or its diameter, with a tolerance where given
-    (``40.008 mm ± 0.004 mm``)."""
-    if isinstance(value, (SeatClass, Measured, float)):
-        return value
-    if isinstance(value, str):
-        match = _SEAT_CLASS.match(value)
-        if match:
-            nominal = match["nominal"]
-            return SeatClass(match["symbol"], None if nominal is None
-                             else float(nominal) * 1e-3)
-    return _READ_LENGTH(value)
-
-
-def _group(value: Any) -> Any:
-    """A clearance group's name, or the clearance itself (a study's value)."""
-    if isinstance(value, str) and _GROUP.match(value):
-        return value.strip()
-    if isinstance(value, (Measured, float)):
-        return value
-    return _READ_ANY_LENGTH(value)
-
-
-_TEXT = {"type": "string"}
-#: A seat: its ISO 286 class (with its nominal diameter in mm, or the bearing's), or its
-#: diameter with its own tolerance.
-Seat = Annotated[Any, PlainValidator(_seat), WithJsonSchema({
-    "anyOf": [{"type": "string",
-               "pattern": r"^\s*(?:\d+(?:\.\d+)?\s*(?:mm\s+)?)?[A-Za-z]{1,2}\d{1,2}\s*$"},
-              _TEXT,
-              {"type": "object"}],
-    "description": "an ISO 286 class (k5, or 40 k5 with its nominal diameter in mm), or the "
-                   "seat's diameter with its tolerance (40.008 mm ± 0.004 mm)"})]
-ClearanceGroup = Annotated[Any, PlainValidator(_group), WithJsonSchema({
-    "type": "string", "description": "ISO 5753-1's radial clearance group: C2, CN, C3, "
-    "C4, C5"})]
-
-
-class SeatMaterial(SpecModel):
-    """A seat's material given by its constants."""
-
-    elastic_modulus: ElasticModulus = Field(description="Young's modulus E")
-    poisson_ratio: PoissonRatio = Field(description="Poisson's ratio ν")
-    thermal_expansion: ThermalExpansion = Field(description="the expansion coefficient α, "
-                                                "like 23e-6 1/K")
-
-
-def _material_form(value: object) -> str:
-    return BRANCH_MARK + ("given" if isinstance(value, (dict, SeatMaterial)) else "named")
-
-
-Material = Annotated[
-    Annotated[Literal["steel", "aluminium", "cast iron"], branch("named")]
-    | Annotated[SeatMaterial, branch("given")],
-    Discriminator(_material_form)]
-
-
-class Roughness(SpecModel):
-    """The roughness pressed down in each fit, as Rz: the seat's and its ring's summed
-    (a ground ring's is small beside a turned seat's)."""
-
-    shaft: NonNegativeLength = Field(0.0, description="Rz of the shaft seat and the ring's "
-                                     "bore")
-    housing: NonNegativeLength = Field(0.0, description="Rz of the housing seat and the "
-                                       "ring's outside")
+#: The temperatures a bearing runs at [K]: bearing steel keeps its hardness to some
+#: 150 °C (stabilised to 300 °C), and no lubricant holds far below −60 °C.
+COLDEST, HOTTEST = 273.15 - 100.0, 273.15 + 400.0
 
 
 class BearingMounting(SpecModel):
     """How the bearing sits on the drawing: the chain to its operating clearance."""
 
     clearance_group: ClearanceGroup | None = Field(
-        None, description="ISO 5753-1's radial clearance group: C2, CN, C3, C4, C5")
+        None, description=f"ISO 5753-1's radial clearance group: {GROUPS_WORDS}")
     initial_clearance: Length | None = Field(
         None, description="the unmounted bearing's radial clearance, in place of a group, "
         "like 15 µm ± 5 µm")
-    tolerance_class: Literal["normal", "6", "5"] = Field(
-        "normal", description="the bearing's ISO 492 tolerance class")
+    tolerance_class: ToleranceClass = Field(
+        "normal", description="the bearing's ISO 492 tolerance class: normal, 6 or 5")
     bore_deviation: Length | None = Field(
         None, description="the ring's mean bore less its nominal (default: the tolerance "
         "class's band, Δdmp)")
     outside_deviation: Length | None = Field(
         None, description="the ring's mean outside less its nominal (default: the class's "
         "band, ΔDmp)")
-    shaft: Seat = Field(description="the shaft seat's ISO 286 class, like k5 (or 40 k5), or "
-                        "its diameter with its tolerance")
-    housing: Seat = Field(description="the housing seat's ISO 286 class, like H7, or its "
-                          "diameter with its tolerance")
+    shaft: Seat | None = Field(None, description="the shaft seat's ISO 286 class, like k5 "
+                               "(or 40 k5), or its diameter with its tolerance")
+    housing: Seat | None = Field(None, description="the housing seat's ISO 286 class, like "
+                                 "H7, or its diameter with its tolerance")
     shaft_bore: NonNegativeLength = Field(0.0, description="a hollow shaft's bore (0: "
                                           "solid)")
     housing_outside_diameter: PositiveLength | None = Field(
@@ -179,17 +98,37 @@ class BearingMounting(SpecModel):
     _bands: dict[str, tuple[float, float]] = PrivateAttr(default_factory=dict)
     #: what the spec wrote of each class, for the notes
     _written: dict[str, str] = PrivateAttr(default_factory=dict)
+    #: what the tables refused as the mounting was resolved, for its rules to say
+    _refused: list[SpecFieldError] = PrivateAttr(default_factory=list)
 
     @rule
-    def _group_or_clearance(self) -> SpecFieldError | None:
+    def _given_in_full(self) -> list[SpecFieldError]:
+        problems = []
         if self.clearance_group is not None and self.initial_clearance is not None:
-            return SpecFieldError("initial_clearance", "give a clearance_group or the "
-                                  "initial_clearance, not both")
+            problems.append(SpecFieldError("initial_clearance", "give a clearance_group or "
+                                           "the initial_clearance, not both"))
         if self.clearance_group is None and self.initial_clearance is None:
-            return SpecFieldError("clearance_group", "missing: give the bearing's "
-                                  "clearance_group (C2, CN, C3, C4, C5) or its "
-                                  "initial_clearance, like 15 µm ± 5 µm")
-        return None
+            problems.append(SpecFieldError("clearance_group", f"missing: give the bearing's "
+                                           f"clearance_group ({GROUPS_WORDS}) or its "
+                                           "initial_clearance, like 15 µm ± 5 µm"))
+        for seat, like in (("shaft", "k5"), ("housing", "H7")):
+            if getattr(self, seat) is None:
+                problems.append(SpecFieldError(seat, f"missing: give the {seat} seat's ISO "
+                                               f"286 class, like {seat}: {like}, or its "
+                                               "diameter with its tolerance"))
+        return problems + list(self._refused)
+
+    @rule
+    def _temperatures_a_bearing_runs_at(self) -> list[SpecFieldError]:
+        low, high = COLDEST - 273.15, HOTTEST - 273.15
+        return [SpecFieldError(name, f"{value - 273.15:.6g} °C is no temperature a bearing "
+                               f"runs or is assembled at: give one from {low:g} °C to "
+                               f"{high:g} °C")
+                for name in ("inner_ring_temperature", "outer_ring_temperature",
+                             "shaft_temperature", "housing_temperature",
+                             "assembly_temperature")
+                if (value := getattr(self, name)) is not None
+                and not COLDEST <= value <= HOTTEST]
 
     def bands(self) -> dict[str, tuple[float, float]]:
         return dict(self._bands)
@@ -213,82 +152,109 @@ def _ends(value: Any) -> tuple[float, float]:
     return tolerance.low, tolerance.high
 
 
-def _looked_up(field: str, lookup: Any, *args: Any, **kwargs: Any) -> tuple[float, float]:
-    """A table's band, its refusal located at the mounting's ``field``."""
-    try:
-        return lookup(*args, **kwargs)
-    except ValueError as problem:
-        raise SpecFieldError(f"mounting.{field}", str(problem)) from None
+class _Refusals:
+    """What the tables refuse as a mounting is resolved, each at the mounting's field."""
+
+    def __init__(self) -> None:
+        self.problems: list[SpecFieldError] = []
+
+    def band(self, field: str, lookup: Any, *args: Any, **kwargs: Any
+             ) -> tuple[float, float] | None:
+        try:
+            return lookup(*args, **kwargs)
+        except ValueError as problem:
+            self.problems.append(SpecFieldError(field, str(problem).rstrip(".")))
+            return None
 
 
 def resolve(mounting: BearingMounting, bearing: Mapping[str, Any]) -> BearingMounting:
     """``mounting`` with every class and group turned into its band (a toleranced value
     at its middle) and the bands kept, from the bearing's ``bore_diameter``,
-    ``outside_diameter`` and ``type`` (validated before the mounting). Raises
-    SpecFieldError where a table refuses a class, a group or a diameter."""
+    ``outside_diameter`` and ``type`` (validated before the mounting). What a table
+    refuses is kept for the mounting's rules to say, with the bearing's path; without
+    the bearing's diameters nothing is resolved (the bearing's rules say so)."""
     bore, outside = bearing.get("bore_diameter"), bearing.get("outside_diameter")
     if bore is None or outside is None:
-        missing = "bore_diameter" if bore is None else "outside_diameter"
-        raise SpecFieldError(missing, "missing: a bearing's mounting takes its "
-                             "bore_diameter and outside_diameter (or a designation)",
-                             at="mounting")
+        return mounting
     bore, outside = float(bore), float(outside)
+    refusals = _Refusals()
     updates: dict[str, Any] = {}
     written: dict[str, str] = {}
     group = mounting.clearance_group
-    if isinstance(group, str):
+    table = _clearance_table(bearing.get("type"))
+    if isinstance(group, str) and table is not None:  # else the bearing's rules refuse it
         written["clearance_group"] = group
-        updates["clearance_group"] = _group_band(group, bore, str(bearing.get("type")))
+        band = refusals.band("clearance_group", iso5753.radial_clearance, bore, group,
+                             bearing_kind=table)
+        if band is not None:
+            updates["clearance_group"] = _band(*band, "µm")
     for field, nominal in (("bore_deviation", bore), ("outside_deviation", outside)):
         if getattr(mounting, field) is None:
-            band = _looked_up(field, getattr(iso492, field), nominal,
-                              tolerance_class=mounting.tolerance_class)
-            updates[field] = _band(*band, "µm")
+            band = refusals.band(field, getattr(iso492, field), nominal,
+                                 tolerance_class=mounting.tolerance_class)
+            if band is not None:
+                updates[field] = _band(*band, "µm")
     for field, nominal, hole in (("shaft", bore, False), ("housing", outside, True)):
         seat = getattr(mounting, field)
         if isinstance(seat, SeatClass):
-            updates[field] = _seat_band(field, seat, nominal, hole)
             written[field] = seat.symbol
+            band = _seat_band(refusals, field, seat, nominal, hole)
+            if band is not None:
+                updates[field] = band
     resolved = mounting.model_copy(update=updates)
+    resolved._written, resolved._refused = written, refusals.problems
+    if not refusals.problems and all(
+            isinstance(value, float) for value in (resolved.shaft, resolved.housing,
+                                                   resolved.bore_deviation,
+                                                   resolved.outside_deviation)):
+        resolved._bands = _bands_of(resolved, bore, outside)
+    return resolved
+
+
+def _clearance_table(bearing_type: Any) -> str | None:
+    """Which of ISO 5753-1's tables gives the type's groups, None for none (or a type
+    its own rule refuses)."""
+    try:
+        return traits(str(bearing_type)).clearance_table
+    except (KeyError, ValueError):
+        return None
+
+
+def _bands_of(resolved: BearingMounting, bore: float, outside: float
+              ) -> dict[str, tuple[float, float]]:
+    """Each link's band [low, high] of a resolved mounting."""
     given = resolved.clearance_group if resolved.clearance_group is not None \
         else resolved.initial_clearance
-    bands = {} if given is None else {"initial_clearance": _ends(given)}
+    bands = {} if given is None or isinstance(given, str) else {
+        "initial_clearance": _ends(given)}
     for link, nominal, field in (("bore_diameter", bore, "bore_deviation"),
                                  ("outside_diameter", outside, "outside_deviation")):
         low, high = _ends(getattr(resolved, field))
         bands[link] = (nominal + low, nominal + high)
     for field in ("shaft", "housing"):
         bands[f"{field}_diameter"] = _ends(getattr(resolved, field))
-    resolved._bands, resolved._written = bands, written
-    return resolved
+    return bands
 
 
-def _group_band(group: str, bore: float, bearing_type: str) -> Measured:
-    """A clearance group's band of initial clearances, for the bearing's type."""
-    kind = traits(bearing_type).clearance_table
-    if kind is None:
-        raise SpecFieldError("mounting.clearance_group", f"ISO 5753-1's groups are of "
-                             f"deep-groove, cylindrical and needle roller bearings, not of a "
-                             f"{bearing_type} bearing: give its initial_clearance")
-    return _band(*_looked_up("clearance_group", iso5753.radial_clearance, bore, group,
-                             bearing_kind=kind), "µm")
-
-
-def _seat_band(field: str, seat: SeatClass, nominal: float, hole: bool) -> Measured:
+def _seat_band(refusals: _Refusals, field: str, seat: SeatClass, nominal: float,
+               hole: bool) -> Measured | None:
     """A seat class's band of diameters: the nominal (the ring's, where the class names
-    none) plus its ISO 286 deviations."""
+    none) plus its ISO 286 deviations; None where it is refused."""
     ring = "bore" if field == "shaft" else "outside diameter"
     if seat.nominal is not None and not math.isclose(seat.nominal, nominal, rel_tol=1e-9):
-        raise SpecFieldError(f"mounting.{field}", f"the seat's nominal {seat.nominal * 1e3:g} "
-                             f"mm is not the bearing's {ring}, {nominal * 1e3:g} mm: write "
-                             f"{seat.symbol} alone, or the ring's {ring}")
+        refusals.problems.append(SpecFieldError(
+            field, f"the seat's nominal {seat.nominal * 1e3:g} mm is not the bearing's "
+            f"{ring}, {nominal * 1e3:g} mm: write {seat.symbol} alone, or the ring's {ring}"))
+        return None
     if seat.symbol[0].isupper() != hole:
         which, like = ("a hole's", "upper case, like H7") if hole else (
             "a shaft's", "lower case, like k5")
-        raise SpecFieldError(f"mounting.{field}", f"{seat.symbol} is not {which} class: "
-                             f"the {field} seat takes {which} ({like})")
-    low, high = _looked_up(field, iso286.limit_deviations, seat.symbol, nominal)
-    return _band(nominal + low, nominal + high, "mm")
+        refusals.problems.append(SpecFieldError(
+            field, f"{seat.symbol} is not {which} class: the {field} seat takes {which} "
+            f"({like})"))
+        return None
+    band = refusals.band(field, iso286.limit_deviations, seat.symbol, nominal)
+    return None if band is None else _band(nominal + band[0], nominal + band[1], "mm")
 
 
 def chain_inputs(mounting: BearingMounting, bore: Any, outside: Any,
@@ -296,7 +262,7 @@ def chain_inputs(mounting: BearingMounting, bore: Any, outside: Any,
     """The chain's solver inputs (SI; arrays where a study varies a link): see
     :func:`bearingcalc.core.mounted_clearance.mounted_clearance`."""
     m = mounting
-    shaft, housing = (_constants(material) for material in (m.shaft_material,
+    shaft, housing = (material_constants(material) for material in (m.shaft_material,
                                                              m.housing_material))
     roughness = m.roughness or Roughness()
     inner = m.assembly_temperature if m.inner_ring_temperature is None \
@@ -325,36 +291,93 @@ def chain_inputs(mounting: BearingMounting, bore: Any, outside: Any,
         else m.housing_temperature}
 
 
-def _constants(material: Any) -> tuple[float, float, float]:
-    """E [Pa], ν and α [1/K] of a seat's material."""
-    if isinstance(material, str):
-        return NAMED_MATERIALS[material]
-    return material.elastic_modulus, material.poisson_ratio, material.thermal_expansion
+#: A hollow shaft's largest bore, a share of its seat's diameter: a thinner wall is no
+#: seat a ring is pressed onto.
+THINNEST_WALL_RATIO = 0.95
+#: A deviation from a nominal diameter beyond 0.2 mm and 1 % of it is a slip: ISO 286's
+#: widest bands here (grade 12, and the fundamental deviations up to grade 8) stay
+#: inside it, as every ISO 492 band does.
+SLIP_MM, SLIP_SHARE = 0.2e-3, 0.01
 
 
-def mounting_in_place(bearing: Any) -> SpecFieldError | None:
-    """A problem of a ``bearing``'s mounting in place of its operating clearance: given
-    with it, for a bearing without one, or with seat bodies that do not fit the ring."""
+def mounting_in_place(bearing: Any) -> list[SpecFieldError]:
+    """The problems of a ``bearing``'s mounting in place of its operating clearance:
+    given with it, for a bearing without one, without the ring's diameters, or with
+    bands and bodies that do not fit the ring."""
     if bearing.operating_clearance is not None:
-        return SpecFieldError("operating_clearance", "give the operating_clearance or "
-                              "the mounting it follows from, not both")
+        return [SpecFieldError("operating_clearance", "give the operating_clearance or the "
+                               "mounting it follows from, not both")]
     if bearing.type_traits.one_way or bearing.arrangement != "single":
-        return SpecFieldError("mounting", f"is for a single bearing with a radial "
-                              f"clearance (deep-groove, cylindrical, needle): a "
-                              f"{bearing.type} bearing ({bearing.arrangement}) sits at its "
-                              "contact angle or its pair's setting; leave mounting out")
-    mounting = bearing.mounting
-    if mounting.housing_outside_diameter is not None and bearing.outside_diameter is not None \
-            and not mounting.housing_outside_diameter > bearing.outside_diameter:
-        return SpecFieldError("mounting.housing_outside_diameter", f"must be larger than "
-                              f"the bearing's outside diameter, "
-                              f"{bearing.outside_diameter * 1e3:g} mm: the housing's wall "
-                              "lies around the ring")
-    if bearing.bore_diameter is not None and not mounting.shaft_bore < bearing.bore_diameter:
-        return SpecFieldError("mounting.shaft_bore", f"must be smaller than the "
-                              f"bearing's bore, {bearing.bore_diameter * 1e3:g} mm: a hollow "
-                              "shaft's bore lies inside its seat (0: solid)")
-    return None
+        return [SpecFieldError("mounting", f"is for a single bearing with a radial "
+                               f"clearance (deep-groove, cylindrical, needle): a "
+                               f"{bearing.type} bearing ({bearing.arrangement}) sits at its "
+                               "contact angle or its pair's setting; leave mounting out")]
+    bore, outside = bearing.bore_diameter, bearing.outside_diameter
+    if bore is None or outside is None:
+        return [SpecFieldError("bore_diameter" if bore is None else "outside_diameter",
+                               "missing: a bearing's mounting takes its bore_diameter and "
+                               "outside_diameter (or a designation)", at="mounting")]
+    return [*_bodies_fit(bearing.mounting, bore, outside), *_no_slips(bearing)]
+
+
+def _bodies_fit(mounting: BearingMounting, bore: float, outside: float
+                ) -> list[SpecFieldError]:
+    """The housing's wall around the ring, the hollow shaft's inside its seat."""
+    problems = []
+    if mounting.housing_outside_diameter is not None and not (
+            mounting.housing_outside_diameter > outside):
+        problems.append(SpecFieldError(
+            "mounting.housing_outside_diameter", f"must be larger than the bearing's outside "
+            f"diameter, {outside * 1e3:g} mm: the housing's wall lies around the ring"))
+    if not mounting.shaft_bore <= THINNEST_WALL_RATIO * bore:
+        problems.append(SpecFieldError(
+            "mounting.shaft_bore", f"must be at most {THINNEST_WALL_RATIO:g} of the "
+            f"bearing's bore, {THINNEST_WALL_RATIO * bore * 1e3:.4g} mm: a hollow shaft's "
+            "bore lies inside its seat with a wall around it (0: solid)"))
+    return problems
+
+
+def _no_slips(bearing: Any) -> list[SpecFieldError]:
+    """Each band's ends within a slip's reach of its nominal, and the clearance's within
+    what the rolling elements' grooves or rollers take."""
+    mounting, problems = bearing.mounting, []
+    for field, nominal, offset in (
+            ("bore_deviation", bearing.bore_diameter, 0.0),
+            ("outside_deviation", bearing.outside_diameter, 0.0),
+            ("shaft", bearing.bore_diameter, bearing.bore_diameter),
+            ("housing", bearing.outside_diameter, bearing.outside_diameter)):
+        value = getattr(mounting, field)
+        if not isinstance(value, float):
+            continue
+        reach = SLIP_MM + SLIP_SHARE * nominal
+        if max(abs(end - offset) for end in _ends(value)) > reach:
+            problems.append(SpecFieldError(
+                f"mounting.{field}", f"lies more than {reach * 1e3:.3g} mm from the "
+                f"nominal {nominal * 1e3:g} mm: no seat or ring deviates that far (a unit "
+                "slip?); give the deviation in µm, or the seat's class"))
+    clearance = mounting.clearance_group if isinstance(mounting.clearance_group, float) \
+        else mounting.initial_clearance
+    largest = _largest_clearance(bearing)
+    if clearance is not None and not max(
+            abs(end) for end in _ends(clearance)) < largest[0]:
+        field = "clearance_group" if isinstance(mounting.clearance_group, float) \
+            else "initial_clearance"
+        problems.append(SpecFieldError(f"mounting.{field}", f"must be smaller in size than "
+                                       f"{largest[1]}, {largest[0] * 1e6:.4g} µm"))
+    return problems
+
+
+def _largest_clearance(bearing: Any) -> tuple[float, str]:
+    """The largest clearance the rolling elements take: a ball's grooves' distance
+    (fi + fo − 1)·Dw, a tenth of a roller's diameter, 1 % of the bore where the geometry
+    is to be estimated."""
+    distance = bearing._groove_distance()
+    if distance is not None:
+        return distance, "the grooves' distance (fi + fo − 1)·Dw"
+    if bearing.roller_diameter is not None:
+        return 0.1 * bearing.roller_diameter, "a tenth of the roller's diameter"
+    # the geometry estimated later: ISO 5753-1's C5 stays within 1 % of the bore
+    return SLIP_SHARE * bearing.bore_diameter, "1 % of the bore, past any clearance group"
 
 
 class ClearanceLimitRules(SpecModel):

@@ -159,6 +159,11 @@ def resolve_field(spec: BaseModel, path: str) -> FieldAt:
             raise FieldPathError(f"a name is missing {where}: {', '.join(inputs)}")
         if part not in inputs:
             raise FieldPathError(f"{here} has no input '{part}'; inputs: {', '.join(inputs)}")
+        if value is not None and not isinstance(value, BaseModel):
+            # a union's plain form (a material by name) holds no fields to follow
+            raise FieldPathError(f"{here} is {value!r} in the spec, not a group of fields: "
+                                 f"write it as a mapping ({', '.join(inputs)}) to name "
+                                 f"{here}.{part}")
         info = group.model_fields[part]
         value = None if value is None else getattr(value, part)
         names.append(part)

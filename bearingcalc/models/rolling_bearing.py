@@ -374,6 +374,11 @@ class RollingBearingSpec(ClearanceLimitRules, MethodRules, PairRules, GeometryEs
             **{name: getattr(self.limits, name) for name in MOUNTED_LIMITS},
         }
 
+    def field_as_written(self, field: str) -> str:
+        """A clearance refused as mounted is the mounting's where the spec gives one."""
+        return "mounting" if field == "operating_clearance" and self.mounting is not None \
+            else field
+
     @property
     def contact_pressure_limit(self) -> float:
         """The limit given, else ISO 76's pressure at C0 for the rolling elements. [Pa]"""
