@@ -233,10 +233,12 @@ def _judge(document: Document, kind: Kind, spec: Spec, raw: dict[str, float],
     results: dict[str, float | None] = {}
     warnings: list[str] = [*spec.catalogue_notes(), *spec.warnings(), *raised]
     of_bins = {key for table in layout.tables if table.axis == "bin" for key in table.keys}
-    # on a sparse axis NaN is an element the design lacks (specs of 8 and 9 balls solved
-    # together pad the smaller one's)
+    # on a sparse axis a row of NaN is an element the design lacks (specs of 8 and 9
+    # balls solved together pad the smaller one's); a NaN in a row it has is an error
     absent = {key for table in layout.tables if kind.along[table.axis].sparse
-              for key in table.keys}
+              for cells in table.cells
+              if all(key is None or math.isnan(raw.get(key, math.nan)) for key in cells)
+              for key in cells if key is not None}
     unbounded: dict[str, list[str]] = {}
     for key, value in raw.items():
         if math.isnan(value) and key in absent:

@@ -8,12 +8,13 @@ a difference of two uniform bands; and each bad input one line."""
 
 from __future__ import annotations
 
+import csv
 import json
 import math
 
 import numpy as np
 import pytest
-from scipy import stats
+from scipy import integrate, stats
 
 from tests.conftest import ROOT, solve_json
 from tests.mounted_specs import refused_lines
@@ -50,6 +51,7 @@ TYPED = BEARING + """mounting:
   roughness: {shaft: 2.5 µm, housing: 4 µm}
   inner_ring_temperature: 70 degC
   outer_ring_temperature: 60 degC
+  shaft_temperature: 75 degC
   housing_temperature: 50 degC
 """
 STEEL, RING = (210e9, 0.3), (207.5e9, 0.3)
@@ -64,9 +66,9 @@ def _expected(initial, bore, shaft, outside, housing):
     warming across one line through a ball."""
     dpw, dw = 60e-3, 12.7e-3
     inner_race, outer_race = dpw - dw, dpw + dw
-    rise_inner, rise_outer, rise_housing = 50.0, 40.0, 30.0
+    rise_inner, rise_outer, rise_shaft, rise_housing = 50.0, 40.0, 55.0, 30.0
     inner_fit = (shaft - bore - 0.4 * 2.5e-6
-                 + bore * (ALPHA_STEEL * rise_inner - ALPHA_STEEL * rise_inner))
+                 + bore * (ALPHA_STEEL * rise_shaft - ALPHA_STEEL * rise_inner))
     outer_fit = (outside - housing - 0.4 * 4e-6
                  + outside * (ALPHA_STEEL * rise_outer - ALPHA_ALUMINIUM * rise_housing))
     reduction = 0.0
@@ -151,11 +153,13 @@ def test_a_study_of_the_interference_is_the_exact_difference_of_two_bands(cli, s
     assert found["p99865"] == pytest.approx(quantile[0.99865], abs=2e-8)
     assert found["mean"] == pytest.approx((low + high) / 2, abs=2e-9)
     assert found["std"] == pytest.approx(math.sqrt((a * a + b * b) / 12), rel=2e-3)
-    # the same distribution by scipy's numerical convolution, a second way
-    grid = np.linspace(low, high, 2001)
-    density = np.convolve(stats.uniform(shaft[0], a).pdf(grid - low + shaft[0]),
-                          stats.uniform(0.0, b).pdf(grid - low), mode="full")
-    assert density.sum() > 0
+    # the closed form against the convolution integrated numerically, a second way:
+    # P(S − B ≤ x) = ∫ F_S(x − y) f_−B(y) dy with −B uniform on [0, 12 µm]
+    minus_bore = stats.uniform(-bore[1], b)
+    for p, x in quantile.items():
+        numeric = integrate.quad(lambda y, x=x: stats.uniform(shaft[0], a).cdf(x - y)
+                                 * minus_bore.pdf(y), -bore[1], -bore[0])[0]
+        assert numeric == pytest.approx(p, rel=1e-6)
 
 
 def _solve_cdf(cdf, p, low, high):
@@ -265,3 +269,75 @@ def test_a_drives_bearing_takes_its_clearance_from_its_mounting(cli, spec_file):
     for key in ("gear_bearing_2_radial_load", "gear_bearing_2_max_element_load",
                 "gear_bearing_1_reference_rating_life", "pinion_axial_shift"):
         assert mounted["results"][key] == pytest.approx(given["results"][key], rel=1e-9)
+
+
+SIZED = CLASSED.replace("pitch_diameter: 60 mm", "pitch_diameter: 70 mm").replace(
+    "bore_diameter: 40 mm", "bore_diameter: 45 mm").replace(
+    "outside_diameter: 80 mm", "outside_diameter: 90 mm")
+CHAIN_KEYS = ("fit_interference_inner", "fit_interference_inner_min",
+              "fit_interference_inner_max", "fit_interference_outer_min",
+              "initial_clearance_min", "initial_clearance_max", "operating_clearance",
+              "operating_clearance_min", "operating_clearance_max")
+
+
+def test_a_sweep_of_the_bearings_size_reads_each_sizes_classes(cli, spec_file, tmp_path):
+    """From a 45 mm bore to 55 mm the shaft's k5 (+2..+13 µm to +2..+15), the bore's
+    Δdmp (0..−12 to 0..−15) and C3 (18..36 to 23..43 µm) change ranges (the housing's H7
+    at 90 and 100 mm is 0..+35 in one): the sweep's far corner is that size's own
+    solve, not the first size's bands carried over."""
+    path = spec_file(SIZED)
+    out = tmp_path / "sweep.csv"
+    run = cli("sweep", path, "--vary", "bore_diameter=45mm:55mm:2", "--vary",
+              "outside_diameter=90mm:100mm:2", "-o", out)
+    assert run.code == 0, run.err
+    rows = list(csv.DictReader(out.open(encoding="utf-8")))
+    [far] = [row for row in rows if float(row["input.bore_diameter [m]"]) == 0.055
+             and float(row["input.outside_diameter [m]"]) == 0.1]
+    [alone] = solve_json(cli, spec_file(SIZED.replace("bore_diameter: 45 mm",
+                                                      "bore_diameter: 55 mm").replace(
+        "outside_diameter: 90 mm", "outside_diameter: 100 mm")))
+    for key in CHAIN_KEYS:
+        assert float(far[f"{key} [m]"]) == pytest.approx(alone["results"][key], rel=1e-12,
+                                                          abs=1e-15)
+    assert alone["results"]["initial_clearance_min"] == pytest.approx(23e-6, rel=1e-9)
+    assert alone["results"]["fit_interference_inner_max"] == pytest.approx(30e-6, rel=1e-9)
+
+
+def test_a_link_swept_past_its_band_widens_the_extremes(cli, spec_file, tmp_path):
+    out = tmp_path / "sweep.csv"
+    run = cli("sweep", spec_file(CLASSED), "--vary", "mounting.bore_deviation=-40um:0um:3",
+              "-o", out)
+    assert run.code == 0, run.err
+    for row in csv.DictReader(out.open(encoding="utf-8")):
+        value = float(row["operating_clearance [m]"])
+        assert float(row["operating_clearance_min [m]"]) <= value
+        assert value <= float(row["operating_clearance_max [m]"])
+
+
+def test_solve_warns_of_assemblies_below_the_clearance_limit(cli, spec_file):
+    """solve judges the bands' middles (5.8 µm ≥ 0) and says that the bands reach below
+    the limit (−12.9 µm); tolerance gives their share."""
+    [record] = solve_json(cli, spec_file(CLASSED + "limits:\n  min_operating_clearance: 0 µm\n"))
+    assert record["within_limits"]
+    assert record["results"]["operating_clearance_min"] < 0
+    assert any("fall below min_operating_clearance" in w for w in record["warnings"])
+
+
+def test_a_drawn_cup_takes_no_mounting(cli, spec_file):
+    text = ("kind: rolling-bearing\ntype: needle-roller\nmethod: iso-16281\ndrawn_cup: true\n"
+            "dynamic_load_rating: 12 kN\nstatic_load_rating: 15 kN\nbore_diameter: 20 mm\n"
+            "outside_diameter: 26 mm\nroller_count: 18\nroller_diameter: 2.5 mm\n"
+            "roller_length: 12 mm\npitch_diameter: 23 mm\nradial_load: 2 kN\n"
+            "speed: 3000 rpm\nmounting: {clearance_group: CN, shaft: h6, housing: N7}\n")
+    lines = refused_lines(cli, spec_file, text)
+    assert len(lines) == 1 and "drawn-cup" in lines[0] and ": mounting:" in lines[0], lines
+
+
+def test_a_drives_bearing_warns_of_creep_as_a_bearing_alone(cli, spec_file):
+    drive = (ROOT / "specs" / "bevel-drive-mounted.yaml").read_text("utf-8")
+    mounting = ("     mounting: {clearance_group: CN, shaft: k5, housing: H7, "
+                "inner_ring_temperature: 70 degC, outer_ring_temperature: 60 degC}}")
+    [record] = solve_json(cli, spec_file(drive.replace("     operating_clearance: 10 µm}",
+                                                       mounting)))
+    assert any(w.startswith("gear_bearing_2: ") and "against creep" in w
+               for w in record["warnings"]), record["warnings"]

@@ -44,6 +44,7 @@ from bearingcalc.core.duty_cycle_gears import (
     normalised,
 )
 from bearingcalc.core.mounted_bearing import METHOD
+from bearingcalc.core.mounted_clearance import WARNINGS as CHAIN_WARNINGS
 from bearingcalc.core.mounted_drive import evaluate_mounted
 from bearingcalc.core.shaft_statics import (  # noqa: F401  (the drive's statics, re-exported)
     ARRANGEMENTS,
@@ -117,6 +118,8 @@ WARNINGS: dict[str, str] = {
        f"to take the gear's thrust, which points {way.replace('_', ' ')} the apex (a drive "
        "that runs both ways needs a locating bearing that carries both)"
        for name in _bearing_names() for way in ("away_from", "toward")},
+    **{f"{key}_{name}": f"{name}: {message}" for key, message in CHAIN_WARNINGS.items()
+       for name in _bearing_names()},
 }
 #: The arrangements in which a type that carries thrust one way only in a single row
 #: (its trait ``one_way``) still does (a back-to-back or face-to-face pair carries it
@@ -182,6 +185,9 @@ def evaluate(inputs: BevelDriveInputs, wanted: Collection[str] | None = None) ->
             inputs, pair, {"pinion": input_speed, "gear": gear_speed})
         checks += own_checks
         lives = MOUNTED_LIVES
+        warnings.update({f"{key}_{bearing.row}": flag for bearing in mounted
+                         for key, flag in bearing.solved.warnings.items()
+                         if key in CHAIN_WARNINGS})
     results, along, weakest = assemble(pair.results, gear_speed, mounted,
                                        inputs.get("min_rating_life"),
                                        inputs["min_static_safety"], lives)

@@ -93,9 +93,9 @@ NO_EQUILIBRIUM = 25
 STATUS_REASONS = {
     NO_EQUILIBRIUM: ("axial_load", "the rings find no equilibrium under these loads: the "
                      "rolling elements cannot carry them (a bearing at its free contact angle "
-                     "needs an axial load that holds its elements on their contact, about "
-                     "Fr·tanα or more, and any bearing a tilting moment its elements can "
-                     "carry)"),
+                     "needs an axial load that holds its elements on their contact, a "
+                     "tapered bearing's above Fr·tanα, and any bearing a tilting moment its "
+                     "elements can carry)"),
 }
 
 

@@ -72,6 +72,10 @@ WARNINGS = {
                          "what its radial load needs against creep (NSK: 0.08·√(d/B·Fr) µm, "
                          "0.02·Fr/B µm above 20 % of C0): a tighter shaft class, or a ring "
                          "held otherwise",
+    "clearance_below_limit_within_bands": "some assemblies within the bands fall below "
+                                          "min_operating_clearance (operating_clearance_min): "
+                                          "solve judges the bands' middles; run tolerance "
+                                          "for the share of assemblies below it",
     "fit_too_tight": "the shaft's interference exceeds 7/10 000 of d, NSK's guide against "
                      "a fit that damages the ring (inner_ring_hoop_stress gives its "
                      "stress)",
@@ -108,6 +112,10 @@ def chain_warnings(inputs: Mapping[str, Any], results: Mapping[str, NDArray]
     # tightest corner, which every usual class of a tight fit passes
     flags = {"fit_too_tight": results["fit_interference_inner"]
              > LARGEST_INTERFERENCE_SHARE * bore}
+    limit = inputs.get("min_operating_clearance")
+    if limit is not None:
+        flags["clearance_below_limit_within_bands"] = (
+            results["operating_clearance_min"] < np.asarray(limit, dtype=float))
     width = inputs.get("width")
     if width is not None:
         turns = np.abs(np.asarray(inputs["inner_speed"], dtype=float)) > np.abs(
@@ -166,15 +174,16 @@ def mounted_clearance(inputs: Mapping[str, Any]) -> dict[str, NDArray]:
     pitch = np.asarray(inputs["pitch_diameter"], dtype=float)
     results = _chain(mounting, {name: np.asarray(mounting[name], dtype=float)
                                 for name in BANDED}, inner_raceway, outer_raceway, pitch)
+    # each band widened to hold its link's own value: a sweep may carry a link past its
+    # band, a study's samples stay inside it
+    ends = [(np.minimum(mounting["band_low"][name], mounting[name]),
+             np.maximum(mounting["band_high"][name], mounting[name])) for name in BANDED]
     corners = [_chain(mounting, dict(zip(BANDED, corner, strict=True)), inner_raceway,
-                      outer_raceway, pitch)
-               for corner in itertools.product(*((mounting["band_low"][name],
-                                                  mounting["band_high"][name])
-                                                 for name in BANDED))]
-    least = inputs.get("min_operating_clearance")
-    if least is not None:
+                      outer_raceway, pitch) for corner in itertools.product(*ends)]
+    limit = inputs.get("min_operating_clearance")
+    if limit is not None:
         results["operating_clearance_margin"] = (results["operating_clearance"]
-                                                 - np.asarray(least, dtype=float))
+                                                 - np.asarray(limit, dtype=float))
     shape = np.shape(results["operating_clearance"])
     for key in CHAIN_RESULTS:
         # reduced corner by corner: a study's corners are constants beside its samples,

@@ -19,7 +19,7 @@ from bearingcalc.core import rolling_bearing
 from bearingcalc.core.common import DerivedTest
 from bearingcalc.core.drive_bearings import MountedBearing
 from bearingcalc.core.mounted_bearing import within_model
-from bearingcalc.core.mounted_clearance import mounted_clearance
+from bearingcalc.core.mounted_clearance import chain_warnings, mounted_clearance
 from bearingcalc.core.mounted_shaft import MountedShaft, gear_load, solve_mounted_shaft
 from bearingcalc.core.shaft_statics import mean_pitch_point
 
@@ -98,13 +98,17 @@ def mounted_shaft_bearings(inputs: Mapping[str, Any], pair: Any, shaft: str, gea
         lives = shared.life_results(member_inputs, life, own.results, speed, shape,
                                     family.family)
         loads.update({key: lives[key] for key in MOUNTED_COLUMNS if key in lives})
+        warned: dict[str, NDArray] = {}
         if bearing.get("mounting") is not None:
             chain = mounted_clearance(bearing)
             loads.update({key: np.broadcast_to(chain[key], shape) for key in (
                 "operating_clearance", "operating_clearance_min", "operating_clearance_max")})
+            # judged under the loads the shaft gives it, as a bearing alone under its own
+            warned = chain_warnings(member_inputs, chain)
         mounted.append(MountedBearing(f"{shaft}_bearing_{i + 1}", f"{shaft}_bearings.{i + 1}",
                                       f"{shaft} shaft bearings", member_inputs, loads,
-                                      replace(own, results={**own.results, **lives})))
+                                      replace(own, results={**own.results, **lives},
+                                              warnings={**own.warnings, **warned})))
     found = solved.loaded.converged & within_model(
         solved.loaded.displacement - solved.rest,
         np.min(np.stack([family.lever for family in solved.families]), axis=0))

@@ -14,13 +14,9 @@ from bearingcalc.core.bearing_types import names_where
 from bearingcalc.core.mounted_roller_bearing import CROWN_DROP_SHARE
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import BRANCH_MARK, SpecModel, branch
-from bearingcalc.models.bearing_mounting import (
-    BearingMounting,
-    chain_inputs,
-    mounting_in_place,
-    resolve,
-)
+from bearingcalc.models.bearing_mounting import BearingMounting, mounting_in_place
 from bearingcalc.models.bearing_reads import ReadsBearing
+from bearingcalc.models.mounting_resolution import chain_inputs, resolve
 from bearingcalc.models.plain_numbers import LaminaCount
 from bearingcalc.models.quantities import (
     Angle,

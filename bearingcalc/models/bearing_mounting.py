@@ -6,19 +6,15 @@ temperatures), from which ISO/TS 16281's method finds the operating clearance
 Every band of the chain (the group's clearance, each seat's class, the ring's bore and
 outside) becomes a toleranced value at the band's middle, uniform over it, so that
 tolerance studies vary it as any toleranced field, by its own name
-(``mounting.shaft``), and a sweep or a study's corner may write a plain value there.
+(``mounting.shaft``), and a study's corner may write a plain value there.
 """
 
 from __future__ import annotations
 
-import math
-from collections.abc import Mapping
 from typing import Any
 
 from pydantic import Field, PrivateAttr
 
-from bearingcalc.catalogue import iso286, iso492, iso5753
-from bearingcalc.core.bearing_types import traits
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import SpecModel
 from bearingcalc.models.mounting_fields import (
@@ -28,17 +24,14 @@ from bearingcalc.models.mounting_fields import (
     NonNegativeLength,
     Roughness,
     Seat,
-    SeatClass,
     ToleranceClass,
-    material_constants,
+    band_ends,
 )
 from bearingcalc.models.quantities import (
     Length,
-    Measured,
     PositiveLength,
     Temperature,
     ThermalExpansion,
-    Tolerance,
 )
 from bearingcalc.models.rules import rule
 
@@ -89,8 +82,9 @@ class BearingMounting(SpecModel):
         None, description="the shaft seat's (default: the inner ring's)")
     housing_temperature: Temperature | None = Field(
         None, description="the housing seat's (default: the outer ring's)")
-    assembly_temperature: Temperature = Field(ASSEMBLY_TEMPERATURE,
-                                              description="where the fits are measured")
+    assembly_temperature: Temperature = Field(
+        ASSEMBLY_TEMPERATURE, description="where the drawing's dimensions hold and the parts "
+        "come to rest together (ISO 1's 20 °C), not a heating temperature for mounting")
     ring_thermal_expansion: ThermalExpansion = Field(
         RING_EXPANSION, description="the rings' and elements' α (bearing steel's)")
 
@@ -100,6 +94,10 @@ class BearingMounting(SpecModel):
     _written: dict[str, str] = PrivateAttr(default_factory=dict)
     #: what the tables refused as the mounting was resolved, for its rules to say
     _refused: list[SpecFieldError] = PrivateAttr(default_factory=list)
+    #: the bearing's (bore, outside, type) it was resolved at, and the mounting as
+    #: written: a design of another size (a sweep, a catalogue's row) resolves it anew
+    _resolved_at: tuple[float, float, str] | None = PrivateAttr(default=None)
+    _written_form: Any = PrivateAttr(default=None)
 
     @rule
     def _given_in_full(self) -> list[SpecFieldError]:
@@ -137,160 +135,6 @@ class BearingMounting(SpecModel):
         return dict(self._written)
 
 
-def _band(low: float, high: float, written_unit: str) -> Measured:
-    """A band's middle, uniform over it."""
-    middle = 0.5 * (low + high)
-    return Measured(middle, Tolerance(middle, low, high, "uniform", unit="m",
-                                      written_unit=written_unit))
-
-
-def _ends(value: Any) -> tuple[float, float]:
-    """A value's band, [v, v] where it has none."""
-    tolerance = getattr(value, "tolerance", None)
-    if tolerance is None:
-        return float(value), float(value)
-    return tolerance.low, tolerance.high
-
-
-class _Refusals:
-    """What the tables refuse as a mounting is resolved, each at the mounting's field."""
-
-    def __init__(self) -> None:
-        self.problems: list[SpecFieldError] = []
-
-    def band(self, field: str, lookup: Any, *args: Any, **kwargs: Any
-             ) -> tuple[float, float] | None:
-        try:
-            return lookup(*args, **kwargs)
-        except ValueError as problem:
-            self.problems.append(SpecFieldError(field, str(problem).rstrip(".")))
-            return None
-
-
-def resolve(mounting: BearingMounting, bearing: Mapping[str, Any]) -> BearingMounting:
-    """``mounting`` with every class and group turned into its band (a toleranced value
-    at its middle) and the bands kept, from the bearing's ``bore_diameter``,
-    ``outside_diameter`` and ``type`` (validated before the mounting). What a table
-    refuses is kept for the mounting's rules to say, with the bearing's path; without
-    the bearing's diameters nothing is resolved (the bearing's rules say so)."""
-    bore, outside = bearing.get("bore_diameter"), bearing.get("outside_diameter")
-    if bore is None or outside is None:
-        return mounting
-    bore, outside = float(bore), float(outside)
-    refusals = _Refusals()
-    updates: dict[str, Any] = {}
-    written: dict[str, str] = {}
-    group = mounting.clearance_group
-    table = _clearance_table(bearing.get("type"))
-    if isinstance(group, str) and table is not None:  # else the bearing's rules refuse it
-        written["clearance_group"] = group
-        band = refusals.band("clearance_group", iso5753.radial_clearance, bore, group,
-                             bearing_kind=table)
-        if band is not None:
-            updates["clearance_group"] = _band(*band, "µm")
-    for field, nominal in (("bore_deviation", bore), ("outside_deviation", outside)):
-        if getattr(mounting, field) is None:
-            band = refusals.band(field, getattr(iso492, field), nominal,
-                                 tolerance_class=mounting.tolerance_class)
-            if band is not None:
-                updates[field] = _band(*band, "µm")
-    for field, nominal, hole in (("shaft", bore, False), ("housing", outside, True)):
-        seat = getattr(mounting, field)
-        if isinstance(seat, SeatClass):
-            written[field] = seat.symbol
-            band = _seat_band(refusals, field, seat, nominal, hole)
-            if band is not None:
-                updates[field] = band
-    resolved = mounting.model_copy(update=updates)
-    resolved._written, resolved._refused = written, refusals.problems
-    if not refusals.problems and all(
-            isinstance(value, float) for value in (resolved.shaft, resolved.housing,
-                                                   resolved.bore_deviation,
-                                                   resolved.outside_deviation)):
-        resolved._bands = _bands_of(resolved, bore, outside)
-    return resolved
-
-
-def _clearance_table(bearing_type: Any) -> str | None:
-    """Which of ISO 5753-1's tables gives the type's groups, None for none (or a type
-    its own rule refuses)."""
-    try:
-        return traits(str(bearing_type)).clearance_table
-    except (KeyError, ValueError):
-        return None
-
-
-def _bands_of(resolved: BearingMounting, bore: float, outside: float
-              ) -> dict[str, tuple[float, float]]:
-    """Each link's band [low, high] of a resolved mounting."""
-    given = resolved.clearance_group if resolved.clearance_group is not None \
-        else resolved.initial_clearance
-    bands = {} if given is None or isinstance(given, str) else {
-        "initial_clearance": _ends(given)}
-    for link, nominal, field in (("bore_diameter", bore, "bore_deviation"),
-                                 ("outside_diameter", outside, "outside_deviation")):
-        low, high = _ends(getattr(resolved, field))
-        bands[link] = (nominal + low, nominal + high)
-    for field in ("shaft", "housing"):
-        bands[f"{field}_diameter"] = _ends(getattr(resolved, field))
-    return bands
-
-
-def _seat_band(refusals: _Refusals, field: str, seat: SeatClass, nominal: float,
-               hole: bool) -> Measured | None:
-    """A seat class's band of diameters: the nominal (the ring's, where the class names
-    none) plus its ISO 286 deviations; None where it is refused."""
-    ring = "bore" if field == "shaft" else "outside diameter"
-    if seat.nominal is not None and not math.isclose(seat.nominal, nominal, rel_tol=1e-9):
-        refusals.problems.append(SpecFieldError(
-            field, f"the seat's nominal {seat.nominal * 1e3:g} mm is not the bearing's "
-            f"{ring}, {nominal * 1e3:g} mm: write {seat.symbol} alone, or the ring's {ring}"))
-        return None
-    if seat.symbol[0].isupper() != hole:
-        which, like = ("a hole's", "upper case, like H7") if hole else (
-            "a shaft's", "lower case, like k5")
-        refusals.problems.append(SpecFieldError(
-            field, f"{seat.symbol} is not {which} class: the {field} seat takes {which} "
-            f"({like})"))
-        return None
-    band = refusals.band(field, iso286.limit_deviations, seat.symbol, nominal)
-    return None if band is None else _band(nominal + band[0], nominal + band[1], "mm")
-
-
-def chain_inputs(mounting: BearingMounting, bore: Any, outside: Any,
-                 ring_modulus: Any, ring_poisson: Any) -> dict[str, Any]:
-    """The chain's solver inputs (SI; arrays where a study varies a link): see
-    :func:`bearingcalc.core.mounted_clearance.mounted_clearance`."""
-    m = mounting
-    shaft, housing = (material_constants(material) for material in (m.shaft_material,
-                                                             m.housing_material))
-    roughness = m.roughness or Roughness()
-    inner = m.assembly_temperature if m.inner_ring_temperature is None \
-        else m.inner_ring_temperature
-    outer = m.assembly_temperature if m.outer_ring_temperature is None \
-        else m.outer_ring_temperature
-    initial = m.clearance_group if m.clearance_group is not None else m.initial_clearance
-    return {
-        "initial_clearance": initial, "shaft_diameter": m.shaft,
-        "bore_diameter": bore + m.bore_deviation, "housing_diameter": m.housing,
-        "outside_diameter": outside + m.outside_deviation,
-        "band_low": {name: low for name, (low, _) in m.bands().items()},
-        "band_high": {name: high for name, (_, high) in m.bands().items()},
-        "shaft_bore": m.shaft_bore,
-        "housing_outside": math.inf if m.housing_outside_diameter is None
-        else m.housing_outside_diameter,
-        "shaft_modulus": shaft[0], "shaft_poisson": shaft[1], "shaft_expansion": shaft[2],
-        "housing_modulus": housing[0], "housing_poisson": housing[1],
-        "housing_expansion": housing[2], "ring_modulus": ring_modulus,
-        "ring_poisson": ring_poisson, "ring_expansion": m.ring_thermal_expansion,
-        "shaft_roughness": roughness.shaft, "housing_roughness": roughness.housing,
-        "assembly_temperature": m.assembly_temperature, "inner_ring_temperature": inner,
-        "outer_ring_temperature": outer,
-        "shaft_temperature": inner if m.shaft_temperature is None else m.shaft_temperature,
-        "housing_temperature": outer if m.housing_temperature is None
-        else m.housing_temperature}
-
-
 #: A hollow shaft's largest bore, a share of its seat's diameter: a thinner wall is no
 #: seat a ring is pressed onto.
 THINNEST_WALL_RATIO = 0.95
@@ -312,6 +156,11 @@ def mounting_in_place(bearing: Any) -> list[SpecFieldError]:
                                f"clearance (deep-groove, cylindrical, needle): a "
                                f"{bearing.type} bearing ({bearing.arrangement}) sits at its "
                                "contact angle or its pair's setting; leave mounting out")]
+    if bearing.drawn_cup:
+        return [SpecFieldError("mounting", "a drawn-cup needle roller bearing has no inner "
+                               "ring and a cup pressed to the housing's bore: its clearance "
+                               "is the shaft's and the housing's, not ISO 5753-1's; give "
+                               "operating_clearance")]
     bore, outside = bearing.bore_diameter, bearing.outside_diameter
     if bore is None or outside is None:
         return [SpecFieldError("bore_diameter" if bore is None else "outside_diameter",
@@ -350,7 +199,7 @@ def _no_slips(bearing: Any) -> list[SpecFieldError]:
         if not isinstance(value, float):
             continue
         reach = SLIP_MM + SLIP_SHARE * nominal
-        if max(abs(end - offset) for end in _ends(value)) > reach:
+        if max(abs(end - offset) for end in band_ends(value)) > reach:
             problems.append(SpecFieldError(
                 f"mounting.{field}", f"lies more than {reach * 1e3:.3g} mm from the "
                 f"nominal {nominal * 1e3:g} mm: no seat or ring deviates that far (a unit "
@@ -359,7 +208,7 @@ def _no_slips(bearing: Any) -> list[SpecFieldError]:
         else mounting.initial_clearance
     largest = _largest_clearance(bearing)
     if clearance is not None and not max(
-            abs(end) for end in _ends(clearance)) < largest[0]:
+            abs(end) for end in band_ends(clearance)) < largest[0]:
         field = "clearance_group" if isinstance(mounting.clearance_group, float) \
             else "initial_clearance"
         problems.append(SpecFieldError(f"mounting.{field}", f"must be smaller in size than "

@@ -155,3 +155,10 @@ class Roughness(SpecModel):
             raise ValueError("give the Rz of each joint as {shaft: 2.5 µm, housing: 4 µm}")
         return value
 
+
+def band_ends(value: Any) -> tuple[float, float]:
+    """A value's band [low, high], [v, v] where it carries no tolerance."""
+    tolerance = getattr(value, "tolerance", None)
+    if tolerance is None:
+        return float(value), float(value)
+    return tolerance.low, tolerance.high
