@@ -8,6 +8,7 @@ import json
 
 import pytest
 
+from tests.conftest import ROOT
 from tests.mounted_specs import TAPERED_ROLLERS
 
 BALLS = """kind: rolling-bearing
@@ -74,3 +75,38 @@ def test_each_spec_of_a_file_solves_as_it_would_alone(cli, spec_file, template, 
     assert f"element_{max(counts)} " in table.out
     first_block = table.out.split(texts[1].splitlines()[1].split(": ")[1])[0]
     assert (f"element_{smaller + 1} " in first_block) == (counts[0] > smaller)
+
+
+SELECTED = """kind: rolling-bearing
+name: as mounted from the catalogue
+type: deep-groove
+method: iso-16281
+designation: "{designation}"
+{clearance}
+radial_load: 3 kN
+speed: 3000 rpm
+"""
+
+
+@pytest.mark.parametrize("clearance", [
+    "operating_clearance: 5 µm",
+    "mounting: {clearance_group: C3, shaft: k5, housing: H7}"])
+def test_select_solves_each_row_with_its_own_estimated_geometry(cli, spec_file, clearance):
+    """The catalogue's 6208 and 6308 (one bore, two sizes) are selected in one call; each
+    row's internal geometry is estimated from its own size and ratings (and its mounting's
+    classes read at its own size), so its governing value is its own solve's, not one
+    estimate shared by every row."""
+    catalogue = ROOT / "specs" / "catalogues" / "example.csv"
+    run = cli("select", spec_file(SELECTED.format(designation="6208", clearance=clearance)),
+              "--catalogue", catalogue, "-f", "json")
+    assert run.code == 0, run.err
+    rows = {row["designation"]: row["governing"] for row in json.loads(run.out)["qualifying"]}
+    assert {"6208", "6308"} <= set(rows)
+    for designation in ("6208", "6308"):
+        alone = cli("solve", spec_file(SELECTED.format(designation=designation,
+                                                       clearance=clearance)),
+                    "--catalogue", catalogue, "-f", "json")
+        results = json.loads(alone.out)["results"]
+        governing = rows[designation]
+        assert governing["key"] == "contact_pressure_margin"
+        assert governing["value"] == pytest.approx(results["max_contact_pressure"], rel=1e-9)

@@ -7,6 +7,7 @@ catalogue's ratings. Mixed into
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -60,12 +61,22 @@ class GeometryEstimate(ReadsBearing):
         return estimate_ball_geometry(*args, *ratings)
 
     def estimated_inputs(self) -> dict[str, Any]:
-        """The solver inputs the estimate fills in; none where the spec gives them."""
+        """The solver inputs the estimate fills in; none where the spec gives them. Where
+        the bearing's size varies (``select``'s catalogue rows, a sweep of the bore) each
+        size has its own estimate, from its designs' middle ratings; NaN where none
+        fits, which the solver refuses."""
         if not self.estimates_geometry:
             return {}
         estimate = self.estimated_geometry()
         if estimate is None or not estimate.acceptable:
             return {}
+        sizes = [self.bore_diameter, self.outside_diameter, self.width]
+        if all(np.ndim(size) == 0 or np.ptp(size) == 0 for size in sizes if size is not None):
+            return self._filled(estimate)
+        return self._estimated_per_size()
+
+    def _filled(self, estimate: Any) -> dict[str, Any]:
+        """The inputs an estimate fills in (arrays of estimates' values alike)."""
         if self.rollers:
             return {"roller_count": estimate.count, "roller_diameter": estimate.diameter,
                     "roller_length": estimate.length,
@@ -75,6 +86,32 @@ class GeometryEstimate(ReadsBearing):
                 "pitch_diameter": estimate.pitch_diameter,
                 "inner_groove_conformity": ESTIMATED_CONFORMITIES[0] if fi is None else fi,
                 "outer_groove_conformity": ESTIMATED_CONFORMITIES[1] if fo is None else fo}
+
+    def _estimated_per_size(self) -> dict[str, Any]:
+        """Each distinct size's estimate laid out over the designs."""
+        values = [self.bore_diameter, self.outside_diameter,
+                  0.0 if self.width is None else self.width, self.dynamic_load_rating,
+                  self.static_load_rating]
+        shape = np.broadcast_shapes(*(np.shape(value) for value in values))
+        flat = [np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for v in values]
+        sizes, which = np.unique(np.stack(flat[:3], axis=1), axis=0, return_inverse=True)
+        which = np.ravel(which)
+        angle, kind = _nominal(self.angle), self.type
+        columns: dict[str, list[float]] = {}
+        for index, (bore, outside, width) in enumerate(sizes):
+            mine = which == index
+            ratings = (float(np.median(flat[3][mine])), float(np.median(flat[4][mine])),
+                       angle, kind)
+            found = (estimate_roller_geometry(bore, outside, width or None, *ratings)
+                     if self.rollers else estimate_ball_geometry(bore, outside, *ratings))
+            usable = found is not None and found.acceptable
+            for name, value in self._filled(found).items() if usable else ():
+                columns.setdefault(name, [math.nan] * len(sizes))[index] = value
+        if not columns:  # no size has an estimate: the names from the spec's own
+            columns = {name: [math.nan] * len(sizes)
+                       for name in self._filled(self.estimated_geometry())}
+        return {name: np.array(column, dtype=float)[which].reshape(shape)
+                for name, column in columns.items()}
 
     def estimate_notes(self) -> list[str]:
         """The warning that names every estimated value."""
