@@ -164,6 +164,20 @@ def _chain(mounting: Mapping[str, Any], links: Mapping[str, Any],
                                inner_raceway, outer_raceway, pitch)
 
 
+def operating_clearance_of(inputs: Mapping[str, Any]) -> NDArray:
+    """The operating clearance [m] of ``inputs['mounting']`` at its links' values alone,
+    for a caller that needs no extremes (a drive's shaft building its bearings)."""
+    return _middle(inputs)["operating_clearance"]
+
+
+def _middle(inputs: Mapping[str, Any]) -> dict[str, NDArray]:
+    mounting = inputs["mounting"]
+    inner_raceway, outer_raceway = raceway_diameters(inputs)
+    return _chain(mounting, {name: np.asarray(mounting[name], dtype=float)
+                             for name in BANDED}, inner_raceway, outer_raceway,
+                  np.asarray(inputs["pitch_diameter"], dtype=float))
+
+
 def mounted_clearance(inputs: Mapping[str, Any]) -> dict[str, NDArray]:
     """The chain's results (:data:`RESULTS`) of ``inputs['mounting']``: at its links'
     values (the bands' middles, or a study's samples), and each result's least and
@@ -172,8 +186,7 @@ def mounted_clearance(inputs: Mapping[str, Any]) -> dict[str, NDArray]:
     mounting = inputs["mounting"]
     inner_raceway, outer_raceway = raceway_diameters(inputs)
     pitch = np.asarray(inputs["pitch_diameter"], dtype=float)
-    results = _chain(mounting, {name: np.asarray(mounting[name], dtype=float)
-                                for name in BANDED}, inner_raceway, outer_raceway, pitch)
+    results = _middle(inputs)
     # each band widened to hold its link's own value: a sweep may carry a link past its
     # band, a study's samples stay inside it
     ends = [(np.minimum(mounting["band_low"][name], mounting[name]),

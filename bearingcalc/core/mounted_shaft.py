@@ -23,7 +23,7 @@ from bearingcalc.core.iso16281_shaft import (
     axial_deflection_for_load,
     solve_shaft,
 )
-from bearingcalc.core.mounted_clearance import mounted_clearance
+from bearingcalc.core.mounted_clearance import operating_clearance_of
 from bearingcalc.core.mounted_pair import BearingFamily
 
 #: How far a floating bearing's own axial coordinate is searched [m]: its outer ring
@@ -71,8 +71,7 @@ def bearing_family(inputs: Mapping[str, Any], flat: Any) -> BearingFamily:
               == "roller" else mounted_ball_bearing)
     c = inputs.get("dynamic_load_rating")
     if inputs.get("mounting") is not None:  # its clearance follows from the drawing
-        inputs = {**inputs, "operating_clearance": mounted_clearance(inputs)[
-            "operating_clearance"]}
+        inputs = {**inputs, "operating_clearance": operating_clearance_of(inputs)}
     return module.bearing_family(inputs, flat, np.nan if c is None else c)
 
 
