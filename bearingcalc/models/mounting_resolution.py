@@ -155,40 +155,53 @@ def _link(mounting: BearingMounting, link: str, bore: Any, outside: Any) -> Any:
                     else 0.0)
 
 
+#: The links that follow the bearing's bore, and those that follow its outside diameter.
+BORE_LINKS = ("initial_clearance", "shaft_diameter", "bore_diameter")
+OUTSIDE_LINKS = ("housing_diameter", "outside_diameter")
+#: A size this close to the one the mounting was resolved at keeps its bands (a study
+#: that tolerances the nominal bore itself), a share of it.
+SAME_SIZE = 1e-3
+
+
 def links_per_design(mounting: BearingMounting, bore: Any, outside: Any
                      ) -> tuple[dict[str, Any], dict[str, Any], dict[str, Any]]:
     """Each link's value, band low and band high (SI), design by design. A design of the
     size the mounting was resolved at takes its bands; one of another size (a sweep of
     the bore, a catalogue's row in ``select``) resolves the mounting as written at its
-    own size, its classes and groups read from the tables there, a study's variation
-    of a link kept as its offset from the band's middle. A size the tables refuse has
-    NaN links, which the solver refuses."""
+    own bore (for the clearance, the shaft and the ring's bore) and its own outside
+    diameter (for the housing and the ring's outside), its classes and groups read from
+    the tables there, a study's variation of a link kept as its offset from the band's
+    middle. A size the tables refuse has NaN links, which the solver refuses."""
     bands = mounting.bands()
     at = mounting._resolved_at
-    same = at is not None and np.ndim(bore) == 0 and np.ndim(outside) == 0 and (
-        float(bore), float(outside)) == at[:2]
-    if same or at is None:
+    if at is None or all(np.all(np.abs(np.asarray(size, dtype=float) - nominal)
+                                <= SAME_SIZE * nominal)
+                         for size, nominal in ((bore, at[0]), (outside, at[1]))):
         values = {link: _link(mounting, link, bore, outside) for link in LINK_FIELDS}
         return (values, {link: low for link, (low, _) in bands.items()},
                 {link: high for link, (_, high) in bands.items()})
     shape = np.broadcast_shapes(np.shape(bore), np.shape(outside))
-    sizes = np.stack([np.broadcast_to(np.asarray(v, dtype=float), shape).ravel()
-                      for v in (bore, outside)], axis=1)
-    distinct, which = np.unique(sizes, axis=0, return_inverse=True)
-    each = [resolve(mounting._written_form, {"bore_diameter": b, "outside_diameter": d,
-                                             "type": at[2]}) for b, d in distinct]
     out: tuple[dict[str, Any], dict[str, Any], dict[str, Any]] = ({}, {}, {})
-    for link in LINK_FIELDS:
-        middles, lows, highs = (np.array([_of(r, link, b, d, part) for r, (b, d) in
-                                          zip(each, distinct, strict=True)])[which]
-                                .reshape(shape) for part in ("middle", "low", "high"))
-        # a study's sample of the link: its offset from its band's middle, moved with
-        # the band to the design's size
-        low, high = bands[link]
-        offset = np.asarray(_link(mounting, link, at[0], at[1]), dtype=float) - 0.5 * (
-            low + high)
-        out[0][link] = middles + offset
-        out[1][link], out[2][link] = lows, highs
+    for links, size, sized in ((BORE_LINKS, bore, lambda v: (v, at[1])),
+                               (OUTSIDE_LINKS, outside, lambda v: (at[0], v))):
+        values = np.broadcast_to(np.asarray(size, dtype=float), shape).ravel()
+        distinct, which = np.unique(values, return_inverse=True)
+        which = np.ravel(which)
+        each = [(resolve(mounting._written_form, {"bore_diameter": sized(v)[0],
+                                                  "outside_diameter": sized(v)[1],
+                                                  "type": at[2]}), *sized(v))
+                for v in distinct]
+        for link in links:
+            middles, lows, highs = (np.array([_of(r, link, b, d, part) for r, b, d in each]
+                                             )[which].reshape(shape)
+                                    for part in ("middle", "low", "high"))
+            # a study's sample of the link: its offset from its band's middle, moved with
+            # the band to the design's size
+            low, high = bands[link]
+            offset = np.asarray(_link(mounting, link, at[0], at[1]), dtype=float) - 0.5 * (
+                low + high)
+            out[0][link] = middles + offset
+            out[1][link], out[2][link] = lows, highs
     return out
 
 
