@@ -169,14 +169,24 @@ def or_zero(value: Any) -> Any:
     return 0.0 if value is None else value
 
 
+def numbers_in(values: Mapping[str, Any]) -> list[Any]:
+    """Every number of ``values`` and of the mappings it holds (a bearing's mounting):
+    any of them a study or sweep may vary."""
+    found = []
+    for value in values.values():
+        if isinstance(value, Mapping):
+            found += numbers_in(value)
+        elif value is not None and not isinstance(value, str):
+            found.append(value)
+    return found
+
+
 def designs(inputs: Mapping[str, Any], *others: ArrayLike
             ) -> tuple[tuple[int, ...], Callable[[Any], NDArray]]:
     """The designs' shape (the broadcast of every number of ``inputs`` and of
     ``others``: any of them a study or sweep may vary) and a function that lays a value
     out flat over them."""
-    used = [value for value in inputs.values()
-            if value is not None and not isinstance(value, str)]
-    shape = np.broadcast_shapes(*(np.shape(value) for value in used),
+    shape = np.broadcast_shapes(*(np.shape(value) for value in numbers_in(inputs)),
                                 *(np.shape(v) for v in others))
 
     def flat(value: Any) -> NDArray:

@@ -167,15 +167,19 @@ def _chain(mounting: Mapping[str, Any], links: Mapping[str, Any],
 def operating_clearance_of(inputs: Mapping[str, Any]) -> NDArray:
     """The operating clearance [m] of ``inputs['mounting']`` at its links' values alone,
     for a caller that needs no extremes (a drive's shaft building its bearings)."""
-    return _middle(inputs)["operating_clearance"]
+    mounting, raceways = inputs["mounting"], _raceways(inputs)
+    return _chain(mounting, _links(mounting), *raceways)["operating_clearance"]
 
 
-def _middle(inputs: Mapping[str, Any]) -> dict[str, NDArray]:
-    mounting = inputs["mounting"]
-    inner_raceway, outer_raceway = raceway_diameters(inputs)
-    return _chain(mounting, {name: np.asarray(mounting[name], dtype=float)
-                             for name in BANDED}, inner_raceway, outer_raceway,
-                  np.asarray(inputs["pitch_diameter"], dtype=float))
+def _raceways(inputs: Mapping[str, Any]) -> tuple[NDArray, NDArray, NDArray]:
+    """F, E and Dpw [m]."""
+    return (*raceway_diameters(inputs), np.asarray(inputs["pitch_diameter"], dtype=float))
+
+
+def _links(mounting: Mapping[str, Any]) -> dict[str, NDArray]:
+    """The chain's toleranced links at their values (the bands' middles, a study's
+    samples)."""
+    return {name: np.asarray(mounting[name], dtype=float) for name in BANDED}
 
 
 def mounted_clearance(inputs: Mapping[str, Any]) -> dict[str, NDArray]:
@@ -183,16 +187,14 @@ def mounted_clearance(inputs: Mapping[str, Any]) -> dict[str, NDArray]:
     values (the bands' middles, or a study's samples), and each result's least and
     largest over the 2⁵ corners of the bands (``mounting['band_low']`` and
     ``['band_high']``: name -> its band's end)."""
-    mounting = inputs["mounting"]
-    inner_raceway, outer_raceway = raceway_diameters(inputs)
-    pitch = np.asarray(inputs["pitch_diameter"], dtype=float)
-    results = _middle(inputs)
+    mounting, raceways = inputs["mounting"], _raceways(inputs)
+    results = _chain(mounting, _links(mounting), *raceways)
     # each band widened to hold its link's own value: a sweep may carry a link past its
     # band, a study's samples stay inside it
     ends = [(np.minimum(mounting["band_low"][name], mounting[name]),
              np.maximum(mounting["band_high"][name], mounting[name])) for name in BANDED]
-    corners = [_chain(mounting, dict(zip(BANDED, corner, strict=True)), inner_raceway,
-                      outer_raceway, pitch) for corner in itertools.product(*ends)]
+    corners = [_chain(mounting, dict(zip(BANDED, corner, strict=True)), *raceways)
+               for corner in itertools.product(*ends)]
     limit = inputs.get("min_operating_clearance")
     if limit is not None:
         results["operating_clearance_margin"] = (results["operating_clearance"]

@@ -232,23 +232,12 @@ def evaluate_mounted(inputs: Mapping[str, Any], pair: Any, speeds: Mapping[str, 
     return mounted, results, checks
 
 
-def _leaves(values: Mapping[str, Any]) -> list[Any]:
-    """Every number of ``values`` and of the mappings it holds (a bearing's mounting)."""
-    found = []
-    for value in values.values():
-        if isinstance(value, Mapping):
-            found += _leaves(value)
-        elif value is not None and not isinstance(value, str):
-            found.append(value)
-    return found
-
-
 def _designs(inputs: Mapping[str, Any], pair: Any, speeds: Mapping[str, NDArray]
              ) -> tuple[int, ...]:
     """The designs' shape: the pair's results', the speeds' and every number of every
     bearing and setting."""
     numbers = [value for bearings in inputs["shafts"].values() for bearing in bearings
-               for value in _leaves(bearing)]
+               for value in shared.numbers_in(bearing)]
     numbers += [value for setting in inputs.get("settings", {}).values() if setting
                 for value in setting.values() if value is not None]
     return np.broadcast_shapes(np.shape(pair.status), *(np.shape(v) for v in numbers),
