@@ -1069,7 +1069,7 @@ def test_schema_describes_the_new_fields():
         "tandem",
     }
     setting = schema["$defs"]["PairSetting"]
-    assert set(setting["properties"]) == {"end_play", "preload"}
+    assert set(setting["properties"]) == {"end_play", "preload", "stage"}
     assert setting["additionalProperties"] is False
     laminae = next(
         option for option in properties["laminae"]["anyOf"] if option.get("type") == "integer"

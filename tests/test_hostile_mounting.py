@@ -264,7 +264,7 @@ def test_mounting_that_is_not_a_mapping(cli, spec_file, value):
      "limits.min_operating_clearance"),
     (mounted("arrangement: back-to-back\ncontact_angle: 40 deg\nsetting: {preload: 300 N}\n",
              clearance_group=None, initial_clearance="10 µm")
-     .replace("type: deep-groove", "type: angular-contact"), "mounting"),
+     .replace("type: deep-groove", "type: angular-contact"), "mounting.initial_clearance"),
     (mounted("duty_cycle:\n  - {time: 50 %, radial_load: 3 kN}\n  - {time: 50 %, "
              "radial_load: 1 kN}\n").replace("radial_load: 3 kN\n", ""), "duty_cycle"),
 ])
@@ -286,9 +286,18 @@ PAIR_MOUNTED = (PAIR.replace("width: 16 mm", "width: 16 mm\nbore_diameter: 35 mm
                 + "mounting: {clearance_group: C3, shaft: k5, housing: H7}\n")
 
 
-def test_group_on_an_angular_contact_pair_says_leave_mounting_out(cli, spec_file):
-    line = refused(solve(cli, spec_file, PAIR_MOUNTED), "mounting")
-    assert "initial_clearance" not in line and "leave mounting out" in line
+def test_group_on_an_angular_contact_pair_says_its_setting_is_where_the_chain_starts(
+        cli, spec_file):
+    line = refused(solve(cli, spec_file, PAIR_MOUNTED), "mounting.clearance_group")
+    assert "end_play" in line and "leave it out" in line
+
+
+def test_a_tandem_pair_takes_no_mounting(cli, spec_file):
+    text = PAIR_MOUNTED.replace("clearance_group: C3, ", "").replace(
+        "arrangement: back-to-back", "arrangement: tandem")
+    text = re.sub(r"^setting:.*\n(?:  .*\n)*", "", text, flags=re.M)
+    line = refused(solve(cli, spec_file, text), "mounting")
+    assert "leave mounting out" in line
 
 
 # --- sweep, tolerance, report ---

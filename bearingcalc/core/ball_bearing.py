@@ -23,6 +23,7 @@ from bearingcalc.core import (
     mounted_clearance,
     mounted_loads,
     mounted_pair,
+    mounted_setting,
 )
 from bearingcalc.core.arrangements import (
     DOUBLE_ROW_PAIRS,
@@ -103,6 +104,7 @@ RESULTS: dict[str, tuple[str, str]] = {
     "spin_to_roll_margin": ("1", "max_spin_to_roll − the larger |spin_to_roll|"),
     **mounted_ball_bearing.RESULTS,
     **mounted_clearance.RESULTS,
+    **mounted_setting.RESULTS,
 }
 
 #: Headings of the table, each with its results.
@@ -129,6 +131,7 @@ GROUPS: dict[str, tuple[str, ...]] = {
                    "spin_to_roll_margin"),
     mounted_bearing.GROUP: tuple(mounted_ball_bearing.RESULTS),
     mounted_clearance.GROUP: tuple(mounted_clearance.RESULTS),
+    mounted_setting.GROUP: tuple(mounted_setting.RESULTS),
 }
 
 #: How tables show results whose SI unit alone does not say it (revolutions in millions).

@@ -202,7 +202,8 @@ def as_mounted(inputs: Mapping[str, Any], mounted_results: MountedResults, c: ND
     nothing otherwise."""
     if inputs.get("method") != METHOD:
         return Found(), {}
-    if inputs.get("mounting") is None:
+    if inputs.get("mounting") is None or inputs.get("arrangement", "single") != "single":
+        # a pair's mounting moves its end play (mounted_pair)
         return mounted_results(inputs, c, iso281, speed)
     # the operating clearance follows from the drawing: the chain at the bands' middles
     # (a study's samples) sets it, and its extremes are reported beside it

@@ -131,16 +131,19 @@ def chain_warnings(inputs: Mapping[str, Any], results: Mapping[str, NDArray]
 
 def raceway_diameters(inputs: Mapping[str, Any]) -> tuple[NDArray, NDArray]:
     """The inner and outer raceways' diameters F and E [m] across an element's middle:
-    Dpw ∓ Dw (balls), Dpw ∓ Dwe (rollers)."""
+    Dpw ∓ Dw·cos α (balls), Dpw ∓ Dwe·cos α (rollers), α the contact angle (0 for a
+    radial bearing)."""
     element = inputs.get("ball_diameter")
     if element is None:
         element = inputs["roller_diameter"]
     pitch = np.asarray(inputs["pitch_diameter"], dtype=float)
-    element = np.asarray(element, dtype=float)
-    return pitch - element, pitch + element
+    angle = inputs.get("contact_angle")
+    across = np.asarray(element, dtype=float) * np.cos(np.asarray(
+        0.0 if angle is None else angle, dtype=float))
+    return pitch - across, pitch + across
 
 
-def _chain(mounting: Mapping[str, Any], links: Mapping[str, Any],
+def chain_at(mounting: Mapping[str, Any], links: Mapping[str, Any],
            inner_raceway: NDArray, outer_raceway: NDArray, pitch: NDArray
            ) -> dict[str, NDArray]:
     """The chain with the toleranced ``links`` (:data:`BANDED`) and the rest of
@@ -167,11 +170,11 @@ def _chain(mounting: Mapping[str, Any], links: Mapping[str, Any],
 def operating_clearance_of(inputs: Mapping[str, Any]) -> NDArray:
     """The operating clearance [m] of ``inputs['mounting']`` at its links' values alone,
     for a caller that needs no extremes (a drive's shaft building its bearings)."""
-    mounting, raceways = inputs["mounting"], _raceways(inputs)
-    return _chain(mounting, _links(mounting), *raceways)["operating_clearance"]
+    mounting, rings = inputs["mounting"], raceways(inputs)
+    return chain_at(mounting, _links(mounting), *rings)["operating_clearance"]
 
 
-def _raceways(inputs: Mapping[str, Any]) -> tuple[NDArray, NDArray, NDArray]:
+def raceways(inputs: Mapping[str, Any]) -> tuple[NDArray, NDArray, NDArray]:
     """F, E and Dpw [m]."""
     return (*raceway_diameters(inputs), np.asarray(inputs["pitch_diameter"], dtype=float))
 
@@ -187,13 +190,13 @@ def mounted_clearance(inputs: Mapping[str, Any]) -> dict[str, NDArray]:
     values (the bands' middles, or a study's samples), and each result's least and
     largest over the 2⁵ corners of the bands (``mounting['band_low']`` and
     ``['band_high']``: name -> its band's end)."""
-    mounting, raceways = inputs["mounting"], _raceways(inputs)
-    results = _chain(mounting, _links(mounting), *raceways)
+    mounting, rings = inputs["mounting"], raceways(inputs)
+    results = chain_at(mounting, _links(mounting), *rings)
     # each band widened to hold its link's own value: a sweep may carry a link past its
     # band, a study's samples stay inside it
     ends = [(np.minimum(mounting["band_low"][name], mounting[name]),
              np.maximum(mounting["band_high"][name], mounting[name])) for name in BANDED]
-    corners = [_chain(mounting, dict(zip(BANDED, corner, strict=True)), *raceways)
+    corners = [chain_at(mounting, dict(zip(BANDED, corner, strict=True)), *rings)
                for corner in itertools.product(*ends)]
     limit = inputs.get("min_operating_clearance")
     if limit is not None:

@@ -20,7 +20,14 @@ from bearingcalc.core.common import DerivedTest
 from bearingcalc.core.drive_bearings import MountedBearing
 from bearingcalc.core.mounted_bearing import within_model
 from bearingcalc.core.mounted_clearance import chain_warnings, mounted_clearance
-from bearingcalc.core.mounted_shaft import MountedShaft, gear_load, solve_mounted_shaft
+from bearingcalc.core.mounted_setting import RESULTS as SETTING_RESULTS
+from bearingcalc.core.mounted_setting import operating_end_play
+from bearingcalc.core.mounted_shaft import (
+    MountedShaft,
+    gear_load,
+    solve_mounted_shaft,
+    takes_clearance,
+)
 from bearingcalc.core.shaft_statics import mean_pitch_point
 
 #: The drive's results as mounted, of one value per design.
@@ -31,7 +38,9 @@ RESULTS: dict[str, tuple[str, str]] = {
            "stiffness_axial": ("N/m", "stiffness along its axis at the gear's mean pitch "
                                "point"),
            "stiffness_radial": ("N/m", "stiffness along the gear's radial force at its "
-                                "mean pitch point")}.items()},
+                                "mean pitch point"),
+           **{key: (unit, f"adjusted pair: {meaning}")
+              for key, (unit, meaning) in SETTING_RESULTS.items()}}.items()},
     "mesh_offset_change": ("m", "E: the change of the offset between the axes, along "
                            "a×b from the pinion's axis to the gear's"),
     "pinion_axial_shift": ("m", "P: the pinion's shift along its axis, away from the "
@@ -101,8 +110,10 @@ def mounted_shaft_bearings(inputs: Mapping[str, Any], pair: Any, shaft: str, gea
         warned: dict[str, NDArray] = {}
         if bearing.get("mounting") is not None:
             chain = mounted_clearance(bearing)
-            loads.update({key: np.broadcast_to(chain[key], shape) for key in (
-                "operating_clearance", "operating_clearance_min", "operating_clearance_max")})
+            if takes_clearance(bearing):  # else its pair's end play says it
+                loads.update({key: np.broadcast_to(chain[key], shape) for key in (
+                    "operating_clearance", "operating_clearance_min",
+                    "operating_clearance_max")})
             # judged under the loads the shaft gives it, as a bearing alone under its own
             warned = chain_warnings(member_inputs, chain)
         mounted.append(MountedBearing(f"{shaft}_bearing_{i + 1}", f"{shaft}_bearings.{i + 1}",
@@ -144,6 +155,9 @@ def shaft_results(shaft: str, solved: MountedShaft, mesh: tuple[NDArray, NDArray
     jacobian[:, 0, 0] = jacobian[:, 1, 1] = jacobian[:, 2, 2] = 1.0
     jacobian[:, 0, 4], jacobian[:, 1, 4], jacobian[:, 2, 3] = r_p, -x_p, -x_p
     out = {f"{shaft}_preload_force": solved.preload.reshape(shape)}
+    if solved.setting:
+        out.update({f"{shaft}_{key}": value for key, value in
+                    operating_end_play(solved.setting, shape).items()})
     for name, direction in (("axial", (1.0, 0.0, 0.0)), ("radial", (0.0, -1.0, 0.0))):
         d = np.asarray(direction)
         load = np.einsum("nij,i->nj", jacobian, d)

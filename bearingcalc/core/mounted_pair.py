@@ -22,6 +22,8 @@ from bearingcalc.core.iso16281_shaft import (
     axial_deflection_for_load,
     solve_shaft,
 )
+from bearingcalc.core.mounted_clearance import chain_warnings, mounted_clearance
+from bearingcalc.core.mounted_setting import AXIAL_SIGN, end_play_loss, operating_end_play
 from bearingcalc.core.solver import Along, AxisResults
 
 #: The pair's results besides the single bearing's.
@@ -94,7 +96,8 @@ def pair_results(inputs: Mapping[str, Any], family: BearingFamily, flat: Any,
     results of the pair."""
     arrangement = str(inputs["arrangement"])
     spacing, overlap = _spacing(inputs, family, flat)
-    end_play, preload = _setting(inputs, family, flat, arrangement)
+    lost = _lost_to_mounting(inputs, family, spacing, flat)
+    end_play, preload = _setting(inputs, family, flat, arrangement, lost.get("loss", 0.0))
     side, orientation = _FACING[arrangement]
     bearings = []
     for sign, facing in ((side, 1.0), (-side, orientation)):
@@ -117,8 +120,35 @@ def pair_results(inputs: Mapping[str, Any], family: BearingFamily, flat: Any,
     found = shared.completed(
         inputs, _scalars(inputs, family, solved, (spacing, preload, overlap), flat),
         (inner, outer), reference, iso281, speed, shape, family.family)
+    if lost:
+        found.results.update(_as_mounted(inputs, lost, end_play, shape))
+        found.flags.update(chain_warnings(inputs, mounted_clearance(inputs)))
     return found, {"member": _members(solved, lives, speed, shape),
                    "element": _elements(solved, shape)}
+
+
+def _lost_to_mounting(inputs: Mapping[str, Any], family: BearingFamily, spacing: NDArray,
+                      flat: Any) -> dict[str, NDArray]:
+    """What the pair's mounting (both bearings on the same seats) takes of its end
+    play, flat over the designs; empty without one."""
+    arrangement = str(inputs["arrangement"])
+    if inputs.get("mounting") is None or arrangement not in AXIAL_SIGN:
+        return {}
+    # the rolling elements lie c = (Dpw/2)·tan α inside their pressure centres
+    # back-to-back, outside them face-to-face
+    spread = spacing + AXIAL_SIGN[arrangement] * 2.0 * family.pressure_offset
+    return end_play_loss([inputs, inputs], arrangement,
+                         str(inputs.get("setting_stage") or "mounted"), spread, flat)
+
+
+def _as_mounted(inputs: Mapping[str, Any], lost: Mapping[str, NDArray],
+                end_play: NDArray, shape: tuple[int, ...]) -> dict[str, NDArray]:
+    """The setting's results, and each bearing's fits (the same seats for both)."""
+    chain = mounted_clearance(inputs)
+    fits = {key: np.broadcast_to(value, shape) for key, value in chain.items()
+            if key.startswith(("fit_", "effective_", "inner_ring_hoop"))}
+    return {**fits, **operating_end_play({**lost, "set_end_play": end_play
+                                          + lost["loss"]}, shape)}
 
 
 def _spacing(inputs: Mapping[str, Any], family: BearingFamily, flat: Any
@@ -143,19 +173,24 @@ def _spacing(inputs: Mapping[str, Any], family: BearingFamily, flat: Any
     return spacing, ~(width > 0.0)
 
 
-def _setting(inputs: Mapping[str, Any], family: BearingFamily, flat: Any, arrangement: str
-             ) -> tuple[NDArray, NDArray]:
-    """The pair's end play e [m] (negative: preload) and the preload at rest [N]: from
-    ``setting_end_play``, or the end play at which each bearing carries
-    ``setting_preload`` at rest, e = −2·(δa(P) − δx at first contact)."""
+def _setting(inputs: Mapping[str, Any], family: BearingFamily, flat: Any, arrangement: str,
+             lost: Any = 0.0) -> tuple[NDArray, NDArray]:
+    """The pair's end play e [m] (negative: preload) and the preload at rest [N], as it
+    runs: from ``setting_end_play``, or the end play at which each bearing carries
+    ``setting_preload`` at rest, e = −2·(δa(P) − δx at first contact), less what its
+    mounting takes (``lost``)."""
     size = family.first_contact.size
     if arrangement == "tandem":
         return np.zeros(size), np.zeros(size)
     preload = inputs.get("setting_preload")
     if preload is not None:
         deflection = axial_deflection_for_load(family.contacts, flat(preload))
-        return -2.0 * (deflection - family.first_contact), flat(preload)
-    end_play = flat(inputs["setting_end_play"])
+        end_play = -2.0 * (deflection - family.first_contact)
+        if np.ndim(lost) == 0 and lost == 0.0:
+            return end_play, flat(preload)
+        end_play = end_play - lost
+    else:
+        end_play = flat(inputs["setting_end_play"]) - lost
     at_rest = np.zeros((size, 5))
     at_rest[:, 0] = np.maximum(-end_play / 2.0, 0.0) + family.first_contact
     return end_play, np.where(end_play < 0.0, family.contacts(at_rest).force[:, 0], 0.0)

@@ -25,6 +25,7 @@ from bearingcalc.core.iso16281_shaft import (
 )
 from bearingcalc.core.mounted_clearance import operating_clearance_of
 from bearingcalc.core.mounted_pair import BearingFamily
+from bearingcalc.core.mounted_setting import AXIAL_SIGN, end_play_loss
 
 #: How far a floating bearing's own axial coordinate is searched [m]: its outer ring
 #: slides within this of its centred place.
@@ -42,6 +43,11 @@ class MountedShaft(NamedTuple):
     families: list[BearingFamily]
     lives: list[Any]
     preload: NDArray
+    #: an adjusted pair's end play lost to its bearings' mountings [m], flat over the
+    #: designs, and its end play as set (keys of
+    #: :func:`~bearingcalc.core.mounted_setting.end_play_loss`, and ``set_end_play``);
+    #: empty without them
+    setting: dict[str, NDArray] | None = None
 
 
 def gear_load(pair: Mapping[str, NDArray], gear: str, mesh: tuple[NDArray, NDArray]
@@ -70,9 +76,16 @@ def bearing_family(inputs: Mapping[str, Any], flat: Any) -> BearingFamily:
     module = (mounted_roller_bearing if traits(str(inputs["bearing_type"])).family
               == "roller" else mounted_ball_bearing)
     c = inputs.get("dynamic_load_rating")
-    if inputs.get("mounting") is not None:  # its clearance follows from the drawing
+    if takes_clearance(inputs):  # its clearance follows from the drawing
         inputs = {**inputs, "operating_clearance": operating_clearance_of(inputs)}
     return module.bearing_family(inputs, flat, np.nan if c is None else c)
+
+
+def takes_clearance(inputs: Mapping[str, Any]) -> bool:
+    """Whether a bearing's mounting sets its own operating clearance: a bearing with a
+    radial clearance; a one-way bearing of an adjusted pair gives its pair's end play."""
+    return (inputs.get("mounting") is not None
+            and not traits(str(inputs["bearing_type"])).one_way)
 
 
 def floating(contacts: Callable[[NDArray], Any]) -> Callable[[NDArray], Any]:
@@ -120,6 +133,7 @@ def solve_mounted_shaft(bearings: list[Mapping[str, Any]], arrangement: str,
     ``preload``): loaded and at rest."""
     families = [bearing_family(bearing, flat) for bearing in bearings]
     positions = [flat(bearing["position"]) for bearing in bearings]
+    lost = _lost_to_mountings(bearings, arrangement, setting, families, positions, flat)
     on_shaft = []
     thrust = np.sign(load[:, 0]) + (load[:, 0] == 0.0)
     for i, (bearing, family) in enumerate(zip(bearings, families, strict=True)):
@@ -133,7 +147,7 @@ def solve_mounted_shaft(bearings: list[Mapping[str, Any]], arrangement: str,
             other = positions[1 - i]
             first = positions[i] < other
             orientation = np.where(first == (arrangement == "back-to-back"), 1.0, -1.0)
-            offset = _setting_offset(setting, family, flat)
+            offset = _setting_offset(setting, family, flat) + lost.get("loss", 0.0) / 2.0
             contacts = family.contacts
         on_shaft.append(ShaftBearing(contacts, positions[i] + orientation
                                      * family.centre_offset, orientation, offset))
@@ -142,6 +156,9 @@ def solve_mounted_shaft(bearings: list[Mapping[str, Any]], arrangement: str,
     # at rest only a preload holds the shaft in one place; with play it rests at Q = 0,
     # the datum its displacements count from
     preloaded = _preloaded(setting, arrangement, flat, load.shape[0])
+    if lost:
+        preloaded = np.ones(load.shape[0], dtype=bool) if setting.get("preload") is not None \
+            else lost["set_end_play"] - lost["loss"] < 0.0
     rest = np.zeros_like(load)
     preload = np.zeros(load.shape[0])
     if preloaded.any():
@@ -151,7 +168,7 @@ def solve_mounted_shaft(bearings: list[Mapping[str, Any]], arrangement: str,
             [np.abs(c.force[:, 0]) for c in at_rest.contacts]), axis=0), 0.0)
     lives = [family.life(contacts) for family, contacts in zip(families, loaded.contacts,
                                                                strict=True)]
-    return MountedShaft(loaded, rest, families, lives, preload)
+    return MountedShaft(loaded, rest, families, lives, preload, lost)
 
 
 def _preloaded(setting: Mapping[str, Any], arrangement: str, flat: Any, size: int
@@ -162,6 +179,31 @@ def _preloaded(setting: Mapping[str, Any], arrangement: str, flat: Any, size: in
     if setting.get("preload") is not None:
         return np.ones(size, dtype=bool)
     return flat(setting["end_play"]) < 0.0
+
+
+def _lost_to_mountings(bearings: list[Mapping[str, Any]], arrangement: str,
+                       setting: Mapping[str, Any], families: list[BearingFamily],
+                       positions: list[NDArray], flat: Any) -> dict[str, NDArray]:
+    """What an adjusted pair's mountings take of its end play, flat over the designs,
+    with its end play as set (a preload's: each bearing's deflection under it short of
+    first contact); empty on a locating-floating shaft or without mountings."""
+    if arrangement == "locating-floating" or not all(
+            bearing.get("mounting") is not None
+            and traits(str(bearing["bearing_type"])).one_way for bearing in bearings):
+        return {}
+    # the rolling elements lie c = (Dpw/2)·tan α inside their pressure centres
+    # back-to-back, outside them face-to-face
+    spread = np.abs(positions[1] - positions[0]) + AXIAL_SIGN[arrangement] * (
+        families[0].pressure_offset + families[1].pressure_offset)
+    lost = end_play_loss(bearings, arrangement, str(setting.get("stage") or "mounted"),
+                         spread, flat)
+    if setting.get("preload") is not None:
+        # each bearing's offset o = δa(P) = δx at first contact − e/2: e its share
+        lost["set_end_play"] = sum(family.first_contact - axial_deflection_for_load(
+            family.contacts, flat(setting["preload"])) for family in families)
+    else:
+        lost["set_end_play"] = flat(setting["end_play"])
+    return lost
 
 
 def _setting_offset(setting: Mapping[str, Any], family: BearingFamily, flat: Any) -> NDArray:

@@ -24,6 +24,7 @@ from bearingcalc.core import (
     mounted_loads,
     mounted_pair,
     mounted_roller_bearing,
+    mounted_setting,
 )
 from bearingcalc.core.arrangements import DOUBLE_ROW_PAIRS, PAIRS, pair_ratings_used
 from bearingcalc.core.bearing_life import operating_point, rating_life
@@ -79,6 +80,7 @@ RESULTS: dict[str, tuple[str, str]] = {
     "cage_speed": _BALL["cage_speed"],
     **mounted_roller_bearing.RESULTS,
     **mounted_clearance.RESULTS,
+    **mounted_setting.RESULTS,
 }
 
 GROUPS: dict[str, tuple[str, ...]] = {
@@ -95,6 +97,7 @@ GROUPS: dict[str, tuple[str, ...]] = {
                    "roller_spin_frequency", "cage_speed"),
     mounted_bearing.GROUP: tuple(mounted_roller_bearing.RESULTS),
     mounted_clearance.GROUP: tuple(mounted_clearance.RESULTS),
+    mounted_setting.GROUP: tuple(mounted_setting.RESULTS),
 }
 
 WARNINGS: dict[str, str] = {

@@ -145,6 +145,7 @@ class _MountingInputs(TypedDict, total=False):
     mounting: dict[str, Any] | None
     setting_end_play: MaybeNumbers       # a pair's end play, negative: preload [m]
     setting_preload: MaybeNumbers        # a pair's preload at rest, each bearing [N]
+    setting_stage: str | None            # where the end play was set: mounted, bench
     pair_spacing: MaybeNumbers           # a pair's pressure centres' distance [m]
     width: MaybeNumbers                  # B (T): a pair's spacing, a double row's [m]
 

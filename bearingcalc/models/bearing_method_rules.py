@@ -8,13 +8,14 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
-from pydantic import Discriminator, Field, ValidationInfo, field_validator
+from pydantic import Discriminator, Field, PrivateAttr, ValidationInfo, field_validator
 
 from bearingcalc.core.bearing_types import names_where
 from bearingcalc.core.mounted_roller_bearing import CROWN_DROP_SHARE
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import BRANCH_MARK, SpecModel, branch
 from bearingcalc.models.bearing_mounting import BearingMounting, mounting_in_place
+from bearingcalc.models.bearing_pair_rules import PairSetting
 from bearingcalc.models.bearing_reads import ReadsBearing
 from bearingcalc.models.mounting_resolution import chain_inputs, resolve
 from bearingcalc.models.plain_numbers import LaminaCount
@@ -22,7 +23,6 @@ from bearingcalc.models.quantities import (
     Angle,
     Length,
     Moment,
-    PositiveForce,
     PositiveLength,
 )
 from bearingcalc.models.rules import rule, whole_spec_rule
@@ -86,26 +86,6 @@ RollerProfile = Annotated[
     Discriminator(_profile_form)]
 
 
-class PairSetting(SpecModel):
-    """How a matched pair is set against itself: an end play or a preload."""
-
-    end_play: Length | None = Field(
-        None, description="the pair's axial clearance between first contacts (negative: "
-        "preload by interference), like 20 µm")
-    preload: PositiveForce | None = Field(
-        None, description="the axial load each bearing carries at rest, like 1.5 kN")
-
-    @rule
-    def _end_play_or_preload(self) -> SpecFieldError | None:
-        if self.end_play is not None and self.preload is not None:
-            return SpecFieldError("preload", "give the end_play or the preload the pair is "
-                                  "set to, not both")
-        if self.end_play is None and self.preload is None:
-            return SpecFieldError("end_play", "missing: give end_play (like 20 µm, "
-                                  "negative: preload) or preload (like 1.5 kN)")
-        return None
-
-
 class ElementMountingFields(SpecModel):
     """What a bearing as mounted takes of its own, alone or on a drive's shaft."""
 
@@ -127,6 +107,10 @@ class ElementMountingFields(SpecModel):
     edge_stress_factor: bool | None = Field(
         None, description="iso-16281, rollers: true raises each lamina's load towards the "
         "roller's ends by ISO/TS 16281's edge-stress factor in the life (default false)")
+
+    #: a drive's bearing on a shaft adjusted against the other bearing: its mounting
+    #: moves the pair's end play (set where the drive builds the bearing's own spec)
+    _adjusted_shaft: bool = PrivateAttr(default=False)
 
 
     @field_validator("mounting", mode="after")
@@ -180,6 +164,7 @@ class MountingFields(ElementMountingFields):
             setting = self.setting
             inputs.update(setting_end_play=setting.end_play if setting else None,
                           setting_preload=setting.preload if setting else None,
+                          setting_stage=setting.stage if setting else None,
                           pair_spacing=self.pair_spacing)
         inputs.update(self.estimated_inputs())
         if self.method != "iso-16281" or self.type_traits.family != "roller":
@@ -351,7 +336,7 @@ class MethodRules(RollerMountingRules):
         # one whose single row carries thrust one way sits at its free contact angle
         takes_clearance = not self.type_traits.one_way
         if self.mounting is not None:
-            return mounting_in_place(self)
+            return mounting_in_place(self, adjusted=self._adjusted_shaft)
         if takes_clearance and self.operating_clearance is None:
             return SpecFieldError("operating_clearance", f"missing: a {self.type} bearing "
                                   "under method: iso-16281 needs its operating clearance, like "

@@ -105,10 +105,6 @@ class BearingMounting(SpecModel):
         if self.clearance_group is not None and self.initial_clearance is not None:
             problems.append(SpecFieldError("initial_clearance", "give a clearance_group or "
                                            "the initial_clearance, not both"))
-        if self.clearance_group is None and self.initial_clearance is None:
-            problems.append(SpecFieldError("clearance_group", f"missing: give the bearing's "
-                                           f"clearance_group ({GROUPS_WORDS}) or its "
-                                           "initial_clearance, like 15 µm ± 5 µm"))
         for seat, like in (("shaft", "k5"), ("housing", "H7")):
             if getattr(self, seat) is None:
                 problems.append(SpecFieldError(seat, f"missing: give the {seat} seat's ISO "
@@ -144,18 +140,29 @@ THINNEST_WALL_RATIO = 0.95
 SLIP_MM, SLIP_SHARE = 0.2e-3, 0.01
 
 
-def mounting_in_place(bearing: Any) -> list[SpecFieldError]:
-    """The problems of a ``bearing``'s mounting in place of its operating clearance:
-    given with it, for a bearing without one, without the ring's diameters, or with
-    bands and bodies that do not fit the ring."""
+#: The arrangements of a pair set against itself, whose end play a mounting moves.
+ADJUSTED = ("back-to-back", "face-to-face")
+
+
+def mounting_in_place(bearing: Any, adjusted: bool = False) -> list[SpecFieldError]:
+    """The problems of a ``bearing``'s mounting in place of its operating clearance (of
+    its pair's end play, where it is a one-way bearing ``adjusted`` against another, or
+    a pair itself): given with it, for a bearing without one, without the ring's
+    diameters, or with bands and bodies that do not fit the ring."""
     if bearing.operating_clearance is not None:
         return [SpecFieldError("operating_clearance", "give the operating_clearance or the "
                                "mounting it follows from, not both")]
-    if bearing.type_traits.one_way or bearing.arrangement != "single":
-        return [SpecFieldError("mounting", f"is for a single bearing with a radial "
-                               f"clearance (deep-groove, cylindrical, needle): a "
-                               f"{bearing.type} bearing ({bearing.arrangement}) sits at its "
-                               "contact angle or its pair's setting; leave mounting out")]
+    one_way = bearing.type_traits.one_way
+    if bearing.arrangement in ADJUSTED or (adjusted and one_way):
+        problems = _pair_mounting(bearing.mounting)
+    elif one_way or bearing.arrangement != "single":
+        return [SpecFieldError("mounting", f"is for a bearing with a radial clearance "
+                               f"(deep-groove, cylindrical, needle), or a pair set against "
+                               f"itself (back-to-back, face-to-face): this {bearing.type} "
+                               f"bearing ({bearing.arrangement}) sits at its contact angle; "
+                               "leave mounting out")]
+    else:
+        problems = _clearance_given(bearing.mounting)
     if bearing.drawn_cup:
         return [SpecFieldError("mounting", "a drawn-cup needle roller bearing has no inner "
                                "ring and a cup pressed to the housing's bore: its clearance "
@@ -166,7 +173,26 @@ def mounting_in_place(bearing: Any) -> list[SpecFieldError]:
         return [SpecFieldError("bore_diameter" if bore is None else "outside_diameter",
                                "missing: a bearing's mounting takes its bore_diameter and "
                                "outside_diameter (or a designation)", at="mounting")]
-    return [*_bodies_fit(bearing.mounting, bore, outside), *_no_slips(bearing)]
+    return [*problems, *_bodies_fit(bearing.mounting, bore, outside), *_no_slips(bearing)]
+
+
+def _clearance_given(mounting: BearingMounting) -> list[SpecFieldError]:
+    """A bearing alone takes its clearance from its group or as given."""
+    if mounting.clearance_group is None and mounting.initial_clearance is None:
+        return [SpecFieldError("mounting.clearance_group", f"missing: give the bearing's "
+                               f"clearance_group ({GROUPS_WORDS}) or its initial_clearance, "
+                               "like 15 µm ± 5 µm")]
+    return []
+
+
+def _pair_mounting(mounting: BearingMounting) -> list[SpecFieldError]:
+    """A pair set against itself has its setting's end play, not a clearance of its
+    own."""
+    return [SpecFieldError(f"mounting.{field}", "a pair set against itself has no radial "
+                           "clearance of its own: its setting's end_play (or preload) is "
+                           "where the chain starts; leave it out")
+            for field in ("clearance_group", "initial_clearance")
+            if getattr(mounting, field) is not None]
 
 
 def _bodies_fit(mounting: BearingMounting, bore: float, outside: float

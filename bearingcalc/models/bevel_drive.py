@@ -17,8 +17,8 @@ from bearingcalc.models.bearing_method_rules import (
     MOUNTED_LIMITS,
     MOUNTING_INPUTS,
     ElementMountingFields,
-    PairSetting,
 )
+from bearingcalc.models.bearing_pair_rules import PairSetting
 from bearingcalc.models.bevel_gears import BevelGearsLimits, BevelPair
 from bearingcalc.models.drive_mounting_rules import MESH_LIMITS, DriveMountingRules
 from bearingcalc.models.duty import (
@@ -329,8 +329,12 @@ class BevelDriveSpec(DriveMountingRules, BinOilRules, DutyCycleRules, BevelPair)
     def _bearing_under_load(self, shaft: str, bearing: DriveBearing) -> RollingBearingSpec:
         """The bearing as a ``kind: rolling-bearing`` spec under the kind of load it will
         carry: radial, and axial too where it locates or is adjusted against the other."""
-        axial = bearing.locating or self.arrangement(shaft) != "locating-floating"
-        return self.rolling_bearing(bearing, radial=1.0, axial=1.0 if axial else 0.0, speed=1.0)
+        adjusted = self.arrangement(shaft) != "locating-floating"
+        spec = self.rolling_bearing(bearing, radial=1.0,
+                                    axial=1.0 if bearing.locating or adjusted else 0.0,
+                                    speed=1.0)
+        spec._adjusted_shaft = adjusted
+        return spec
 
     def _as_rolling_bearing(self, where: str, spec: RollingBearingSpec) -> list[SpecFieldError]:
         """Everything ``kind: rolling-bearing`` refuses of the bearing (``spec``, from
@@ -365,7 +369,8 @@ class BevelDriveSpec(DriveMountingRules, BinOilRules, DutyCycleRules, BevelPair)
         inputs["arrangements"] = {shaft: self.arrangement(shaft) for shaft, _ in self.shafts()}
         inputs["method"] = self.method
         inputs["settings"] = {shaft: None if setting is None else {
-            "end_play": setting.end_play, "preload": setting.preload}
+            "end_play": setting.end_play, "preload": setting.preload,
+            "stage": setting.stage}
             for shaft, setting in (("pinion", self.pinion_setting),
                                    ("gear", self.gear_setting))}
         return inputs

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from bearingcalc.core.bearing_types import traits
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.bearing_method_rules import at_one_point
 from bearingcalc.models.rules import rule, whole_spec_rule
@@ -53,6 +54,40 @@ class DriveMountingRules:
                                                f"{field}: {{end_play: 20 µm}} (negative: "
                                                "preload) or {preload: 1.5 kN}",
                                                at=f"{shaft}_arrangement"))
+        return problems
+
+    @rule
+    def _pair_mountings(self) -> list[SpecFieldError]:
+        """An adjusted pair's mountings give its end play together: both bearings', on
+        one shaft in one housing, assembled at one temperature."""
+        problems = []
+        for shaft, bearings in self.shafts():
+            setting = getattr(self, f"{shaft}_setting")
+            adjusted = self.arrangement(shaft) != "locating-floating"
+            mounted = [b for b in bearings if b.mounting is not None
+                       and traits(b.type).one_way]
+            if setting is not None and setting.stage == "bench" and not mounted:
+                problems.append(SpecFieldError(
+                    f"{shaft}_setting.stage", "bench: the end play as set before the rings "
+                    "are pressed on needs the angular-contact or tapered bearings' "
+                    "mountings, whose fits take up part of it: give each its mounting, or "
+                    "leave stage out"))
+            if not adjusted or not mounted or self.method != "iso-16281":
+                continue
+            if len(mounted) < len(bearings):
+                missing = next(i for i, b in enumerate(bearings, 1) if b not in mounted)
+                problems.append(SpecFieldError(
+                    f"{shaft}_bearings.{missing}.mounting", "missing: the pair's end play "
+                    "follows from both bearings' mountings (two one-way bearings, each with "
+                    "its fits): give this one's too, or leave both out", at=f"{shaft}_bearings"))
+                continue
+            for field in ("shaft_material", "housing_material", "assembly_temperature"):
+                first, second = (getattr(b.mounting, field) for b in mounted)
+                if first != second:
+                    problems.append(SpecFieldError(
+                        f"{shaft}_bearings.2.mounting.{field}", "differs from bearing 1's: "
+                        "an adjusted pair sits on one shaft in one housing, assembled at one "
+                        "temperature; give both the same"))
         return problems
 
     @rule

@@ -106,8 +106,9 @@ def _bands_of(resolved: BearingMounting, bore: float, outside: float
     """Each link's band [low, high] of a resolved mounting."""
     given = resolved.clearance_group if resolved.clearance_group is not None \
         else resolved.initial_clearance
-    bands = {} if given is None or isinstance(given, str) else {
-        "initial_clearance": band_ends(given)}
+    # an adjusted pair's bearing has no clearance of its own: its setting's end play
+    bands = {} if isinstance(given, str) else {
+        "initial_clearance": (0.0, 0.0) if given is None else band_ends(given)}
     for link, nominal, field in (("bore_diameter", bore, "bore_deviation"),
                                  ("outside_diameter", outside, "outside_deviation")):
         low, high = band_ends(getattr(resolved, field))
@@ -148,8 +149,9 @@ def _link(mounting: BearingMounting, link: str, bore: Any, outside: Any) -> Any:
     """A link's value in SI: the clearance, a seat's diameter, the ring's mean bore or
     outside (its nominal plus its deviation)."""
     if link == "initial_clearance":
-        return mounting.clearance_group if mounting.clearance_group is not None \
+        given = mounting.clearance_group if mounting.clearance_group is not None \
             else mounting.initial_clearance
+        return 0.0 if given is None else given
     value = getattr(mounting, LINK_FIELDS[link])
     return value + (bore if link == "bore_diameter" else outside if link == "outside_diameter"
                     else 0.0)
