@@ -9,7 +9,9 @@ It never imports the CLI.
 from __future__ import annotations
 
 import os
+import signal
 import sys
+import threading
 import traceback
 from collections.abc import Callable, Iterable
 from pathlib import Path
@@ -189,9 +191,34 @@ def print_error(error: Exception) -> None:
     print("\n".join(printable(line) for line in lines), file=sys.stderr)
 
 
+class _CtrlC:
+    """Python's own Ctrl-C (a KeyboardInterrupt where the main thread is), remembering
+    that it came: a compiled module whose import Ctrl-C cuts short raises an ImportError
+    of its own that keeps no trace of the interruption."""
+
+    pressed = False
+
+    @classmethod
+    def install(cls) -> None:
+        """Take Ctrl-C over for this command's run (a run in a thread of another
+        program's, or under its own handler, keeps that program's)."""
+        cls.pressed = False
+        if threading.current_thread() is threading.main_thread() and (
+                signal.getsignal(signal.SIGINT) is signal.default_int_handler):
+            signal.signal(signal.SIGINT, cls._handle)
+
+    @classmethod
+    def _handle(cls, signum: int, frame: Any) -> None:
+        cls.pressed = True
+        signal.default_int_handler(signum, frame)
+
+
 def _interrupted(exc: BaseException) -> bool:
-    """Whether Ctrl-C caused ``exc``: a KeyboardInterrupt, or an error raised while one
-    was handled (a library imported during Ctrl-C may turn it into an ImportError)."""
+    """Whether Ctrl-C caused ``exc``: a KeyboardInterrupt, an error raised while one was
+    handled (a library imported during Ctrl-C may turn it into an ImportError), or any
+    error after Ctrl-C was pressed."""
+    if _CtrlC.pressed:
+        return True
     seen: set[int] = set()
     current: BaseException | None = exc
     while current is not None and id(current) not in seen:
@@ -213,6 +240,7 @@ class errors_as_exit:
         self._reads = reads.tracking()
 
     def __enter__(self) -> None:
+        _CtrlC.install()
         self._reads.__enter__()
         if self.debug:  # also the errors that specs' runs catch and go on after
             from bearingcalc.evaluation import show_tracebacks

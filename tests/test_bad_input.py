@@ -7,6 +7,7 @@ through every command; the tests here pin the behaviour each class must have.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import signal
@@ -529,3 +530,21 @@ def test_a_usage_error_is_one_line_like_every_other_error(args, where):
     assert run.stderr.count("\n") == 1, run.stderr
     assert run.stderr.startswith(f"{where}: ") and run.stderr.rstrip().endswith(
         f"(see '{where} -h')"), run.stderr
+
+
+def test_an_error_after_ctrl_c_is_the_interruption():
+    """A compiled module whose import Ctrl-C cuts short raises an ImportError that keeps
+    no trace of the KeyboardInterrupt (Cython's import_array): the run still ends as
+    interrupted, status 130, not as an internal error."""
+    import typer
+
+    from bearingcalc.cli_output import _CtrlC, errors_as_exit
+
+    with pytest.raises(typer.Exit) as ended, errors_as_exit(debug=False):
+        with contextlib.suppress(KeyboardInterrupt):  # swallowed by the module's import
+            _CtrlC._handle(signal.SIGINT, None)
+        raise ImportError("numpy.core.multiarray failed to import")
+    assert ended.value.exit_code == 130
+    with pytest.raises(typer.Exit) as ended, errors_as_exit(debug=False):
+        raise ImportError("a genuine internal error, with no Ctrl-C before it")
+    assert ended.value.exit_code == 2
