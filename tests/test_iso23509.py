@@ -20,18 +20,20 @@ their printed digits.
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
 import pytest
 
 from bearingcalc.core.iso10300_virtual import MeanSection, virtual_gears
-from bearingcalc.core.iso23509 import BlankInputs, blank, pitch_cones
+from bearingcalc.core.iso23509 import BlankInputs, blank, gleason_profile_shift, pitch_cones
+from tests.conftest import ROOT
 
 C_HAM = 0.24737
 SAMPLE = BlankInputs(14, 39, math.radians(90.0), 176.893, 25.4, math.radians(35.0),
                      math.radians(20.0), 114.3, 1.0 - 2.0 * C_HAM, 0.037, -0.055,
-                     taper="constant-slot-width")
+                     taper="duplex")
 #: ISO 23509 Annex F.2, to its printed digits [mm, °].
 PRINTED = {
     "outer_cone_distance": 93.973, "mean_cone_distance": 81.273,
@@ -89,6 +91,13 @@ def test_the_outer_section_is_the_standards_within_its_depth_convention(sample, 
 @pytest.mark.parametrize("key", list(TR_DEPTHS))
 def test_the_mean_depths_are_the_reports(sample, key):
     assert round(float(sample[key]), 3) == TR_DEPTHS[key]
+
+
+def test_gleasons_addendum_factor_is_the_samples():
+    """The sample's c_ham 0.24737 is Gleason's 0.210 + 0.290/u_a at z 14/39 (u_a = u²
+    at Σ = 90°)."""
+    delta1, delta2 = pitch_cones(14, 39, math.pi / 2)
+    assert round((1.0 - gleason_profile_shift(14, 39, delta1, delta2)) / 2.0, 5) == C_HAM
 
 
 def test_the_constant_slot_width_sums_the_dedendum_angles_the_sample_gives(sample):
@@ -150,3 +159,88 @@ def test_a_straight_pair_has_no_face_contact():
         20, 40, math.pi / 2)), (3.0, 2.0), (3.5, 4.5), 2.5, 0.0, math.radians(20.0), 20.0))
     assert flat["eps_v_beta"] == 0.0 and flat["beta_B"] == 0.0
     assert flat["lbm"] == pytest.approx(17.0 * math.sqrt(0.85), rel=1e-15)
+
+
+# --- through the command line: a spiral or Zerol pair's blank -------------------------
+
+SPIRAL = (ROOT / "specs" / "bevel-gears-spiral.yaml").read_text(encoding="utf-8")
+
+
+def solved(cli, spec_file, text: str) -> dict:
+    run = cli("solve", spec_file(text), "--format", "json")
+    assert run.code in (0, 1), run.err
+    return json.loads(run.out)["results"]
+
+
+def test_the_annex_e_pair_is_the_iso_sample_through_solve(cli, spec_file):
+    """specs/bevel-gears-spiral.yaml is the same pair (m 25.4/5.6 mm: d_e2 176.893 mm, a
+    4.5 in cutter, so a duplex taper, Gleason's profile shift): its blank prints as the
+    standard's sample does."""
+    found = solved(cli, spec_file, SPIRAL)
+    for key, printed in PRINTED.items():
+        if key in found:
+            assert round(in_print_units(key, found[key]) * (1e3 if "angle" not in key
+                                                               else 1.0), 3) == printed, key
+    for key, printed in TR_DEPTHS.items():
+        assert round(found[key] * 1e3, 3) == printed, key
+    assert round(found["profile_shift"], 5) == round(1 - 2 * C_HAM, 5)
+    assert "gear_a_addendum" not in found  # the Gleason proportions are a straight pair's
+
+
+def test_the_blanks_fields_reach_the_solver(cli, spec_file):
+    text = SPIRAL.replace("rating:", "profile_shift: 0.3\nthickness_modification: "
+                          "{pinion: 0.036, gear: -0.055}\ntaper: standard-depth\nrating:")
+    found = solved(cli, spec_file, text)
+    module = found["mean_normal_module"]
+    assert found["mean_addendum_pinion"] == pytest.approx(1.3 * module, rel=1e-12)
+    assert found["mean_dedendum_gear"] == pytest.approx(1.55 * module, rel=1e-12)
+    assert found["dedendum_angle_gear"] == pytest.approx(math.atan(
+        found["mean_dedendum_gear"] / (found["mean_pitch_diameter_gear"] / 2
+                                       / math.sin(found["pitch_angle_gear"]))), rel=1e-12)
+    assert found["mean_normal_circular_thickness_pinion"] == pytest.approx(module * (
+        math.pi / 2 + 2 * (0.036 + 0.3 * math.tan(math.radians(20)))), rel=1e-12)
+
+
+def test_a_zerol_pair_takes_the_blank_without_a_cutter(cli, spec_file):
+    text = (SPIRAL.replace("spiral_angle: 35 deg", "spiral_angle: 0 deg")
+            .replace("  cutter_radius: 4.5 in      # rc, for the lengthwise curvature "
+                     "factor K_x\n", ""))
+    found = solved(cli, spec_file, text)
+    assert found["dedendum_angle_pinion"] == pytest.approx(math.atan(
+        found["mean_dedendum_pinion"] * 2 * math.sin(found["pitch_angle_pinion"])
+        / found["mean_pitch_diameter_pinion"]), rel=1e-12)
+
+
+@pytest.mark.parametrize("shift,member", [
+    ("-0.6", "pinion"), ("0.9\nthickness_modification: {pinion: -0.45, gear: 0.45}",
+                         "pinion")])
+def test_a_profile_shift_that_undercuts_or_points_a_tooth_is_one_line(cli, spec_file,
+                                                                      shift, member):
+    run = cli("solve", spec_file(SPIRAL.replace("rating:", f"profile_shift: {shift}\nrating:")))
+    lines = run.err.strip().splitlines()
+    assert run.code == 2 and len(lines) == 1, run.err
+    assert ": profile_shift:" in lines[0] and member in lines[0]
+
+
+@pytest.mark.parametrize("text,field", [
+    (SPIRAL.replace("spiral_angle: 35 deg         # βm at the mean point (0 deg: Zerol)\n"
+                    "hand: left                   # the pinion's hand (gear B's is the "
+                    "other)\nrotation: counterclockwise   # the pinion's, seen from its "
+                    "back toward the apex\n", "").replace(
+        "  cutter_radius: 4.5 in      # rc, for the lengthwise curvature factor K_x\n", "")
+     .replace("rating:", "profile_shift: 0.3\nrating:"), "profile_shift"),
+    (SPIRAL.replace("rating:", "cutter_radius: 100 mm\nrating:"), "rating.cutter_radius"),
+    (SPIRAL.replace("  cutter_radius: 4.5 in      # rc, for the lengthwise curvature "
+                    "factor K_x\n", "").replace("rating:", "taper: duplex\nrating:")
+     .replace("  quality_number: 11", "  quality_number: 11").split("rating:")[0]
+     + "limits: {}\n", "cutter_radius"),
+    (SPIRAL.replace("rating:", "profile_shift: 2\nrating:"), "profile_shift"),
+    (SPIRAL.replace("rating:", "taper: tapered\nrating:"), "taper"),
+    (SPIRAL.replace("rating:", "thickness_modification: {pinion: 0.1}\nrating:"),
+     "thickness_modification"),
+])
+def test_the_blanks_fields_refused_in_one_line(cli, spec_file, text, field):
+    run = cli("solve", spec_file(text))
+    lines = run.err.strip().splitlines()
+    assert run.code == 2 and len(lines) == 1, run.err
+    assert f": {field}" in lines[0], lines

@@ -20,9 +20,10 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core import bevel_rating, bevel_sizing, gear_materials
+from bearingcalc.core import bevel_rating, bevel_sizing, gear_materials, iso23509
 from bearingcalc.core.bevel_gears_results import (
     APEX_MISMATCH_MARGIN,
+    BLANK_RESULTS,
     GROUPS,
     RESULTS,
     STATUS_REASONS,
@@ -240,9 +241,8 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
     checks: list[tuple[int, NDArray]] = [(7, ~(face < 0.5 * out["outer_cone_distance"]))]
     out["face_width_margin"] = np.asarray(inputs["max_face_width_ratio"]) - out["face_width_ratio"]
     if inputs.get("spiral_angle") is not None:
-        out.update(bevel_sizing.spiral_normal_section(
-            out["mean_module"], out["gear_a_virtual_teeth"], out["gear_b_virtual_teeth"],
-            inputs["spiral_angle"], phi))  # type: ignore[arg-type]
+        out, blank_checks = _spiral_blank(inputs, out, phi)
+        checks += blank_checks
     # Not a result: the undercut warning's flag, which evaluate() takes out. A spiral
     # tooth is generated in its normal section, so its normal virtual teeth count.
     virtual = out.get("gear_a_normal_virtual_teeth", out["gear_a_virtual_teeth"])
@@ -287,6 +287,67 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
         inputs["quality_number"])))  # type: ignore[arg-type]
     out.update(_safety_margins(rating, inputs))
     return out, checks
+
+
+#: The Gleason proportions a spiral or Zerol pair's ISO 23509 blank replaces.
+GLEASON_BLANK = tuple(f"gear_{gear}_{key}" for key in (
+    "addendum", "dedendum", "dedendum_angle", "outside_diameter", "crown_to_apex")
+    for gear in ("a", "b"))
+#: The status codes of a tooth undercut or pointed, by member.
+UNDERCUT = {"pinion": 10, "gear": 12}
+POINTED = {"pinion": 11, "gear": 13}
+POINTED_BY_RACK = {"pinion": 14, "gear": 15}
+
+
+def _spiral_blank(inputs: Mapping[str, ArrayLike | None], sized: Mapping[str, NDArray],
+                  phi: NDArray) -> tuple[dict[str, NDArray], list[tuple[int, NDArray]]]:
+    """A spiral or Zerol pair's sizing: the straight pair's ``sized`` with its normal
+    section, and its blank by ISO 23509 in place of the Gleason proportions
+    (:data:`GLEASON_BLANK`); and the checks of each member's teeth."""
+    out = {key: value for key, value in sized.items() if key not in GLEASON_BLANK}
+    out.update(bevel_sizing.spiral_normal_section(
+        out["mean_module"], out["gear_a_virtual_teeth"], out["gear_b_virtual_teeth"],
+        inputs["spiral_angle"], phi))  # type: ignore[arg-type]
+    blank, checks = _iso23509_blank(inputs, out, phi)
+    return {**out, **blank}, checks
+
+
+def _iso23509_blank(inputs: Mapping[str, ArrayLike | None], out: Mapping[str, NDArray],
+                    phi: NDArray) -> tuple[dict[str, NDArray], list[tuple[int, NDArray]]]:
+    """A spiral or Zerol pair's blank by ISO 23509 from the sizing's ``out``, with its
+    contact ratio from the blank's addenda, and the checks of each member's teeth:
+    undercut, pointed (by the shift, or by the basic rack itself)."""
+    z1, z2 = inputs["gear_a_teeth"], inputs["gear_b_teeth"]
+    delta1, delta2 = iso23509.pitch_cones(z1, z2, inputs["shaft_angle"])  # type: ignore[arg-type]
+    shift = inputs.get("profile_shift")
+    if shift is None:
+        shift = iso23509.gleason_profile_shift(z1, z2, delta1, delta2)  # type: ignore[arg-type]
+    cutter = inputs.get("cutter_radius")
+    blank = iso23509.blank(iso23509.BlankInputs(
+        z1, z2, inputs["shaft_angle"], out["gear_b_outer_pitch_diameter"],  # type: ignore[arg-type]
+        inputs["face_width"], inputs["spiral_angle"], phi,  # type: ignore[arg-type]
+        np.nan if cutter is None else cutter, shift,
+        inputs["thickness_modification_pinion"], inputs["thickness_modification_gear"],  # type: ignore[arg-type]
+        inputs["addendum_factor"], inputs["dedendum_factor"], str(inputs["taper"])))  # type: ignore[arg-type]
+    limits = iso23509.tooth_limits(blank, (z1, z2), inputs["spiral_angle"], phi,  # type: ignore[arg-type]
+                                   (inputs["addendum_factor"], inputs["dedendum_factor"]),  # type: ignore[arg-type]
+                                   (inputs.get("tool_edge_radius_pinion"),
+                                    inputs.get("tool_edge_radius_gear")))
+    found = {key: value for key, value in {**blank, **limits}.items()
+             if key in BLANK_RESULTS}
+    found["profile_shift"] = np.asarray(shift, dtype=float)
+    found["contact_ratio"] = bevel_sizing.virtual_contact_ratio(
+        out["gear_a_mean_pitch_diameter"] / (2.0 * np.cos(delta1)),
+        out["gear_b_mean_pitch_diameter"] / (2.0 * np.cos(delta2)),
+        blank["mean_addendum_pinion"], blank["mean_addendum_gear"], out["mean_module"], phi)
+    shifts = {"pinion": np.asarray(shift, dtype=float), "gear": -np.asarray(shift, dtype=float)}
+    checks = []
+    for member in ("pinion", "gear"):
+        checks.append((UNDERCUT[member], shifts[member]
+                       < limits[f"least_profile_shift_{member}"] - 1e-12))
+        checks.append((POINTED_BY_RACK[member], ~(limits[f"rack_top_land_{member}"] > 0.0)))
+        checks.append((POINTED[member], ~(limits[f"top_land_{member}"] > 0.0)))
+    return found, checks
 
 
 def _safety_margins(rating: bevel_rating.PairRating, inputs: Mapping[str, ArrayLike | None]

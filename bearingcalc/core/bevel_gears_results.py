@@ -5,6 +5,8 @@ table's headings, the warnings and the reasons a design is impossible
 
 from __future__ import annotations
 
+from bearingcalc.core.common import DerivedTest
+
 #: The key of the apex-mismatch margin, max_apex_mismatch − |apex_mismatch|. It reads
 #: "slip_margin" in every output, as the other rolling kinds name their margin, and stays
 #: so for the tools that read it.
@@ -52,6 +54,30 @@ RESULTS: dict[str, tuple[str, str]] = {
     "gear_a_crown_to_apex": ("m", "pitch apex to crown X1 = Re·cosδ1 − ha1·sinδ1"),
     "gear_b_crown_to_apex": ("m", "pitch apex to crown X2 = Re·cosδ2 − ha2·sinδ2"),
     "contact_ratio": ("1", "εα of the virtual spur pair at the mean section"),
+    **{f"{key}_{member}": (unit, f"the {member}'s {meaning}")
+       for key, (unit, meaning) in {
+           "pitch_angle": ("rad", "pitch angle δ"),
+           "mean_pitch_diameter": ("m", "mean pitch diameter d_m = 2R_m·sinδ"),
+           "mean_addendum": ("m", "mean addendum h_am = m_mn(k_hap ± x_hm1)"),
+           "mean_dedendum": ("m", "mean dedendum h_fm = m_mn(k_hfp ∓ x_hm1)"),
+           "addendum_angle": ("rad", "addendum angle θ_a, the mate's dedendum angle"),
+           "dedendum_angle": ("rad", "dedendum angle θ_f of the taper"),
+           "face_angle": ("rad", "face angle δ_a = δ + θ_a"),
+           "root_angle": ("rad", "root angle δ_f = δ − θ_f"),
+           "outer_addendum": ("m", "outer addendum h_ae = h_am + (b/2)·tanθ_a"),
+           "outer_dedendum": ("m", "outer dedendum h_fe = h_fm + (b/2)·tanθ_f"),
+           "outer_tip_diameter": ("m", "outer tip diameter d_ae = d_e + 2h_ae·cosδ"),
+           "outer_root_diameter": ("m", "outer root diameter d_fe = d_e − 2h_fe·cosδ"),
+           "crown_to_crossing_point": ("m", "crown to crossing point t_xo = "
+                                       "R_e·cosδ − h_ae·sinδ"),
+           "mean_normal_circular_thickness": ("m", "mean normal circular thickness s_mn = "
+                                              "m_mn(π/2 + 2(x_sm ± x_hm1·tanα_n))"),
+           "least_profile_shift": ("1", "least profile shift against undercut (its own: "
+                                   "x_hm1 for the pinion, −x_hm1 for the gear)"),
+           "top_land": ("m", "normal top land s_an at the mean point's tip circle"),
+       }.items() for member in ("pinion", "gear")},
+    "profile_shift": ("1", "x_hm1, the pinion's profile shift (given, or Gleason's "
+                           "1 − 2(0.210 + 0.290/u_a))"),
     "tangential_force": ("N", "Wt = 2T/dm1 at the mean pitch point"),
     "gear_a_radial_force": ("N", "Wr1, toward gear A's axis (straight: Wt·tanφ·cosδ1)"),
     "gear_a_axial_force": ("N", "Wa1, away from the apex; < 0 toward it (straight: "
@@ -74,6 +100,15 @@ RESULTS: dict[str, tuple[str, str]] = {
     "contact_safety_margin": ("1", "the smaller S_H − min_contact_safety"),
 }
 
+#: A spiral or Zerol pair's blank by ISO 23509 (the table's "blank" heading).
+BLANK_RESULTS = ("profile_shift", *(
+    f"{key}_{member}" for key in (
+        "pitch_angle", "mean_pitch_diameter", "mean_addendum", "mean_dedendum",
+        "addendum_angle", "dedendum_angle", "face_angle", "root_angle", "outer_addendum",
+        "outer_dedendum", "outer_tip_diameter", "outer_root_diameter",
+        "crown_to_crossing_point", "mean_normal_circular_thickness", "least_profile_shift",
+        "top_land") for member in ("pinion", "gear")))
+
 #: Headings of the table, each with its results.
 GROUPS: dict[str, tuple[str, ...]] = {
     "kinematics": ("gear_a_pitch_radius", "gear_b_pitch_radius", "gear_a_pitch_angle",
@@ -91,6 +126,7 @@ GROUPS: dict[str, tuple[str, ...]] = {
                  "gear_a_dedendum_angle", "gear_b_dedendum_angle", "gear_a_outside_diameter",
                  "gear_b_outside_diameter", "gear_a_crown_to_apex", "gear_b_crown_to_apex",
                  "contact_ratio", "face_width_margin"),
+    "blank (ISO 23509)": BLANK_RESULTS,
     "forces": ("tangential_force", "gear_a_radial_force", "gear_a_axial_force",
                "gear_b_radial_force", "gear_b_axial_force"),
     "rating": ("lengthwise_curvature_factor", "bending_stress", "contact_stress",
@@ -120,6 +156,23 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
                       "most Re/3)"),
     8: ("power", "gear A does not turn relative to its arm, so power gives no torque: give "
                  "torque instead"),
+    **{code: ("profile_shift", DerivedTest(
+        f"the {member}'s teeth would be undercut: its profile shift ({sign}x_hm1) is "
+        f"below least_profile_shift_{member}, k_hfp − ρ_a0/m_mn·(1 − sinα_n) − "
+        f"z_vn·sin²α_n/2: give {'a larger' if member == 'pinion' else 'a smaller'} "
+        f"profile_shift, or the {member} more teeth"))
+       for member, sign, code in (("pinion", "", 10), ("gear", "−", 12))},
+    **{code: ("profile_shift", DerivedTest(
+        f"the {member}'s teeth would be pointed (no top land at the tip circle): give "
+        f"{'a smaller' if member == 'pinion' else 'a larger'} profile_shift, a smaller "
+        "pressure_angle, a thicker tooth (thickness_modification) or a smaller "
+        "addendum_factor"))
+       for member, code in (("pinion", 11), ("gear", 13))},
+    **{code: ("pressure_angle", DerivedTest(
+        f"the {member}'s teeth would be pointed even unshifted: the basic rack's "
+        "pressure_angle and addendum_factor leave no top land at its tip circle in the "
+        "normal section: give a smaller pressure_angle or addendum_factor"))
+       for member, code in (("pinion", 14), ("gear", 15))},
     9: ("rating.quality_number", "the pitch-line speed is above v_t,max = [A + (Q_v − 3)]²/200 "
         "m/s, the most the AGMA dynamic factor covers at this quality number (28.7 m/s at "
         "Q_v 8; Budynas & Nisbett eq. 15-6): check the module and speed, or give a higher "

@@ -19,7 +19,11 @@ from numpy.typing import ArrayLike, NDArray
 #: The tooth taper's systems: the root and face lines through the pitch apex
 #: (standard depth), parallel to the pitch line (uniform depth), or the constant slot
 #: width of a face-milled duplex cut (the sum of the dedendum angles from the cutter).
-TAPERS = ("standard-depth", "uniform-depth", "constant-slot-width")
+TAPERS = ("standard-depth", "uniform-depth", "duplex")
+#: Gleason's mean addendum factor of the wheel, c_ham = 0.210 + 0.290/u_a.
+C_HAM_BASE, C_HAM_RATIO = 0.210, 0.290
+#: The tool's edge radius where none is given, a share of m_mn.
+EDGE_RADIUS_SHARE = 0.2
 
 
 class BlankInputs(NamedTuple):
@@ -38,7 +42,7 @@ class BlankInputs(NamedTuple):
     thickness_modification_gear: ArrayLike    # x_sm2
     addendum_factor: ArrayLike = 1.0       # k_hap
     dedendum_factor: ArrayLike = 1.25      # k_hfp
-    taper: str = "standard-depth"
+    taper: str = "standard-depth"  # one of TAPERS
 
 
 def pitch_cones(z1: ArrayLike, z2: ArrayLike, shaft_angle: ArrayLike
@@ -55,6 +59,22 @@ def pitch_cones(z1: ArrayLike, z2: ArrayLike, shaft_angle: ArrayLike
     return delta1, sigma - delta1
 
 
+def gleason_profile_shift(z1: ArrayLike, z2: ArrayLike, delta1: ArrayLike,
+                          delta2: ArrayLike) -> NDArray:
+    r"""The pinion's profile shift x_hm1 [1] of Gleason's spiral bevel proportions: the
+    wheel's mean addendum is c_ham of the working depth 2·m_mn,
+
+    .. math:: c_{ham} = 0.210 + \frac{0.290}{u_a}, \quad
+              u_a = \frac{z_2\cos δ_1}{z_1\cos δ_2}, \quad x_{hm1} = 1 - 2c_{ham}
+
+    Source: ISO 23509:2016 Annex (Gleason's mean addendum factor); its sample F.2's
+    c_ham 0.24737 is this at z 14/39.
+    """
+    ratio = (np.asarray(z2, dtype=float) * np.cos(np.asarray(delta1, dtype=float))
+             / (np.asarray(z1, dtype=float) * np.cos(np.asarray(delta2, dtype=float))))
+    return 1.0 - 2.0 * (C_HAM_BASE + C_HAM_RATIO / ratio)
+
+
 def dedendum_angles(taper: str, mean_dedenda: tuple[NDArray, NDArray],
                     cones: tuple[NDArray, NDArray], outer_module: NDArray,
                     spiral_angle: NDArray, pressure_angle: NDArray, cutter_radius: NDArray,
@@ -64,7 +84,7 @@ def dedendum_angles(taper: str, mean_dedenda: tuple[NDArray, NDArray],
 
     - standard depth, the root line through the pitch apex: θ_f = atan(h_fm/R_m);
     - uniform depth: θ_f = 0;
-    - constant slot width (face-milled, completing): the slot's width is the cutter's
+    - duplex, a constant slot width (face-milled, completing): the slot's width is the cutter's
       point width along the face, which fixes the sum
 
       .. math:: Σθ_f = \frac{π\,m_{et2}}{2R_e\tan α_n\cos β_m}
@@ -154,3 +174,66 @@ def blank(pair: BlankInputs) -> dict[str, NDArray]:
                                      + shift * np.tan(alpha))),
         })
     return out
+
+
+def _involute(angle: NDArray) -> NDArray:
+    return np.tan(angle) - angle
+
+
+def tooth_limits(out: dict[str, NDArray], teeth: tuple[ArrayLike, ArrayLike],
+                 spiral_angle: ArrayLike, pressure_angle: ArrayLike,
+                 rack: tuple[ArrayLike, ArrayLike], edge_radii: tuple[ArrayLike, ArrayLike]
+                 ) -> dict[str, NDArray]:
+    r"""Each member's least profile shift against undercut and its top land, in the
+    virtual spur gear of the normal section (z_vn = z/(cos δ·cos²β_vb·cos β_m),
+    sin β_vb = sin β_m·cos α_n): the tool's straight flank, reaching k_hfp·m_mn less its
+    edge's ρ_a0·(1 − sin α_n), stays out of the base circle where
+
+    .. math:: x_{hm} \ge k_{hfp} - \frac{ρ_{a0}}{m_{mn}}(1 - \sin α_n)
+              - \frac{z_{vn}}2\sin^2 α_n
+
+    and the tooth's normal thickness at the tip circle d_van = d_vn + 2h_am,
+
+    .. math:: s_{an} = d_{van}\left(\frac{s_{mn}}{d_{vn}} + \operatorname{inv}α_n
+              - \operatorname{inv}α_{an}\right), \quad \cos α_{an} = \frac{d_{vn}\cos α_n}{d_{van}}
+
+    is above zero where the tooth is not pointed. Keys ``least_profile_shift_{member}``
+    (the pinion's own bound on x_hm1; the wheel's, on −x_hm1), ``top_land_{member}``
+    and ``rack_top_land_{member}``, the unshifted tooth's (x_hm = x_sm = 0) of the basic
+    rack ``rack`` = (k_hap, k_hfp).
+
+    Source: the generating rack's undercut limit and the involute tooth's thickness
+    (ISO 21771:2007, 5.4; ISO 23509:2016, the undercut check of its Annex).
+    """
+    module = out["mean_normal_module"]
+    beta = np.asarray(spiral_angle, dtype=float)
+    alpha = np.asarray(pressure_angle, dtype=float)
+    base_helix = np.arcsin(np.sin(beta) * np.cos(alpha))
+    addendum_factor, dedendum_factor = (np.asarray(v, dtype=float) for v in rack)
+    limits: dict[str, NDArray] = {}
+    for member, z, edge in (("pinion", teeth[0], edge_radii[0]),
+                            ("gear", teeth[1], edge_radii[1])):
+        normal_teeth = np.asarray(z, dtype=float) / (
+            np.cos(out[f"pitch_angle_{member}"]) * np.cos(base_helix) ** 2 * np.cos(beta))
+        radius = (EDGE_RADIUS_SHARE * module if edge is None
+                  else np.asarray(edge, dtype=float))
+        limits[f"least_profile_shift_{member}"] = (
+            dedendum_factor - radius / module * (1.0 - np.sin(alpha))
+            - 0.5 * normal_teeth * np.sin(alpha) ** 2)
+        pitch = normal_teeth * module
+        limits[f"top_land_{member}"] = _top_land(
+            pitch, out[f"mean_addendum_{member}"],
+            out[f"mean_normal_circular_thickness_{member}"], alpha)
+        limits[f"rack_top_land_{member}"] = _top_land(
+            pitch, addendum_factor * module, 0.5 * np.pi * module, alpha)
+    return limits
+
+
+def _top_land(pitch: NDArray, addendum: ArrayLike, thickness: ArrayLike, alpha: NDArray
+              ) -> NDArray:
+    """s_an at the tip circle of a spur gear of pitch diameter d, its addendum and its
+    thickness s at d, pressure angle α (see :func:`tooth_limits`) [m]."""
+    tip = pitch + 2.0 * np.asarray(addendum, dtype=float)
+    at_tip = np.arccos(np.clip(pitch * np.cos(alpha) / tip, -1.0, 1.0))
+    return tip * (np.asarray(thickness, dtype=float) / pitch + _involute(alpha)
+                  - _involute(at_tip))

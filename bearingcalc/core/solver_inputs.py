@@ -194,7 +194,20 @@ class _BevelPairInputs(TypedDict):
     axes: str                            # "fixed" or "epicyclic"
 
 
-class BevelGearsInputs(_BevelPairInputs, CycleInputs):
+class _BlankInputs(TypedDict, total=False):
+    """A spiral or Zerol pair's ISO 23509 blank (absent for a straight pair)."""
+
+    profile_shift: MaybeNumbers          # x_hm1, None: Gleason's [1]
+    thickness_modification_pinion: MaybeNumbers  # x_sm1 [1]
+    thickness_modification_gear: MaybeNumbers    # x_sm2 [1]
+    addendum_factor: MaybeNumbers        # k_hap [1]
+    dedendum_factor: MaybeNumbers        # k_hfp [1]
+    tool_edge_radius_pinion: MaybeNumbers  # ρ_a01, None: 0.2·m_mn [m]
+    tool_edge_radius_gear: MaybeNumbers    # ρ_a02 [m]
+    taper: str                           # standard-depth, uniform-depth or duplex
+
+
+class BevelGearsInputs(_BevelPairInputs, _BlankInputs, CycleInputs):
     """:func:`bearingcalc.core.bevel_gears.evaluate`."""
 
 
@@ -223,7 +236,7 @@ class MountedBearingInputs(_MountedBearingInputs, _BearingOwnInputs, _RollerInpu
     bearing inputs without the loads and speeds the drive finds."""
 
 
-class _BevelDriveInputs(_BevelPairInputs):
+class _BevelDriveInputs(_BevelPairInputs, _BlankInputs):
     input_speed: Numbers                 # the pinion's [rad/s]
     min_rating_life: MaybeNumbers        # [s]
     min_static_safety: Numbers           # [1]

@@ -11,6 +11,17 @@ from pydantic import Field
 
 from bearingcalc.errors import SpecFieldError
 from bearingcalc.models.base import Spec, SpecModel
+from bearingcalc.models.bevel_blank import (
+    BLANK_FIELDS,
+    AddendumFactor,
+    BlankRules,
+    CutterRadius,
+    DedendumFactor,
+    EdgeRadius,
+    ProfileShift,
+    Taper,
+    Thickness,
+)
 from bearingcalc.models.bevel_pair_rules import PairRules
 from bearingcalc.models.bevel_rating import BevelRating, rating_inputs
 from bearingcalc.models.duty import DutyCycleRules, bin_model
@@ -43,7 +54,7 @@ class BevelGearsLimits(SpecModel):
     min_contact_safety: Ratio = Field(1.0, description="smallest S_H")
 
 
-class BevelPair(PairRules, Spec):
+class BevelPair(BlankRules, PairRules, Spec):
     """The fields of a bevel pair, its sizing and its rating, shared by the kinds that
     hold one (``bevel-gears``, ``bevel-drive``)."""
 
@@ -64,6 +75,14 @@ class BevelPair(PairRules, Spec):
     rotation: Literal["clockwise", "counterclockwise"] | None = Field(
         None, description="the pinion's, seen from its back (large end) toward the apex")
     rating: BevelRating | None = None
+    # a spiral or Zerol pair's blank (ISO 23509): bevel_blank.BLANK_FIELDS
+    profile_shift: ProfileShift = None
+    thickness_modification: Thickness = None
+    addendum_factor: AddendumFactor = 1.0
+    dedendum_factor: DedendumFactor = 1.25
+    tool_edge_radius: EdgeRadius = None
+    cutter_radius: CutterRadius = None
+    taper: Taper = None
 
     @property
     def thrust_sign(self) -> float:
@@ -75,7 +94,7 @@ class BevelPair(PairRules, Spec):
     TOOTH_GEOMETRY: ClassVar[tuple[str, ...]] = (
         "gear_a.teeth", "gear_b.teeth", "gear_a.pitch_radius", "gear_b.pitch_radius",
         "gear_a.pitch_angle", "gear_b.pitch_angle", "module", "pressure_angle",
-        "face_width", "shaft_angle", "spiral_angle")
+        "face_width", "shaft_angle", "spiral_angle", *BLANK_FIELDS)
 
     def study_notes(self, varied: Collection[str]) -> list[str]:
         """J and I are typed for the spec's own tooth geometry: a study that varies that
@@ -114,9 +133,10 @@ class BevelPair(PairRules, Spec):
             "torque": self.torque,
             "power": self.power,
             "spiral_angle": self.spiral_angle,
-            "cutter_radius": rating["cutter_radius"],
+            "cutter_radius": self.face_cutter(),
             "thrust_sign": None if self.spiral_angle is None else self.thrust_sign,
             **{key: value for key, value in rating.items() if key != "cutter_radius"},
+            **self.blank_inputs(),
             "max_face_width_ratio": limits.max_face_width_ratio,
             "min_bending_safety": limits.min_bending_safety,
             "min_contact_safety": limits.min_contact_safety,

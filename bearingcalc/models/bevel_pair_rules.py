@@ -26,6 +26,7 @@ class PairRules:
         hand: str | None
         rotation: str | None
         rating: Any
+        face_cutter: Any
 
     @rule
     def _spiral_given(self) -> SpecFieldError | None:
@@ -52,7 +53,7 @@ class PairRules:
                 return SpecFieldError(field, f"a spiral bevel pair's forces need the "
                                       f"pinion's {field}, like {field}: {example}",
                                       at="spiral_angle")
-        if self.rating is not None and self.rating.cutter_radius is None and (
+        if self.rating is not None and self.face_cutter() is None and (
                 self.spiral_angle > 0):
             return SpecFieldError("rating.cutter_radius", "a spiral pair's rating needs the "
                                   "face cutter's radius for AGMA 2003's lengthwise curvature "
