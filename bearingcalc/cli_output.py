@@ -199,13 +199,22 @@ class _CtrlC:
     pressed = False
 
     @classmethod
-    def install(cls) -> None:
-        """Take Ctrl-C over for this command's run (a run in a thread of another
-        program's, or under its own handler, keeps that program's)."""
+    def install(cls) -> bool:
+        """Take Ctrl-C over for this command's run, where Python's own handler has it
+        (a run in a thread of another program's, or under its handler, keeps that
+        program's); whether it did."""
+        if threading.current_thread() is not threading.main_thread() or (
+                signal.getsignal(signal.SIGINT) is not signal.default_int_handler):
+            return False
         cls.pressed = False
-        if threading.current_thread() is threading.main_thread() and (
-                signal.getsignal(signal.SIGINT) is signal.default_int_handler):
-            signal.signal(signal.SIGINT, cls._handle)
+        signal.signal(signal.SIGINT, cls._handle)
+        return True
+
+    @classmethod
+    def uninstall(cls) -> None:
+        """Give Ctrl-C back to Python's own handler, forgetting that it came."""
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+        cls.pressed = False
 
     @classmethod
     def _handle(cls, signum: int, frame: Any) -> None:
@@ -213,11 +222,11 @@ class _CtrlC:
         signal.default_int_handler(signum, frame)
 
 
-def _interrupted(exc: BaseException) -> bool:
+def _interrupted(exc: BaseException, watched: bool = False) -> bool:
     """Whether Ctrl-C caused ``exc``: a KeyboardInterrupt, an error raised while one was
-    handled (a library imported during Ctrl-C may turn it into an ImportError), or any
-    error after Ctrl-C was pressed."""
-    if _CtrlC.pressed:
+    handled (a library imported during Ctrl-C may turn it into an ImportError), or, where
+    this run ``watched`` Ctrl-C, any error after it was pressed."""
+    if watched and _CtrlC.pressed:
         return True
     seen: set[int] = set()
     current: BaseException | None = exc
@@ -240,7 +249,7 @@ class errors_as_exit:
         self._reads = reads.tracking()
 
     def __enter__(self) -> None:
-        _CtrlC.install()
+        self._took_ctrl_c = _CtrlC.install()
         self._reads.__enter__()
         if self.debug:  # also the errors that specs' runs catch and go on after
             from bearingcalc.evaluation import show_tracebacks
@@ -254,9 +263,12 @@ class errors_as_exit:
             from bearingcalc.evaluation import show_tracebacks
 
             show_tracebacks(False)
+        interrupted = exc is not None and _interrupted(exc, self._took_ctrl_c)
+        if self._took_ctrl_c:
+            _CtrlC.uninstall()
         if exc is None or isinstance(exc, (typer.Exit, typer.Abort, SystemExit)):
             return False
-        if _interrupted(exc):
+        if interrupted:
             print("interrupted", file=sys.stderr)
             raise typer.Exit(EXIT_INTERRUPTED)
         if isinstance(exc, BrokenPipeError):

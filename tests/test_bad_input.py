@@ -541,10 +541,14 @@ def test_an_error_after_ctrl_c_is_the_interruption():
     from bearingcalc.cli_output import _CtrlC, errors_as_exit
 
     with pytest.raises(typer.Exit) as ended, errors_as_exit(debug=False):
+        assert signal.getsignal(signal.SIGINT) == _CtrlC._handle
         with contextlib.suppress(KeyboardInterrupt):  # swallowed by the module's import
-            _CtrlC._handle(signal.SIGINT, None)
+            signal.raise_signal(signal.SIGINT)
         raise ImportError("numpy.core.multiarray failed to import")
     assert ended.value.exit_code == 130
+    # the run gives Ctrl-C back, and forgets it
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    assert not _CtrlC.pressed
     with pytest.raises(typer.Exit) as ended, errors_as_exit(debug=False):
         raise ImportError("a genuine internal error, with no Ctrl-C before it")
     assert ended.value.exit_code == 2

@@ -164,6 +164,8 @@ def test_a_straight_pair_has_no_face_contact():
 # --- through the command line: a spiral or Zerol pair's blank -------------------------
 
 SPIRAL = (ROOT / "specs" / "bevel-gears-spiral.yaml").read_text(encoding="utf-8")
+#: The same pair cut duplex, as the standard's sample is.
+DUPLEX = SPIRAL.replace("rating:", "taper: duplex\nrating:")
 
 
 def solved(cli, spec_file, text: str) -> dict:
@@ -174,9 +176,9 @@ def solved(cli, spec_file, text: str) -> dict:
 
 def test_the_annex_e_pair_is_the_iso_sample_through_solve(cli, spec_file):
     """specs/bevel-gears-spiral.yaml is the same pair (m 25.4/5.6 mm: d_e2 176.893 mm, a
-    4.5 in cutter, so a duplex taper, Gleason's profile shift): its blank prints as the
+    4.5 in cutter, Gleason's profile shift): cut duplex, its blank prints as the
     standard's sample does."""
-    found = solved(cli, spec_file, SPIRAL)
+    found = solved(cli, spec_file, DUPLEX)
     for key, printed in PRINTED.items():
         if key in found:
             assert round(in_print_units(key, found[key]) * (1e3 if "angle" not in key
@@ -244,3 +246,27 @@ def test_the_blanks_fields_refused_in_one_line(cli, spec_file, text, field):
     lines = run.err.strip().splitlines()
     assert run.code == 2 and len(lines) == 1, run.err
     assert f": {field}" in lines[0], lines
+
+
+def test_a_spiral_pair_given_by_its_pitch_angles_takes_them(cli, spec_file):
+    """Pitch angles in place of the shaft angle: the blank is built on them."""
+    delta1 = math.degrees(math.atan(14 / 39))
+    text = SPIRAL.replace("gear_a: {teeth: 14}", f"gear_a: {{teeth: 14, pitch_angle: "
+                          f"{delta1!r} deg}}").replace("gear_b: {teeth: 39}", f"gear_b: "
+                          f"{{teeth: 39, pitch_angle: {90 - delta1!r} deg}}").replace(
+        "shaft_angle: 90 deg\n", "")
+    found, given = solved(cli, spec_file, SPIRAL), solved(cli, spec_file, text)
+    for key in ("face_angle_pinion", "outer_tip_diameter_gear", "contact_ratio"):
+        assert given[key] == pytest.approx(found[key], rel=1e-12), key
+
+
+def test_the_spiral_pairs_contact_ratio_is_the_reports(cli, spec_file):
+    """ε_vα of the virtual cylindrical pair, ISO/TR 10300-30 sample 1: 1.165."""
+    assert round(solved(cli, spec_file, SPIRAL)["contact_ratio"], 3) == 1.165
+
+
+def test_a_duplex_taper_with_too_small_a_cutter_is_one_line(cli, spec_file):
+    text = DUPLEX.replace("cutter_radius: 4.5 in", "cutter_radius: 40 mm")
+    run = cli("solve", spec_file(text))
+    lines = run.err.strip().splitlines()
+    assert run.code == 2 and len(lines) == 1 and ": cutter_radius:" in lines[0], run.err

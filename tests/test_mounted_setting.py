@@ -197,3 +197,29 @@ def test_the_example_spec_of_a_pinion_pair_as_mounted(cli):
     found = solve_json(cli, path)[0]["results"]
     assert found["pinion_operating_end_play"] < 60e-6
     assert found["pinion_end_play_reduction_fit"] > 0
+
+
+def test_a_sweep_of_one_bearings_temperature_moves_the_pairs_end_play(cli, spec_file):
+    """One bearing's ring warmer, the other's as written: the shaft's mean temperature
+    follows, and the end play falls as the cone grows."""
+    run = cli("sweep", spec_file(drive()), "--vary",
+              "pinion_bearings.1.mounting.inner_ring_temperature=20degC:120degC:3",
+              "-f", "json")
+    assert run.code in (0, 1), run.err
+    rows = [json.loads(line) for line in run.out.splitlines()]
+    end_play = [row["results"]["pinion_operating_end_play"] for row in rows]
+    assert len(end_play) == 3 and end_play[0] > end_play[1] > end_play[2]
+
+
+@pytest.mark.parametrize("text,field", [
+    (pair("back-to-back", BENCH_FITS) + "limits: {min_operating_clearance: 0 µm}\n",
+     "limits.min_operating_clearance"),
+    (pair("face-to-face", BENCH_FITS, spacing="pair_spacing: 1 mm"), "pair_spacing"),
+    (drive().replace("position: 150 mm", "position: 82 mm"), "pinion_bearings.2.position"),
+])
+def test_a_limit_or_a_spacing_a_pair_cannot_take_is_one_line(cli, spec_file, text, field):
+    """A pair has no radial clearance to judge; two bearings closer than side by side
+    overlap (face-to-face B − 2c, here 6 mm; a drive's back-to-back pair 17.25 mm plus
+    2c between its pressure centres)."""
+    lines = refused_lines(cli, spec_file, text)
+    assert len(lines) == 1 and f": {field}:" in lines[0], lines

@@ -20,7 +20,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from bearingcalc.core import bevel_rating, bevel_sizing, gear_materials, iso23509
+from bearingcalc.core import (
+    bevel_rating,
+    bevel_sizing,
+    gear_materials,
+    iso10300_virtual,
+    iso23509,
+)
 from bearingcalc.core.bevel_gears_results import (
     APEX_MISMATCH_MARGIN,
     BLANK_RESULTS,
@@ -241,12 +247,12 @@ def size_pair(inputs: Mapping[str, ArrayLike | None], kinematics: Mapping[str, N
     checks: list[tuple[int, NDArray]] = [(7, ~(face < 0.5 * out["outer_cone_distance"]))]
     out["face_width_margin"] = np.asarray(inputs["max_face_width_ratio"]) - out["face_width_ratio"]
     if inputs.get("spiral_angle") is not None:
-        out, blank_checks = _spiral_blank(inputs, out, phi)
+        out, blank_checks = _spiral_blank(inputs, out, phi, (alpha, beta))
         checks += blank_checks
-    # Not a result: the undercut warning's flag, which evaluate() takes out. A spiral
-    # tooth is generated in its normal section, so its normal virtual teeth count.
-    virtual = out.get("gear_a_normal_virtual_teeth", out["gear_a_virtual_teeth"])
-    out["undercut"] = virtual < 2.0 / np.sin(phi) ** 2
+    # Not a result: the undercut warning's flag, which evaluate() takes out: a straight
+    # pair's (a spiral or Zerol pair's teeth are checked against its profile shift)
+    out["undercut"] = (out["gear_a_virtual_teeth"] < 2.0 / np.sin(phi) ** 2) & (
+        inputs.get("spiral_angle") is None)
     speed = np.abs(kinematics["gear_a_speed_relative_to_arm"])
     given, power = inputs.get("torque"), inputs.get("power")
     if given is None and power is None:
@@ -297,10 +303,13 @@ GLEASON_BLANK = tuple(f"gear_{gear}_{key}" for key in (
 UNDERCUT = {"pinion": 10, "gear": 12}
 POINTED = {"pinion": 11, "gear": 13}
 POINTED_BY_RACK = {"pinion": 14, "gear": 15}
+#: The status code of a duplex taper whose cutter is too small for the spiral.
+DUPLEX_CUTTER = 16
 
 
 def _spiral_blank(inputs: Mapping[str, ArrayLike | None], sized: Mapping[str, NDArray],
-                  phi: NDArray) -> tuple[dict[str, NDArray], list[tuple[int, NDArray]]]:
+                  phi: NDArray, pitch_angles: tuple[NDArray, NDArray]
+                  ) -> tuple[dict[str, NDArray], list[tuple[int, NDArray]]]:
     """A spiral or Zerol pair's sizing: the straight pair's ``sized`` with its normal
     section, and its blank by ISO 23509 in place of the Gleason proportions
     (:data:`GLEASON_BLANK`); and the checks of each member's teeth."""
@@ -308,27 +317,31 @@ def _spiral_blank(inputs: Mapping[str, ArrayLike | None], sized: Mapping[str, ND
     out.update(bevel_sizing.spiral_normal_section(
         out["mean_module"], out["gear_a_virtual_teeth"], out["gear_b_virtual_teeth"],
         inputs["spiral_angle"], phi))  # type: ignore[arg-type]
-    blank, checks = _iso23509_blank(inputs, out, phi)
+    blank, checks = _iso23509_blank(inputs, out, phi, pitch_angles)
     return {**out, **blank}, checks
 
 
 def _iso23509_blank(inputs: Mapping[str, ArrayLike | None], out: Mapping[str, NDArray],
-                    phi: NDArray) -> tuple[dict[str, NDArray], list[tuple[int, NDArray]]]:
-    """A spiral or Zerol pair's blank by ISO 23509 from the sizing's ``out``, with its
-    contact ratio from the blank's addenda, and the checks of each member's teeth:
+                    phi: NDArray, pitch_angles: tuple[NDArray, NDArray]
+                    ) -> tuple[dict[str, NDArray], list[tuple[int, NDArray]]]:
+    """A spiral or Zerol pair's blank by ISO 23509 from the sizing's ``out`` on the
+    pair's ``pitch_angles``, with the virtual cylindrical pair's transverse contact
+    ratio, and the checks of the duplex taper's cutter and of each member's teeth:
     undercut, pointed (by the shift, or by the basic rack itself)."""
     z1, z2 = inputs["gear_a_teeth"], inputs["gear_b_teeth"]
-    delta1, delta2 = iso23509.pitch_cones(z1, z2, inputs["shaft_angle"])  # type: ignore[arg-type]
+    delta1, delta2 = pitch_angles
     shift = inputs.get("profile_shift")
     if shift is None:
-        shift = iso23509.gleason_profile_shift(z1, z2, delta1, delta2)  # type: ignore[arg-type]
+        shift = iso23509.gleason_profile_shift(z1, z2, delta1, delta2,  # type: ignore[arg-type]
+                                               inputs["addendum_factor"])  # type: ignore[arg-type]
     cutter = inputs.get("cutter_radius")
+    cutter = np.asarray(np.nan if cutter is None else cutter, dtype=float)
     blank = iso23509.blank(iso23509.BlankInputs(
-        z1, z2, inputs["shaft_angle"], out["gear_b_outer_pitch_diameter"],  # type: ignore[arg-type]
-        inputs["face_width"], inputs["spiral_angle"], phi,  # type: ignore[arg-type]
-        np.nan if cutter is None else cutter, shift,
+        z1, z2, delta1 + delta2, out["gear_b_outer_pitch_diameter"],  # type: ignore[arg-type]
+        inputs["face_width"], inputs["spiral_angle"], phi, cutter, shift,  # type: ignore[arg-type]
         inputs["thickness_modification_pinion"], inputs["thickness_modification_gear"],  # type: ignore[arg-type]
-        inputs["addendum_factor"], inputs["dedendum_factor"], str(inputs["taper"])))  # type: ignore[arg-type]
+        inputs["addendum_factor"], inputs["dedendum_factor"], str(inputs["taper"]),  # type: ignore[arg-type]
+        pitch_angles))
     limits = iso23509.tooth_limits(blank, (z1, z2), inputs["spiral_angle"], phi,  # type: ignore[arg-type]
                                    (inputs["addendum_factor"], inputs["dedendum_factor"]),  # type: ignore[arg-type]
                                    (inputs.get("tool_edge_radius_pinion"),
@@ -336,12 +349,17 @@ def _iso23509_blank(inputs: Mapping[str, ArrayLike | None], out: Mapping[str, ND
     found = {key: value for key, value in {**blank, **limits}.items()
              if key in BLANK_RESULTS}
     found["profile_shift"] = np.asarray(shift, dtype=float)
-    found["contact_ratio"] = bevel_sizing.virtual_contact_ratio(
-        out["gear_a_mean_pitch_diameter"] / (2.0 * np.cos(delta1)),
-        out["gear_b_mean_pitch_diameter"] / (2.0 * np.cos(delta2)),
-        blank["mean_addendum_pinion"], blank["mean_addendum_gear"], out["mean_module"], phi)
+    found["contact_ratio"] = iso10300_virtual.virtual_gears(iso10300_virtual.MeanSection(
+        z1, z2, (blank["mean_pitch_diameter_pinion"], blank["mean_pitch_diameter_gear"]),  # type: ignore[arg-type]
+        pitch_angles, (blank["mean_addendum_pinion"], blank["mean_addendum_gear"]),
+        (blank["mean_dedendum_pinion"], blank["mean_dedendum_gear"]),
+        blank["mean_normal_module"], inputs["spiral_angle"], phi,  # type: ignore[arg-type]
+        inputs["face_width"]))["eps_v_alpha"]  # type: ignore[arg-type]
     shifts = {"pinion": np.asarray(shift, dtype=float), "gear": -np.asarray(shift, dtype=float)}
     checks = []
+    if inputs["taper"] == "duplex":  # the slot widens toward the toe: no duplex taper
+        checks.append((DUPLEX_CUTTER, ~(cutter > blank["mean_cone_distance"] * np.sin(
+            np.asarray(inputs["spiral_angle"], dtype=float)))))
     for member in ("pinion", "gear"):
         checks.append((UNDERCUT[member], shifts[member]
                        < limits[f"least_profile_shift_{member}"] - 1e-12))

@@ -53,7 +53,9 @@ RESULTS: dict[str, tuple[str, str]] = {
     "gear_b_outside_diameter": ("m", "da2 = de2 + 2·ha2·cosδ2"),
     "gear_a_crown_to_apex": ("m", "pitch apex to crown X1 = Re·cosδ1 − ha1·sinδ1"),
     "gear_b_crown_to_apex": ("m", "pitch apex to crown X2 = Re·cosδ2 − ha2·sinδ2"),
-    "contact_ratio": ("1", "εα of the virtual spur pair at the mean section"),
+    "contact_ratio": ("1", "εα of the virtual spur pair at the mean section (a spiral "
+                           "or Zerol pair's: ε_vα of ISO 10300-1's virtual cylindrical "
+                           "pair)"),
     **{f"{key}_{member}": (unit, f"the {member}'s {meaning}")
        for key, (unit, meaning) in {
            "pitch_angle": ("rad", "pitch angle δ"),
@@ -77,7 +79,7 @@ RESULTS: dict[str, tuple[str, str]] = {
            "top_land": ("m", "normal top land s_an at the mean point's tip circle"),
        }.items() for member in ("pinion", "gear")},
     "profile_shift": ("1", "x_hm1, the pinion's profile shift (given, or Gleason's "
-                           "1 − 2(0.210 + 0.290/u_a))"),
+                           "k_hap(1 − 2(0.210 + 0.290/u_a)))"),
     "tangential_force": ("N", "Wt = 2T/dm1 at the mean pitch point"),
     "gear_a_radial_force": ("N", "Wr1, toward gear A's axis (straight: Wt·tanφ·cosδ1)"),
     "gear_a_axial_force": ("N", "Wa1, away from the apex; < 0 toward it (straight: "
@@ -138,9 +140,9 @@ GROUPS: dict[str, tuple[str, ...]] = {
 
 #: Conditions reported per design as warnings: flag key -> message.
 WARNINGS: dict[str, str] = {
-    "undercut": "the pinion's virtual teeth zv1 (a spiral pinion's normal zvn1) are "
-                "below 2/sin²φ (17.1 at 20°): a generated pinion undercuts unless its "
-                "addendum is lengthened; check the Gleason minimum for this ratio",
+    "undercut": "the straight pinion's virtual teeth zv1 are below 2/sin²φ (17.1 at "
+                "20°): a generated pinion undercuts unless its addendum is lengthened; "
+                "check the Gleason minimum for this ratio",
 }
 
 STATUS_REASONS: dict[int, tuple[str, str]] = {
@@ -173,6 +175,10 @@ STATUS_REASONS: dict[int, tuple[str, str]] = {
         "pressure_angle and addendum_factor leave no top land at its tip circle in the "
         "normal section: give a smaller pressure_angle or addendum_factor"))
        for member, code in (("pinion", 14), ("gear", 15))},
+    16: ("cutter_radius", DerivedTest(
+        "a duplex taper needs a face cutter larger than R_m·sinβ_m (the spiral's "
+        "curvature at the mean point): give a larger cutter_radius, or taper: "
+        "standard-depth")),
     9: ("rating.quality_number", "the pitch-line speed is above v_t,max = [A + (Q_v − 3)]²/200 "
         "m/s, the most the AGMA dynamic factor covers at this quality number (28.7 m/s at "
         "Q_v 8; Budynas & Nisbett eq. 15-6): check the module and speed, or give a higher "

@@ -43,6 +43,8 @@ class BlankInputs(NamedTuple):
     addendum_factor: ArrayLike = 1.0       # k_hap
     dedendum_factor: ArrayLike = 1.25      # k_hfp
     taper: str = "standard-depth"  # one of TAPERS
+    #: δ1, δ2 where the pair gives them (else from the teeth and the shaft angle)
+    pitch_angles: tuple[ArrayLike, ArrayLike] | None = None
 
 
 def pitch_cones(z1: ArrayLike, z2: ArrayLike, shaft_angle: ArrayLike
@@ -60,19 +62,21 @@ def pitch_cones(z1: ArrayLike, z2: ArrayLike, shaft_angle: ArrayLike
 
 
 def gleason_profile_shift(z1: ArrayLike, z2: ArrayLike, delta1: ArrayLike,
-                          delta2: ArrayLike) -> NDArray:
+                          delta2: ArrayLike, addendum_factor: ArrayLike = 1.0) -> NDArray:
     r"""The pinion's profile shift x_hm1 [1] of Gleason's spiral bevel proportions: the
-    wheel's mean addendum is c_ham of the working depth 2·m_mn,
+    wheel's mean addendum is c_ham of the working depth 2·k_hap·m_mn,
 
     .. math:: c_{ham} = 0.210 + \frac{0.290}{u_a}, \quad
-              u_a = \frac{z_2\cos δ_1}{z_1\cos δ_2}, \quad x_{hm1} = 1 - 2c_{ham}
+              u_a = \frac{z_2\cos δ_1}{z_1\cos δ_2}, \quad
+              x_{hm1} = k_{hap}(1 - 2c_{ham})
 
     Source: ISO 23509:2016 Annex (Gleason's mean addendum factor); its sample F.2's
     c_ham 0.24737 is this at z 14/39.
     """
     ratio = (np.asarray(z2, dtype=float) * np.cos(np.asarray(delta1, dtype=float))
              / (np.asarray(z1, dtype=float) * np.cos(np.asarray(delta2, dtype=float))))
-    return 1.0 - 2.0 * (C_HAM_BASE + C_HAM_RATIO / ratio)
+    return np.asarray(addendum_factor, dtype=float) * (
+        1.0 - 2.0 * (C_HAM_BASE + C_HAM_RATIO / ratio))
 
 
 def dedendum_angles(taper: str, mean_dedenda: tuple[NDArray, NDArray],
@@ -130,7 +134,8 @@ def blank(pair: BlankInputs) -> dict[str, NDArray]:
     Source: ISO 23509:2016, clause 6 and Annex F (sample F.2).
     """
     z1, z2 = (np.asarray(v, dtype=float) for v in (pair.pinion_teeth, pair.gear_teeth))
-    delta1, delta2 = pitch_cones(z1, z2, pair.shaft_angle)
+    delta1, delta2 = (pitch_cones(z1, z2, pair.shaft_angle) if pair.pitch_angles is None
+                      else (np.asarray(v, dtype=float) for v in pair.pitch_angles))
     b = np.asarray(pair.face_width, dtype=float)
     beta = np.asarray(pair.spiral_angle, dtype=float)
     alpha = np.asarray(pair.pressure_angle, dtype=float)

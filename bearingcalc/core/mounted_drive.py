@@ -59,6 +59,8 @@ MOUNTED_COLUMNS = ("max_element_load", "reference_rating_life",
 #: bearing whose contact outgrows Hertz's theory.
 NO_EQUILIBRIUM = {"pinion": 24, "gear": 25}
 CRUSHED = {"pinion": 26, "gear": 27}
+#: The status codes of an adjusted pair whose bearings overlap.
+OVERLAPPING = {"pinion": 28, "gear": 29}
 STATUS_REASONS = {
     **{code: (f"{shaft}_bearings", DerivedTest(
         f"the {shaft} shaft finds no equilibrium on its bearings, or one only at a tilt of "
@@ -70,6 +72,12 @@ STATUS_REASONS = {
         f"a bearing of the {shaft} shaft is loaded beyond Hertz's theory (its most "
         "heavily loaded contact outgrows its rolling element): the gear's force is too "
         "large for it")) for shaft, code in CRUSHED.items()},
+    **{code: (f"{shaft}_bearings.2.position", DerivedTest(
+        f"the {shaft} shaft's adjusted bearings overlap: their rolling elements, c = "
+        "(Dpw/2)·tanα inside their pressure centres back-to-back and outside them "
+        "face-to-face, lie closer than half their widths summed (or not apart at all "
+        "where a width is not given); the positions are the bearings' pressure centres"))
+       for shaft, code in OVERLAPPING.items()},
 }
 
 
@@ -125,6 +133,8 @@ def mounted_shaft_bearings(inputs: Mapping[str, Any], pair: Any, shaft: str, gea
         np.min(np.stack([family.lever for family in solved.families]), axis=0))
     checks = [(NO_EQUILIBRIUM[shaft], (~found).reshape(shape)),
               (CRUSHED[shaft], crushed.reshape(shape))]
+    if solved.overlapping is not None:  # said before the equilibrium it spoils
+        checks.insert(0, (OVERLAPPING[shaft], solved.overlapping.reshape(shape)))
     return mounted, solved, checks
 
 

@@ -49,9 +49,9 @@ NO_SPACING = 33
 STATUS_REASONS = {
     NO_SPACING: ("pair_spacing", DerivedTest(
         "the pair's bearings overlap: their pressure centres and widths leave no room for "
-        "both (back-to-back, side by side, their centres lie B + 2c apart, c = "
-        "(Dpw/2)·tanα: spacers only part them further); give pair_spacing, the distance of "
-        "the pressure centres")),
+        "both (side by side, their centres lie B + 2c apart back-to-back, B − 2c "
+        "face-to-face, B in tandem, c = (Dpw/2)·tanα: spacers only part them further); "
+        "give pair_spacing, the distance of the pressure centres")),
 }
 #: How the two bearings face each other: (bearing 1's side, bearing 2's orientation).
 #: Bearing 1 carries the thrust that pushes the shaft toward +x.
@@ -122,7 +122,11 @@ def pair_results(inputs: Mapping[str, Any], family: BearingFamily, flat: Any,
         (inner, outer), reference, iso281, speed, shape, family.family)
     if lost:
         found.results.update(_as_mounted(inputs, lost, end_play, shape))
-        found.flags.update(chain_warnings(inputs, mounted_clearance(inputs)))
+        # each ring against creep under its own load: the more heavily loaded bearing's
+        radial = np.max(np.stack([np.hypot(c.force[:, 1], c.force[:, 2])
+                                  for c in solved.contacts]), axis=0).reshape(shape)
+        found.flags.update(chain_warnings({**inputs, "radial_load": radial},
+                                          mounted_clearance(inputs)))
     return found, {"member": _members(solved, lives, speed, shape),
                    "element": _elements(solved, shape)}
 
@@ -155,22 +159,27 @@ def _spacing(inputs: Mapping[str, Any], family: BearingFamily, flat: Any
              ) -> tuple[NDArray, NDArray]:
     """The distance of the pressure centres [m] (signed: negative where a face-to-face
     pair's lie past each other) and where two bearings side by side would overlap.
-    Given, it is ``pair_spacing`` (back-to-back, below B + 2c where the width is given:
-    overlapping); else two bearings of width B side by side: B + 2c back-to-back, B − 2c
-    face-to-face, B in tandem."""
+    Given, it is ``pair_spacing`` (closer than side by side where the width is given:
+    overlapping); else two bearings of width B side by side (:func:`_side_by_side`)."""
     given, width = inputs.get("pair_spacing"), inputs.get("width")
     twice = 2.0 * family.pressure_offset
     arrangement = str(inputs["arrangement"])
     if given is not None:
         spacing = flat(given)
-        if arrangement != "back-to-back" or width is None:
+        if width is None:
             return spacing, np.zeros(spacing.shape, dtype=bool)
-        # back-to-back, two bearings side by side are as close as their centres come
-        return spacing, spacing < (flat(width) + twice) * (1.0 - 1e-9)
+        # two bearings side by side are as close as their centres come
+        closest = _side_by_side(flat(width), twice, arrangement)
+        return spacing, spacing < closest - 1e-9 * np.abs(closest)
     width = flat(width)
-    spacing = width + {"back-to-back": twice, "face-to-face": -twice,
-                       "tandem": 0.0 * twice}[arrangement]
-    return spacing, ~(width > 0.0)
+    return _side_by_side(width, twice, arrangement), ~(width > 0.0)
+
+
+def _side_by_side(width: NDArray, twice: NDArray, arrangement: str) -> NDArray:
+    """The pressure centres' distance of two bearings of width B side by side: B + 2c
+    back-to-back, B − 2c face-to-face, B in tandem."""
+    return width + {"back-to-back": twice, "face-to-face": -twice,
+                    "tandem": 0.0 * twice}[arrangement]
 
 
 def _setting(inputs: Mapping[str, Any], family: BearingFamily, flat: Any, arrangement: str,

@@ -64,10 +64,12 @@ def clearance_losses(inputs: Mapping[str, Any], links: Mapping[str, Any], stage:
     (:func:`~bearingcalc.core.mounted_clearance.chain_at`) with no initial clearance,
     once at the assembly's temperature and once at the operating ones,
 
-    .. math:: ΔP_{d,fit} = ΔF_{fit} + ΔE_{fit}\big|_{T_0}, \qquad
-              ΔP_{d,T} = \left(ΔF_{fit} + ΔE_{fit} + ΔP_{d,T}\right)\big|_{T} - ΔP_{d,fit}
+    .. math:: ΔP_{d,fit} = \left(ΔF_{fit} + ΔE_{fit}\right)\big|_{T_0}, \qquad
+              ΔP_{d,T} = \left(ΔF_{fit} + ΔE_{fit} + ΔP_{d,T}\right)\big|_{T}
+              - \left(ΔF_{fit} + ΔE_{fit}\right)\big|_{T_0}
 
-    a pair set in place has its fits' share in its setting already (0 here).
+    the temperatures' share whatever the stage; the fits' share only for a pair set on
+    the bench (one set in place has it in its setting already: 0 here).
     """
     mounting, rings = inputs["mounting"], raceways(inputs)
     every = {"initial_clearance": 0.0, **links}
@@ -103,8 +105,9 @@ def axial_growth(bearings: Sequence[Mapping[str, Any]], arrangement: str,
     whose cups' apexes meet keeps its setting as the shaft warms.
     """
     def mean(name: str) -> NDArray:
-        return np.mean([np.asarray(b["mounting"][name], dtype=float) for b in bearings],
-                       axis=0)
+        # each bearing's value may be a study's array or a plain number
+        values = [np.asarray(b["mounting"][name], dtype=float) for b in bearings]
+        return sum(values) / len(values)
 
     assembly = mean("assembly_temperature")
     growth = (mean("shaft_expansion") * (mean("shaft_temperature") - assembly)

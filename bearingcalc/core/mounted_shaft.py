@@ -48,6 +48,9 @@ class MountedShaft(NamedTuple):
     #: :func:`~bearingcalc.core.mounted_setting.end_play_loss`, and ``set_end_play``);
     #: empty without them
     setting: dict[str, NDArray] | None = None
+    #: where an adjusted pair's bearings overlap (their rolling elements' spread below
+    #: half their widths summed, or not above zero)
+    overlapping: NDArray | None = None
 
 
 def gear_load(pair: Mapping[str, NDArray], gear: str, mesh: tuple[NDArray, NDArray]
@@ -133,7 +136,8 @@ def solve_mounted_shaft(bearings: list[Mapping[str, Any]], arrangement: str,
     ``preload``): loaded and at rest."""
     families = [bearing_family(bearing, flat) for bearing in bearings]
     positions = [flat(bearing["position"]) for bearing in bearings]
-    lost = _lost_to_mountings(bearings, arrangement, setting, families, positions, flat)
+    spread, overlapping = _spread(bearings, arrangement, families, positions, flat)
+    lost = _lost_to_mountings(bearings, arrangement, setting, spread, families, flat)
     on_shaft = []
     thrust = np.sign(load[:, 0]) + (load[:, 0] == 0.0)
     for i, (bearing, family) in enumerate(zip(bearings, families, strict=True)):
@@ -156,9 +160,8 @@ def solve_mounted_shaft(bearings: list[Mapping[str, Any]], arrangement: str,
     # at rest only a preload holds the shaft in one place; with play it rests at Q = 0,
     # the datum its displacements count from
     preloaded = _preloaded(setting, arrangement, flat, load.shape[0])
-    if lost:
-        preloaded = np.ones(load.shape[0], dtype=bool) if setting.get("preload") is not None \
-            else lost["set_end_play"] - lost["loss"] < 0.0
+    if lost:  # as it runs: a mounting may turn a preload into play and play into preload
+        preloaded = lost["set_end_play"] - lost["loss"] < 0.0
     rest = np.zeros_like(load)
     preload = np.zeros(load.shape[0])
     if preloaded.any():
@@ -168,7 +171,7 @@ def solve_mounted_shaft(bearings: list[Mapping[str, Any]], arrangement: str,
             [np.abs(c.force[:, 0]) for c in at_rest.contacts]), axis=0), 0.0)
     lives = [family.life(contacts) for family, contacts in zip(families, loaded.contacts,
                                                                strict=True)]
-    return MountedShaft(loaded, rest, families, lives, preload, lost)
+    return MountedShaft(loaded, rest, families, lives, preload, lost, overlapping)
 
 
 def _preloaded(setting: Mapping[str, Any], arrangement: str, flat: Any, size: int
@@ -181,20 +184,36 @@ def _preloaded(setting: Mapping[str, Any], arrangement: str, flat: Any, size: in
     return flat(setting["end_play"]) < 0.0
 
 
+def _spread(bearings: list[Mapping[str, Any]], arrangement: str,
+            families: list[BearingFamily], positions: list[NDArray], flat: Any
+            ) -> tuple[NDArray | None, NDArray | None]:
+    """An adjusted pair's spread between its rolling elements [m], flat over the
+    designs, and where the two bearings overlap: the elements lie c = (Dpw/2)·tan α
+    inside their pressure centres back-to-back, outside them face-to-face, and two
+    bearings side by side have their elements half their widths summed apart (more
+    than none where a width is not given). (None, None) on a locating-floating shaft."""
+    if arrangement == "locating-floating":
+        return None, None
+    spread = np.abs(positions[1] - positions[0]) + AXIAL_SIGN[arrangement] * (
+        families[0].pressure_offset + families[1].pressure_offset)
+    widths = [bearing.get("width") for bearing in bearings]
+    if any(width is None for width in widths):
+        return spread, ~(spread > 0.0)
+    closest = 0.5 * (flat(widths[0]) + flat(widths[1]))
+    return spread, spread < closest * (1.0 - 1e-9)
+
+
 def _lost_to_mountings(bearings: list[Mapping[str, Any]], arrangement: str,
-                       setting: Mapping[str, Any], families: list[BearingFamily],
-                       positions: list[NDArray], flat: Any) -> dict[str, NDArray]:
-    """What an adjusted pair's mountings take of its end play, flat over the designs,
-    with its end play as set (a preload's: each bearing's deflection under it short of
-    first contact); empty on a locating-floating shaft or without mountings."""
-    if arrangement == "locating-floating" or not all(
+                       setting: Mapping[str, Any], spread: NDArray | None,
+                       families: list[BearingFamily], flat: Any) -> dict[str, NDArray]:
+    """What an adjusted pair's mountings take of its end play over the ``spread``, flat
+    over the designs, with its end play as set (a preload's: each bearing's deflection
+    under it short of first contact); empty on a locating-floating shaft or without
+    mountings."""
+    if spread is None or not all(
             bearing.get("mounting") is not None
             and traits(str(bearing["bearing_type"])).one_way for bearing in bearings):
         return {}
-    # the rolling elements lie c = (Dpw/2)·tan α inside their pressure centres
-    # back-to-back, outside them face-to-face
-    spread = np.abs(positions[1] - positions[0]) + AXIAL_SIGN[arrangement] * (
-        families[0].pressure_offset + families[1].pressure_offset)
     lost = end_play_loss(bearings, arrangement, str(setting.get("stage") or "mounted"),
                          spread, flat)
     if setting.get("preload") is not None:

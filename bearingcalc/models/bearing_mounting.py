@@ -267,4 +267,9 @@ class ClearanceLimitRules(SpecModel):
             return SpecFieldError("limits.min_operating_clearance", "is judged on the "
                                   "operating clearance a mounting gives: give mounting (and "
                                   "method: iso-16281), or leave it out")
+        if getattr(self, "arrangement", "single") in ADJUSTED:
+            return SpecFieldError("limits.min_operating_clearance", "is judged on a single "
+                                  "bearing's radial clearance: a pair set against itself "
+                                  "runs at its operating_end_play (with its _min and _max "
+                                  "over the bands), which no limit judges; leave it out")
         return None

@@ -46,7 +46,8 @@ ProfileShift = Annotated[ranged_number(-1.0, 1.0, "x_hm1, the pinion's profile s
                                        "over m_mn at the mean point; the wheel's is −x_hm1",
                                        "0.35") | None, Field(
     description="x_hm1, the pinion's profile shift at the mean point (the wheel's is "
-    "−x_hm1); default Gleason's 1 − 2·(0.210 + 0.290/u_a), u_a = z2·cosδ1/(z1·cosδ2)")]
+    "−x_hm1); default Gleason's k_hap·(1 − 2·(0.210 + 0.290/u_a)), u_a = "
+    "z2·cosδ1/(z1·cosδ2)")]
 def _member_form(value: object) -> str:
     return BRANCH_MARK + ("members" if isinstance(value, (dict, SpecModel)) else "both")
 
@@ -74,8 +75,8 @@ CutterRadius = Annotated[PositiveLength | None, Field(
     "rating:)")]
 Taper = Annotated[Literal["standard-depth", "uniform-depth", "duplex"] | None, Field(
     description="the tooth taper: standard-depth (root lines through the pitch apex), "
-    "uniform-depth, or duplex (a face-milled cut's constant slot width, from the cutter "
-    "radius); default duplex with a cutter radius, else standard-depth")]
+    "uniform-depth, or duplex (a face-milled completing cut's constant slot width, from "
+    "the cutter radius); default standard-depth")]
 
 
 class BlankRules:
@@ -128,8 +129,7 @@ class BlankRules:
             return {}
         thickness, edge = self.thickness_modification, self.tool_edge_radius
         both = not isinstance(thickness, MemberThickness)
-        cutter = self.face_cutter()
-        taper = self.taper or ("duplex" if cutter is not None else "standard-depth")
+        taper = self.taper or "standard-depth"
         return {
             "profile_shift": self.profile_shift,
             "thickness_modification_pinion": (thickness or 0.0) if both
