@@ -535,20 +535,24 @@ def test_a_usage_error_is_one_line_like_every_other_error(args, where):
 def test_an_error_after_ctrl_c_is_the_interruption():
     """A compiled module whose import Ctrl-C cuts short raises an ImportError that keeps
     no trace of the KeyboardInterrupt (Cython's import_array): the run still ends as
-    interrupted, status 130, not as an internal error."""
+    interrupted, status 130, not as an internal error; and gives Ctrl-C back."""
     import typer
 
     from bearingcalc.cli_output import _CtrlC, errors_as_exit
 
-    with pytest.raises(typer.Exit) as ended, errors_as_exit(debug=False):
-        assert signal.getsignal(signal.SIGINT) == _CtrlC._handle
-        with contextlib.suppress(KeyboardInterrupt):  # swallowed by the module's import
-            signal.raise_signal(signal.SIGINT)
-        raise ImportError("numpy.core.multiarray failed to import")
-    assert ended.value.exit_code == 130
-    # the run gives Ctrl-C back, and forgets it
-    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
-    assert not _CtrlC.pressed
-    with pytest.raises(typer.Exit) as ended, errors_as_exit(debug=False):
-        raise ImportError("a genuine internal error, with no Ctrl-C before it")
-    assert ended.value.exit_code == 2
+    # as a terminal runs it (a background job, as CI's, starts with Ctrl-C ignored)
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        with pytest.raises(typer.Exit) as ended, errors_as_exit(debug=False):
+            assert signal.getsignal(signal.SIGINT) == _CtrlC._handle
+            with contextlib.suppress(KeyboardInterrupt):  # swallowed by the import
+                signal.raise_signal(signal.SIGINT)
+            raise ImportError("numpy.core.multiarray failed to import")
+        assert ended.value.exit_code == 130
+        assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+        assert not _CtrlC.pressed
+        with pytest.raises(typer.Exit) as ended, errors_as_exit(debug=False):
+            raise ImportError("a genuine internal error, with no Ctrl-C before it")
+        assert ended.value.exit_code == 2
+    finally:
+        signal.signal(signal.SIGINT, previous)
