@@ -270,3 +270,47 @@ def test_a_duplex_taper_with_too_small_a_cutter_is_one_line(cli, spec_file):
     run = cli("solve", spec_file(text))
     lines = run.err.strip().splitlines()
     assert run.code == 2 and len(lines) == 1 and ": cutter_radius:" in lines[0], run.err
+
+
+# --- ISO 10300's closed-form factors of the sample -------------------------------------
+
+#: ISO/TR 10300-30 sample 1, Tables A.4 to A.7: T1 300 N·m at 1200 r/min, one member
+#: cantilevered, the pattern checked under a light load, E 210 000 N/mm², ν 0.3,
+#: σ_Hlim 1500 N/mm², ν40 150 mm²/s, flanks' Rz 8 µm [N, √(N/mm²), 1].
+TR_FACTORS = {"Fmt1": 10925.3, "Fn": 14193.3, "ZM-B": 0.916, "ZE": 191.646, "ZL": 0.992,
+              "Zv": 0.974, "ZR": 0.930, "KHbeta-C": 1.650, "KF0": 1.000}
+
+
+def test_the_closed_form_factors_are_the_reports(sample, virtual):
+    from bearingcalc.core import iso10300_factors as factors
+
+    dm1 = sample["mean_pitch_diameter_pinion"] * 1e-3
+    tangential, normal = factors.nominal_forces(300.0, dm1, math.radians(20.0),
+                                                math.radians(35.0))
+    speed = math.pi * dm1 * 1200.0 / 60.0
+    film, speed_factor, roughness = factors.lubricant_film_factors(
+        1500e6, 150e-6, speed, (8e-6, 8e-6), virtual["rho_rel"] * 1e-3)
+    found = {
+        "Fmt1": tangential, "Fn": normal, "ZM-B": factors.mid_zone_factor(virtual),
+        "ZE": factors.elasticity_factor((210e9, 210e9), (0.3, 0.3)) / 1e3,
+        "ZL": film, "Zv": speed_factor, "ZR": roughness,
+        "KHbeta-C": factors.face_load_factor("one-straddle", "light-load"),
+        "KF0": factors.lengthwise_curvature_factor(114.3, sample["mean_cone_distance"],
+                                                   math.radians(35.0)),
+    }
+    for key, printed in TR_FACTORS.items():
+        digits = 1 if key.startswith("F") and key != "KF0" else 3
+        assert round(float(found[key]), digits) == printed, (key, float(found[key]))
+
+
+def test_the_mid_zone_factors_branches_meet():
+    """F1 and F2 are continuous in ε_vβ at 1 (the partial-overlap branch meets the
+    full one), so Z_M-B is."""
+    from bearingcalc.core import iso10300_factors as factors
+
+    base = {"eps_v_alpha": np.array(1.4), "dva1": np.array(60.0), "dvb1": np.array(48.0),
+            "zv1": np.array(16.0), "dva2": np.array(200.0), "dvb2": np.array(180.0),
+            "zv2": np.array(60.0), "alpha_vet": np.array(math.radians(22.0))}
+    below = factors.mid_zone_factor({**base, "eps_v_beta": np.array(1.0 - 1e-12)})
+    at = factors.mid_zone_factor({**base, "eps_v_beta": np.array(1.0)})
+    assert float(below) == pytest.approx(float(at), rel=1e-9)
