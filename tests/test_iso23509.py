@@ -314,3 +314,36 @@ def test_the_mid_zone_factors_branches_meet():
     below = factors.mid_zone_factor({**base, "eps_v_beta": np.array(1.0 - 1e-12)})
     at = factors.mid_zone_factor({**base, "eps_v_beta": np.array(1.0)})
     assert float(below) == pytest.approx(float(at), rel=1e-9)
+
+
+def test_the_load_factors_by_method_b_are_the_reports(sample, virtual):
+    """K_v 1.020 (subcritical, the masses of the virtual gears referred to their base
+    circles) and K_Hα 1.161: ISO/TR 10300-30 sample 1, K_A 1.1, the wheel's f_pt 26 µm,
+    ρ 7860 kg/m³."""
+    from bearingcalc.core import iso10300_factors as factors
+
+    si = {key: (value * 1e-3 if key in ("dv1", "dv2", "bv_eff", "bv") else value)
+          for key, value in virtual.items()}
+    force = 2.0 * 300.0 / (sample["mean_pitch_diameter_pinion"] * 1e-3)
+    kv, ratio = factors.dynamic_factor(si, 14, 1200 * math.pi / 30, force, 1.1, 26e-6,
+                                       7860.0)
+    assert ratio < factors.SUBCRITICAL and round(float(kv), 3) == 1.020
+    determinant = force * 1.1 * kv * 1.65
+    k_h_alpha = factors.transverse_load_factor(si, determinant, force, 1.1, 26e-6)
+    assert round(float(k_h_alpha), 3) == 1.161
+
+
+def test_the_dynamic_factor_meets_itself_across_its_sectors(sample, virtual):
+    """Between the main resonance and the supercritical sector K_v runs linearly, so it
+    meets each at 1.25 and 1.5."""
+    from bearingcalc.core import iso10300_factors as factors
+
+    si = {key: (value * 1e-3 if key in ("dv1", "dv2", "bv_eff", "bv") else value)
+          for key, value in virtual.items()}
+    force = 2.0 * 300.0 / (sample["mean_pitch_diameter_pinion"] * 1e-3)
+    _, ratio = factors.dynamic_factor(si, 14, 1.0, force, 1.1, 26e-6, 7860.0)
+    per_rad_s = float(ratio)
+    speeds = np.array([1.25, 1.25 + 1e-12, 1.5 - 1e-12, 1.5]) / per_rad_s
+    kv, _ = factors.dynamic_factor(si, 14, speeds, force, 1.1, 26e-6, 7860.0)
+    assert kv[0] == pytest.approx(kv[1], rel=1e-9)
+    assert kv[2] == pytest.approx(kv[3], rel=1e-9)

@@ -132,3 +132,102 @@ def lubricant_film_factors(contact_limit: ArrayLike, viscosity_40: ArrayLike,
     rz10 = rz * np.cbrt(10.0 / (np.asarray(relative_curvature, dtype=float) * 1e3))
     roughness = (3.0 / rz10) ** (0.12 + (1000.0 - limit) / 5000.0)
     return film, speed, roughness
+
+
+#: The sectors of the reference speed N = n1/n_E1 (ISO 10300-1, 7.6): subcritical up to
+#: 0.75, the main resonance to 1.25, an intermediate one to 1.5, supercritical above.
+SUBCRITICAL, RESONANCE, INTERMEDIATE = 0.75, 1.25, 1.5
+#: Mesh stiffness per unit face width c_γ and single stiffness c′ at a load of
+#: 100 N/mm and above [N/(mm·µm)], and the running-in allowance's share of f_pt (at
+#: most 3 µm) of case-hardened or nitrided steel.
+MESH_STIFFNESS, SINGLE_STIFFNESS, RUNNING_IN_SHARE, RUNNING_IN_MOST = 20.0, 14.0, 0.075, 3.0
+
+
+def _stiffness_scale(line_load: NDArray) -> NDArray:
+    """C_F: the stiffnesses fall in proportion below 100 N/mm of line load."""
+    return np.minimum(line_load / 100.0, 1.0)
+
+
+def _coefficients(eps_gamma: NDArray) -> tuple[NDArray, NDArray, NDArray, NDArray, NDArray]:
+    """c_v1 + c_v2, c_v3, c_v4, c_v5 + c_v6, c_v7 of ISO 10300-1 Table 3."""
+    low = eps_gamma <= 2.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        cv12 = 0.32 + np.where(low, 0.34, 0.57 / (eps_gamma - 0.3))
+        cv3 = np.where(low, 0.23, 0.096)
+        cv4 = np.where(low, 0.90, (eps_gamma - 1.56) / (0.57 - 0.05 * eps_gamma))
+        cv56 = 0.47 + np.where(low, 0.47, 0.12 / (eps_gamma - 1.74))
+    cv7 = np.where(eps_gamma <= 1.5, 0.75, np.where(
+        eps_gamma <= 2.5, 0.125 * np.sin(np.pi * (eps_gamma - 2.0)) + 0.875, 1.0))
+    return cv12, cv3, cv4, cv56, cv7
+
+
+def dynamic_factor(virtual: dict[str, NDArray], pinion_teeth: ArrayLike,
+                   pinion_speed: ArrayLike, tangential_force: ArrayLike,
+                   application_factor: ArrayLike, pitch_deviation: ArrayLike,
+                   density: ArrayLike) -> tuple[NDArray, NDArray]:
+    r"""K_v by method B and the reference speed N [1], from the virtual cylindrical gears
+    (lengths [m]), the pinion's speed n1 [rad/s], F_vmt [N], K_A, the wheel's single
+    pitch deviation f_pt [m] and the steel's density ρ [kg/m³]. The members' masses per
+    unit face width, referred to their base circles, and the pair's resonance:
+
+    .. math:: m^* = \frac{π}{8}\,ρ\,\frac{d_v^2}{\cos^2 α_{vet}}, \quad
+              m_{red} = \frac{m_1^* m_2^*}{m_1^* + m_2^*}, \quad
+              n_{E1} = \frac{30\,000}{π z_1}\sqrt{\frac{c_γ}{m_{red}}}, \quad
+              N = \frac{n_1}{n_{E1}}
+
+    with K = (b_v,eff·f_p,eff·c′/(F_vmt·K_A))·(c_v1 + c_v2) + c_v3, f_p,eff = f_pt − y_α
+    (y_α = 0.075·f_pt, at most 3 µm): K_v = N·K + 1 subcritical (N ≤ 0.75); in the main
+    resonance (to 1.25) K_v = (…)(c_v1 + c_v2) + c_v4 + 1; supercritical (from 1.5)
+    K_v = (…)(c_v5 + c_v6) + c_v7; between 1.25 and 1.5 linear between the two.
+
+    Source: ISO 10300-1:2014, 7.6 (method B) and Table 3; ISO 6336-1:2006, 6.5 (the
+    masses referred to the base circles). ISO/TR 10300-30 sample 1 prints K_v 1.020.
+    """
+    load = np.asarray(tangential_force, dtype=float) * np.asarray(application_factor,
+                                                                   dtype=float)
+    width_mm = virtual["bv_eff"] * 1e3
+    scale = _stiffness_scale(load / width_mm)
+    masses = [0.125 * np.asarray(density, dtype=float) * np.pi * virtual[key] ** 2
+              / np.cos(virtual["alpha_vet"]) ** 2 for key in ("dv1", "dv2")]
+    reduced = masses[0] * masses[1] / (masses[0] + masses[1])  # [kg/m]
+    # the standard's n_E1 [1/min]: c_γ [N/(mm·µm)] over m_red in kg/mm
+    resonance = 30000.0 / (np.pi * np.asarray(pinion_teeth, dtype=float)) * np.sqrt(
+        MESH_STIFFNESS * scale / (reduced * 1e-3))
+    speed = np.abs(np.asarray(pinion_speed, dtype=float)) * 30.0 / np.pi
+    ratio = speed / resonance
+    deviation = np.asarray(pitch_deviation, dtype=float) * 1e6
+    effective = deviation - np.minimum(RUNNING_IN_SHARE * deviation, RUNNING_IN_MOST)
+    term = width_mm * effective * SINGLE_STIFFNESS * scale / load
+    cv12, cv3, cv4, cv56, cv7 = _coefficients(virtual["eps_v_gamma"])
+    main = term * cv12 + cv4 + 1.0
+    above = term * cv56 + cv7 + 1.0
+    between = above + (main - above) * (INTERMEDIATE - ratio) / (INTERMEDIATE - RESONANCE)
+    value = np.where(ratio <= SUBCRITICAL, ratio * (term * cv12 + cv3) + 1.0,
+                     np.where(ratio <= RESONANCE, main,
+                              np.where(ratio < INTERMEDIATE, between, above)))
+    return value, ratio
+
+
+def transverse_load_factor(virtual: dict[str, NDArray], determinant_force: ArrayLike,
+                           tangential_force: ArrayLike, application_factor: ArrayLike,
+                           pitch_deviation: ArrayLike) -> NDArray:
+    r"""K_Hα (= K_Fα without offset) by method B [1], from the determinant force at the
+    mean point F_mtH = F_vmt·K_A·K_v·K_Hβ [N] over the face width b_v:
+
+    .. math:: K_{Hα} = 0.9 + 0.4\,Φ\,\frac{c_γ(f_{pt} - y_α)}{F_{mtH}/b_v}, \quad
+              Φ = \frac{ε_{vγ}}2 \ (ε_{vγ} \le 2), \quad
+              Φ = \sqrt{\frac{2(ε_{vγ} - 1)}{ε_{vγ}}} \ (ε_{vγ} > 2)
+
+    no less than 1. Source: ISO 10300-1:2014, 9.3 (method B). ISO/TR 10300-30 sample 1
+    prints 1.161.
+    """
+    eps = virtual["eps_v_gamma"]
+    load = np.asarray(tangential_force, dtype=float) * np.asarray(application_factor,
+                                                                   dtype=float)
+    scale = _stiffness_scale(load / (virtual["bv_eff"] * 1e3))
+    deviation = np.asarray(pitch_deviation, dtype=float) * 1e6
+    effective = deviation - np.minimum(RUNNING_IN_SHARE * deviation, RUNNING_IN_MOST)
+    with np.errstate(invalid="ignore"):
+        share = np.where(eps <= 2.0, eps / 2.0, np.sqrt(2.0 * (eps - 1.0) / eps))
+    line = np.asarray(determinant_force, dtype=float) / (virtual["bv"] * 1e3)
+    return np.maximum(0.9 + 0.4 * share * MESH_STIFFNESS * scale * effective / line, 1.0)
