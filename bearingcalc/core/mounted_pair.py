@@ -121,12 +121,12 @@ def pair_results(inputs: Mapping[str, Any], family: BearingFamily, flat: Any,
         inputs, _scalars(inputs, family, solved, (spacing, preload, overlap), flat),
         (inner, outer), reference, iso281, speed, shape, family.family)
     if lost:
-        found.results.update(_as_mounted(inputs, lost, end_play, shape))
+        chain = mounted_clearance(inputs)
+        found.results.update(_as_mounted(chain, lost, end_play, shape))
         # each ring against creep under its own load: the more heavily loaded bearing's
         radial = np.max(np.stack([np.hypot(c.force[:, 1], c.force[:, 2])
                                   for c in solved.contacts]), axis=0).reshape(shape)
-        found.flags.update(chain_warnings({**inputs, "radial_load": radial},
-                                          mounted_clearance(inputs)))
+        found.flags.update(chain_warnings({**inputs, "radial_load": radial}, chain))
     return found, {"member": _members(solved, lives, speed, shape),
                    "element": _elements(solved, shape)}
 
@@ -145,10 +145,10 @@ def _lost_to_mounting(inputs: Mapping[str, Any], family: BearingFamily, spacing:
                          str(inputs.get("setting_stage") or "mounted"), spread, flat)
 
 
-def _as_mounted(inputs: Mapping[str, Any], lost: Mapping[str, NDArray],
+def _as_mounted(chain: Mapping[str, NDArray], lost: Mapping[str, NDArray],
                 end_play: NDArray, shape: tuple[int, ...]) -> dict[str, NDArray]:
-    """The setting's results, and each bearing's fits (the same seats for both)."""
-    chain = mounted_clearance(inputs)
+    """The setting's results, and each bearing's fits from its ``chain`` (the same
+    seats for both)."""
     fits = {key: np.broadcast_to(value, shape) for key, value in chain.items()
             if key.startswith(("fit_", "effective_", "inner_ring_hoop"))}
     return {**fits, **operating_end_play({**lost, "set_end_play": end_play
