@@ -143,9 +143,19 @@ SUBCRITICAL, RESONANCE, INTERMEDIATE = 0.75, 1.25, 1.5
 MESH_STIFFNESS, SINGLE_STIFFNESS, RUNNING_IN_SHARE, RUNNING_IN_MOST = 20.0, 14.0, 0.075, 3.0
 
 
-def _stiffness_scale(line_load: NDArray) -> NDArray:
-    """C_F: the stiffnesses fall in proportion below 100 N/mm of line load."""
-    return np.minimum(line_load / 100.0, 1.0)
+def _stiffness_scale(virtual: dict[str, NDArray], tangential_force: ArrayLike,
+                     application_factor: ArrayLike) -> tuple[NDArray, NDArray]:
+    """F_vmt·K_A [N], and C_F: the stiffnesses fall in proportion below 100 N/mm of
+    that load over b_v,eff."""
+    load = np.asarray(tangential_force, dtype=float) * np.asarray(application_factor,
+                                                                   dtype=float)
+    return load, np.minimum(load / (virtual["bv_eff"] * 1e3) / 100.0, 1.0)
+
+
+def _effective_deviation(pitch_deviation: ArrayLike) -> NDArray:
+    """f_pt − y_α [µm]: the running-in allowance y_α = 0.075·f_pt, at most 3 µm."""
+    deviation = np.asarray(pitch_deviation, dtype=float) * 1e6
+    return deviation - np.minimum(RUNNING_IN_SHARE * deviation, RUNNING_IN_MOST)
 
 
 def _coefficients(eps_gamma: NDArray) -> tuple[NDArray, NDArray, NDArray, NDArray, NDArray]:
@@ -183,10 +193,8 @@ def dynamic_factor(virtual: dict[str, NDArray], pinion_teeth: ArrayLike,
     Source: ISO 10300-1:2014, 7.6 (method B) and Table 3; ISO 6336-1:2006, 6.5 (the
     masses referred to the base circles). ISO/TR 10300-30 sample 1 prints K_v 1.020.
     """
-    load = np.asarray(tangential_force, dtype=float) * np.asarray(application_factor,
-                                                                   dtype=float)
+    load, scale = _stiffness_scale(virtual, tangential_force, application_factor)
     width_mm = virtual["bv_eff"] * 1e3
-    scale = _stiffness_scale(load / width_mm)
     masses = [0.125 * np.asarray(density, dtype=float) * np.pi * virtual[key] ** 2
               / np.cos(virtual["alpha_vet"]) ** 2 for key in ("dv1", "dv2")]
     reduced = masses[0] * masses[1] / (masses[0] + masses[1])  # [kg/m]
@@ -195,9 +203,7 @@ def dynamic_factor(virtual: dict[str, NDArray], pinion_teeth: ArrayLike,
         MESH_STIFFNESS * scale / (reduced * 1e-3))
     speed = np.abs(np.asarray(pinion_speed, dtype=float)) * 30.0 / np.pi
     ratio = speed / resonance
-    deviation = np.asarray(pitch_deviation, dtype=float) * 1e6
-    effective = deviation - np.minimum(RUNNING_IN_SHARE * deviation, RUNNING_IN_MOST)
-    term = width_mm * effective * SINGLE_STIFFNESS * scale / load
+    term = width_mm * _effective_deviation(pitch_deviation) * SINGLE_STIFFNESS * scale / load
     cv12, cv3, cv4, cv56, cv7 = _coefficients(virtual["eps_v_gamma"])
     main = term * cv12 + cv4 + 1.0
     above = term * cv56 + cv7 + 1.0
@@ -222,12 +228,9 @@ def transverse_load_factor(virtual: dict[str, NDArray], determinant_force: Array
     prints 1.161.
     """
     eps = virtual["eps_v_gamma"]
-    load = np.asarray(tangential_force, dtype=float) * np.asarray(application_factor,
-                                                                   dtype=float)
-    scale = _stiffness_scale(load / (virtual["bv_eff"] * 1e3))
-    deviation = np.asarray(pitch_deviation, dtype=float) * 1e6
-    effective = deviation - np.minimum(RUNNING_IN_SHARE * deviation, RUNNING_IN_MOST)
+    _, scale = _stiffness_scale(virtual, tangential_force, application_factor)
     with np.errstate(invalid="ignore"):
         share = np.where(eps <= 2.0, eps / 2.0, np.sqrt(2.0 * (eps - 1.0) / eps))
     line = np.asarray(determinant_force, dtype=float) / (virtual["bv"] * 1e3)
-    return np.maximum(0.9 + 0.4 * share * MESH_STIFFNESS * scale * effective / line, 1.0)
+    return np.maximum(0.9 + 0.4 * share * MESH_STIFFNESS * scale
+                      * _effective_deviation(pitch_deviation) / line, 1.0)
