@@ -342,19 +342,20 @@ def _iso23509_blank(inputs: Mapping[str, ArrayLike | None], out: Mapping[str, ND
         inputs["thickness_modification_pinion"], inputs["thickness_modification_gear"],  # type: ignore[arg-type]
         inputs["addendum_factor"], inputs["dedendum_factor"], str(inputs["taper"]),  # type: ignore[arg-type]
         pitch_angles))
-    limits = iso23509.tooth_limits(blank, (z1, z2), inputs["spiral_angle"], phi,  # type: ignore[arg-type]
+    virtual = iso10300_virtual.virtual_gears(iso10300_virtual.MeanSection(
+        z1, z2, (blank["mean_pitch_diameter_pinion"], blank["mean_pitch_diameter_gear"]),  # type: ignore[arg-type]
+        pitch_angles, (blank["mean_addendum_pinion"], blank["mean_addendum_gear"]),
+        (blank["mean_dedendum_pinion"], blank["mean_dedendum_gear"]),
+        blank["mean_normal_module"], inputs["spiral_angle"], phi,  # type: ignore[arg-type]
+        inputs["face_width"]))  # type: ignore[arg-type]
+    limits = iso23509.tooth_limits(blank, (virtual["zvn1"], virtual["zvn2"]), phi,
                                    (inputs["addendum_factor"], inputs["dedendum_factor"]),  # type: ignore[arg-type]
                                    (inputs.get("tool_edge_radius_pinion"),
                                     inputs.get("tool_edge_radius_gear")))
     found = {key: value for key, value in {**blank, **limits}.items()
              if key in BLANK_RESULTS}
     found["profile_shift"] = np.asarray(shift, dtype=float)
-    found["contact_ratio"] = iso10300_virtual.virtual_gears(iso10300_virtual.MeanSection(
-        z1, z2, (blank["mean_pitch_diameter_pinion"], blank["mean_pitch_diameter_gear"]),  # type: ignore[arg-type]
-        pitch_angles, (blank["mean_addendum_pinion"], blank["mean_addendum_gear"]),
-        (blank["mean_dedendum_pinion"], blank["mean_dedendum_gear"]),
-        blank["mean_normal_module"], inputs["spiral_angle"], phi,  # type: ignore[arg-type]
-        inputs["face_width"]))["eps_v_alpha"]  # type: ignore[arg-type]
+    found["contact_ratio"] = virtual["eps_v_alpha"]
     shifts = {"pinion": np.asarray(shift, dtype=float), "gear": -np.asarray(shift, dtype=float)}
     checks = []
     if inputs["taper"] == "duplex":  # the slot widens toward the toe: no duplex taper

@@ -185,14 +185,14 @@ def _involute(angle: NDArray) -> NDArray:
     return np.tan(angle) - angle
 
 
-def tooth_limits(out: dict[str, NDArray], teeth: tuple[ArrayLike, ArrayLike],
-                 spiral_angle: ArrayLike, pressure_angle: ArrayLike,
-                 rack: tuple[ArrayLike, ArrayLike], edge_radii: tuple[ArrayLike, ArrayLike]
-                 ) -> dict[str, NDArray]:
+def tooth_limits(out: dict[str, NDArray], normal_teeth: tuple[ArrayLike, ArrayLike],
+                 pressure_angle: ArrayLike, rack: tuple[ArrayLike, ArrayLike],
+                 edge_radii: tuple[ArrayLike, ArrayLike]) -> dict[str, NDArray]:
     r"""Each member's least profile shift against undercut and its top land, in the
-    virtual spur gear of the normal section (z_vn = z/(cos δ·cos²β_vb·cos β_m),
-    sin β_vb = sin β_m·cos α_n): the tool's straight flank, reaching k_hfp·m_mn less its
-    edge's ρ_a0·(1 − sin α_n), stays out of the base circle where
+    virtual spur gear of the normal section of ``normal_teeth`` z_vn (ISO 10300-1 Annex
+    A: :func:`bearingcalc.core.iso10300_virtual.virtual_gears`): the tool's straight
+    flank, reaching k_hfp·m_mn less its edge's ρ_a0·(1 − sin α_n), stays out of the base
+    circle where
 
     .. math:: x_{hm} \ge k_{hfp} - \frac{ρ_{a0}}{m_{mn}}(1 - \sin α_n)
               - \frac{z_{vn}}2\sin^2 α_n
@@ -211,21 +211,17 @@ def tooth_limits(out: dict[str, NDArray], teeth: tuple[ArrayLike, ArrayLike],
     (ISO 21771:2007, 5.4; ISO 23509:2016, the undercut check of its Annex).
     """
     module = out["mean_normal_module"]
-    beta = np.asarray(spiral_angle, dtype=float)
     alpha = np.asarray(pressure_angle, dtype=float)
-    base_helix = np.arcsin(np.sin(beta) * np.cos(alpha))
     addendum_factor, dedendum_factor = (np.asarray(v, dtype=float) for v in rack)
     limits: dict[str, NDArray] = {}
-    for member, z, edge in (("pinion", teeth[0], edge_radii[0]),
-                            ("gear", teeth[1], edge_radii[1])):
-        normal_teeth = np.asarray(z, dtype=float) / (
-            np.cos(out[f"pitch_angle_{member}"]) * np.cos(base_helix) ** 2 * np.cos(beta))
+    for member, teeth, edge in (("pinion", normal_teeth[0], edge_radii[0]),
+                                ("gear", normal_teeth[1], edge_radii[1])):
         radius = (EDGE_RADIUS_SHARE * module if edge is None
                   else np.asarray(edge, dtype=float))
         limits[f"least_profile_shift_{member}"] = (
             dedendum_factor - radius / module * (1.0 - np.sin(alpha))
-            - 0.5 * normal_teeth * np.sin(alpha) ** 2)
-        pitch = normal_teeth * module
+            - 0.5 * np.asarray(teeth, dtype=float) * np.sin(alpha) ** 2)
+        pitch = np.asarray(teeth, dtype=float) * module
         limits[f"top_land_{member}"] = _top_land(
             pitch, out[f"mean_addendum_{member}"],
             out[f"mean_normal_circular_thickness_{member}"], alpha)
